@@ -1,0 +1,89 @@
+/* SPDX-License-Identifier: MIT */
+/*
+** fn.h: compiled SDL functions (function { ... }).
+**
+** The parser compiles a function body into a small stack program that both
+** the parser (for '#declare V = F(1,2,3);') and the renderer (isosurfaces,
+** function patterns) evaluate with iris_fn_eval(). The program is plain
+** data in the scene arena; evaluation is reentrant and thread-safe.
+*/
+#ifndef IRIS_FN_H
+#define IRIS_FN_H
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* Opcodes of the stack machine. */
+enum iris_fn_op {
+    IRIS_FN_CONST = 0, /* push 'value' */
+    IRIS_FN_PARAM,     /* push parameter 'arg' (0 = x, 1 = y, 2 = z, ...) */
+    IRIS_FN_ADD, IRIS_FN_SUB, IRIS_FN_MUL, IRIS_FN_DIV, IRIS_FN_NEG,
+    IRIS_FN_POW,
+    IRIS_FN_LT, IRIS_FN_LE, IRIS_FN_GT, IRIS_FN_GE, IRIS_FN_EQ, IRIS_FN_NE,
+    IRIS_FN_AND, IRIS_FN_OR, IRIS_FN_NOT,
+    IRIS_FN_SELECT3,   /* select(a, b, c): a < 0 ? b : c */
+    IRIS_FN_SELECT4,   /* select(a, b, c, d): a < 0 ? b : a == 0 ? c : d */
+    IRIS_FN_COND,      /* a ? b : c */
+    IRIS_FN_BUILTIN,   /* 'arg' = enum iris_fn_builtin, pops its arity */
+    IRIS_FN_CALL,      /* call 'callee' with 'arg' arguments */
+    IRIS_FN_INTERNAL,  /* functions.inc internal('arg'), pops 'nargs' */
+    IRIS_FN_PATTERN,   /* a pattern function: 'pattern' at (x,y,z) */
+    IRIS_FN_OP_COUNT
+};
+
+/* Built-in maths functions callable inside a function body. */
+enum iris_fn_builtin {
+    IRIS_FB_ABS = 0, IRIS_FB_ACOS, IRIS_FB_ACOSH, IRIS_FB_ASIN,
+    IRIS_FB_ASINH, IRIS_FB_ATAN, IRIS_FB_ATAN2, IRIS_FB_ATANH,
+    IRIS_FB_CEIL, IRIS_FB_COS, IRIS_FB_COSH, IRIS_FB_DEGREES, IRIS_FB_DIV,
+    IRIS_FB_EXP, IRIS_FB_FLOOR, IRIS_FB_INT, IRIS_FB_LN, IRIS_FB_LOG,
+    IRIS_FB_MAX, IRIS_FB_MIN, IRIS_FB_MOD, IRIS_FB_POW, IRIS_FB_RADIANS,
+    IRIS_FB_SIN, IRIS_FB_SINH, IRIS_FB_SQRT, IRIS_FB_TAN, IRIS_FB_TANH,
+    IRIS_FB_PROD, IRIS_FB_SUM, IRIS_FB_BITWISE_AND, IRIS_FB_BITWISE_OR,
+    IRIS_FB_BITWISE_XOR, IRIS_FB_SQR, IRIS_FB_CBRT, IRIS_FB_COUNT
+};
+
+typedef struct iris_fn iris_fn;
+struct iris_pattern;
+
+/* One instruction. */
+typedef struct iris_fn_insn {
+    enum iris_fn_op op;
+    int arg;               /* parameter index, builtin, internal number */
+    int nargs;             /* for CALL, BUILTIN with variable arity */
+    double value;          /* CONST */
+    const iris_fn *callee; /* CALL */
+    const struct iris_pattern *pattern; /* PATTERN */
+} iris_fn_insn;
+
+/* A compiled function: 'n_params' named parameters, 'n_code' insns. */
+struct iris_fn {
+    int n_params;          /* x, y, z by default */
+    const char **param_names;
+    int n_code;
+    iris_fn_insn *code;
+    int max_stack;         /* computed by the compiler */
+    int n_results;         /* 1, or 3/5 for vector/colour functions */
+};
+
+/* Limits the evaluator enforces; past them it returns 0. */
+#define IRIS_FN_MAX_STACK 256
+#define IRIS_FN_MAX_DEPTH 64
+
+/*
+** Evaluates 'fn' with 'n_args' arguments. Missing arguments are 0. A
+** division by zero or a domain error gives 0, never NaN or Inf, as POV-Ray's
+** VM does not crash either. Thread-safe.
+*/
+double iris_fn_eval(const iris_fn *fn, const double *args, int n_args);
+
+/* Evaluates internal function 'n' of functions.inc (f_sphere, f_noise3d,
+** ...). Returns 0 for numbers it does not implement. */
+double iris_fn_internal(int n, const double *args, int n_args);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

@@ -1,0 +1,91 @@
+/* SPDX-License-Identifier: MIT */
+/*
+** accel.h: ray queries against the built scene (Embree 3).
+**
+** accel_build() turns the plain-data objects of an iris_scene into an
+** Embree scene: meshes become Embree triangles, analytic shapes and CSG
+** become user geometry with exact intersection. After the build the
+** structure is immutable and every query is thread-safe.
+**
+** Depends on: util, math, geometry. Used by: render, photon.
+*/
+#ifndef IRIS_ACCEL_ACCEL_H
+#define IRIS_ACCEL_ACCEL_H
+
+#include <stdbool.h>
+#include <stddef.h>
+
+#include "iris/common.h"
+#include "iris/scene.h"
+#include "math/vec3.h"
+
+/* A ray in world space; 'd' has unit length. */
+typedef struct ray {
+    vec3 o, d;
+} ray;
+
+/* Objects a query passes through, as POV-Ray's ray kinds do. */
+enum accel_skip {
+    ACCEL_SKIP_NONE = 0,
+    ACCEL_SKIP_NO_IMAGE = 1,      /* camera rays and what they refract into */
+    ACCEL_SKIP_NO_SHADOW = 2,     /* shadow rays; photon rays (POV-Ray) */
+    ACCEL_SKIP_NO_REFLECTION = 4  /* reflected rays */
+};
+
+/* The nearest surface a ray meets. */
+struct hit {
+    double t;                     /* distance along the ray */
+    vec3 p;                       /* world point */
+    vec3 n;                       /* unit geometric normal, world space,
+                                     pointing out of the object (flipped
+                                     for 'inverse' and CSG difference) */
+    vec3 shading_n;               /* unit shading normal (smooth
+                                     triangles, meshes); = n otherwise */
+    iris_vec2 uv;                 /* surface uv where the shape has one */
+    const iris_object *obj;       /* the primitive hit (leaf) */
+    const iris_object *top;       /* the top-level scene object it is in */
+    const iris_texture *texture;  /* texture at this point (never NULL) */
+    const iris_interior *interior;/* interior of 'obj', NULL = none */
+};
+
+struct accel;
+
+/*
+** Builds the ray-query structure for 'scene' (borrowed: it must outlive
+** the accel). Returns IRIS_OK, IRIS_ENOMEM, or IRIS_EINVAL/
+** IRIS_EUNSUPPORTED with a located message in 'err'. 'log' receives
+** warnings about objects that cannot be built (skipped with a location).
+*/
+IRIS_NODISCARD enum iris_status accel_build(const iris_scene *scene,
+                                            struct accel **out, FILE *log,
+                                            char *err, size_t errlen);
+
+/* Frees the structure. NULL does nothing. */
+void accel_destroy(struct accel *a);
+
+/*
+** Finds the nearest hit with tmin < t < tmax, passing through objects
+** that 'skip' names. Returns false when nothing is hit.
+*/
+bool accel_intersect(const struct accel *a, const ray *r, double tmin,
+                     double tmax, unsigned skip, struct hit *h);
+
+/* Whether world point 'p' is inside object 'obj' (POV-Ray's Inside()). */
+bool accel_inside(const struct accel *a, const iris_object *obj, vec3 p);
+
+/* World bounding box of finite geometry (infinite planes excluded). */
+void accel_bounds(const struct accel *a, vec3 *lo, vec3 *hi);
+
+/* World bounding box of one top-level object; false if unbounded. */
+bool accel_object_bounds(const struct accel *a, const iris_object *obj,
+                         vec3 *lo, vec3 *hi);
+
+/*
+** The distance by which to start a secondary ray from a surface so that it
+** does not meet the same surface again. It is relative to the scene's
+** scale (issue 7: a scene scaled by 1e-6 or 1e6 renders the same), not an
+** absolute constant.
+*/
+double accel_epsilon(const struct accel *a);
+
+#endif

@@ -1,0 +1,1 @@
+## src/accel: see the file headers. Appends to the core library.

@@ -1,0 +1,1 @@
+## src/cli: see the file headers. Appends to the core library.

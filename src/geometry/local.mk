@@ -1,0 +1,1 @@
+## src/geometry: see the file headers. Appends to the core library.

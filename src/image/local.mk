@@ -1,0 +1,1 @@
+## src/image: see the file headers. Appends to the core library.

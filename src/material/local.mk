@@ -1,0 +1,1 @@
+## src/material: see the file headers. Appends to the core library.

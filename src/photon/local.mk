@@ -1,0 +1,1 @@
+## src/photon: see the file headers. Appends to the core library.

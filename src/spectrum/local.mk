@@ -1,0 +1,1 @@
+## src/spectrum: see the file headers. Appends to the core library.

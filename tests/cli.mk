@@ -1,0 +1,1 @@
+## tests/cli.mk: end-to-end tests of the iris command.

@@ -1,0 +1,1 @@
+## tests/unit/geometry.mk: unit tests of this area.

@@ -1,0 +1,1 @@
+## tests/unit/render.mk: unit tests of this area.

@@ -1,0 +1,1 @@
+## tests/unit/spectrum.mk: unit tests of this area.

@@ -1,0 +1,1 @@
+## tools: generators run by make targets, not at render time.
