@@ -6,4 +6,5 @@ include $(srcdir)/tests/unit/parse.mk
 include $(srcdir)/tests/unit/geometry.mk
 include $(srcdir)/tests/unit/render.mk
 include $(srcdir)/tests/unit/spectrum.mk
+include $(srcdir)/tests/unit/photon.mk
 include $(srcdir)/tests/cli.mk

@@ -1,0 +1,1 @@
+## src/fn: the evaluator of compiled SDL functions.

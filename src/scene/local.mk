@@ -1,0 +1,1 @@
+## src/scene: scene defaults and lifetime (no SDL).

@@ -1,0 +1,1 @@
+## tests/unit/photon.mk: unit tests of the photon map.
