@@ -15,3 +15,4 @@ void iris_diag_format(const iris_diag *d, FILE *out) { fprintf(out, "%s:%u:%u: %
 enum iris_status iris_parse_file(const char *path, const iris_parse_options *opts, iris_scene **out, iris_diag_list *diags)
 { (void)path; (void)opts; (void)diags; *out = NULL; return IRIS_EUNSUPPORTED; }
 void iris_scene_destroy(iris_scene *scene) { (void)scene; }
+void iris_scene_dump(const iris_scene *scene, FILE *out) { (void)scene; (void)out; }

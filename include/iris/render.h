@@ -53,6 +53,7 @@ typedef struct iris_render_options {
     void *progress_user;
     volatile int *interrupt;   /* when set non-zero, stop soon */
     FILE *plan_out;            /* where --plan/-v prints the plan, or NULL */
+    bool plan_only;            /* --plan: print the plan, render nothing */
     FILE *log;                 /* warnings during building, NULL = stderr */
 } iris_render_options;
 

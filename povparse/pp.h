@@ -1,0 +1,397 @@
+/* SPDX-License-Identifier: MIT */
+/*
+** pp.h: the private interface of povparse, shared by its .c files.
+**
+** The parser works as POV-Ray's does: the scanner (input.c) hands out
+** tokens after executing the directives (#declare, #if, #while, #macro,
+** #include, ...) it meets, and the grammar functions (expr.c, mat.c,
+** obj.c, scene.c) pull tokens from it. Macro bodies and loop bodies are
+** re-read from the source text, which stays in memory for the whole parse.
+** Every error goes through pp_error(), which longjmps to the single setjmp
+** in parse.c; all memory is in arenas or in tables parse.c frees.
+**
+** Depends on: include/iris/*.h, src/util, src/math. Nothing else.
+*/
+#ifndef IRIS_POVPARSE_PP_H
+#define IRIS_POVPARSE_PP_H
+
+#include <setjmp.h>
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+
+#include "iris/fn.h"
+#include "iris/parse.h"
+#include "iris/scene.h"
+#include "math/transform.h"
+#include "util/arena.h"
+
+/* Tokens: punctuation first, then every keyword of tokens.def. */
+enum pp_tok {
+    T_EOF = 0, T_IDENT, T_NUMBER, T_STRING,
+    T_LBRACE, T_RBRACE, T_LPAREN, T_RPAREN, T_LBRACKET, T_RBRACKET,
+    T_LT, T_GT, T_LE, T_GE, T_EQUALS, T_NE, T_COMMA, T_SEMI, T_PLUS,
+    T_MINUS, T_STAR, T_SLASH, T_HASH, T_QUESTION, T_COLON, T_AMP, T_BAR,
+    T_BANG, T_DOT, T_OTHER,
+    T_KW_FIRST,
+#define TOK(name, word) T_##name,
+#define ALIAS(name, word)
+#include "tokens.def"
+#undef TOK
+#undef ALIAS
+    T_COUNT
+};
+
+struct pp_sym;
+
+/* One token: where it is (file, byte offset, length) and its value. */
+typedef struct pp_token {
+    int kind;
+    uint32_t file;
+    uint32_t off, len;
+    double num;            /* T_NUMBER */
+    const char *str;       /* T_STRING contents (scratch arena) */
+    struct pp_sym *sym;    /* T_IDENT: the symbol when it was read */
+} pp_token;
+
+/* A source file held in memory with its line map. */
+typedef struct pp_file {
+    const char *path;      /* as opened */
+    const char *dir;       /* its directory, for #include search */
+    const char *text;
+    size_t len;
+    uint32_t *line_start;  /* offsets of line starts, built on demand */
+    uint32_t n_lines;
+} pp_file;
+
+/* Value kinds of identifiers and expressions. */
+enum pp_vkind {
+    V_NONE = 0, V_FLOAT, V_VECTOR, V_COLOUR, V_STRING, V_OBJECT, V_LIGHT,
+    V_TEXTURE, V_PIGMENT, V_NORMAL, V_FINISH, V_INTERIOR, V_MATERIAL,
+    V_TRANSFORM, V_CAMERA, V_FUNCTION, V_ARRAY, V_COLOUR_MAP,
+    V_PIGMENT_MAP, V_NORMAL_MAP, V_TEXTURE_MAP, V_SLOPE_MAP, V_DENSITY_MAP,
+    V_FOG, V_SKY_SPHERE, V_RAINBOW, V_SPLINE, V_MEDIA, V_DENSITY, V_FILE,
+    V_MACRO, V_TEXTURE_LIST, V_UNSUPPORTED, V_KIND_COUNT
+};
+
+struct pp_array;
+struct pp_macro;
+struct pp_spline;
+struct pp_material;
+struct pp_map;
+struct pp_fileh;
+
+/* A value: numbers inline (dim 1 = float, 2..5 = vector; colours are 5),
+** everything else by pointer into an arena. */
+typedef struct pp_value {
+    int kind;
+    int dim;
+    double v[5];
+    union {
+        const char *str;
+        iris_object *obj;
+        iris_light *light;
+        iris_texture *tex;
+        iris_pigment *pig;
+        iris_normal *nor;
+        iris_finish *fin;
+        iris_interior *inter;
+        struct pp_material *mat;
+        iris_transform *xf;
+        iris_camera *cam;
+        iris_fn *fn;
+        struct pp_array *arr;
+        struct pp_map *map;
+        iris_fog *fog;
+        iris_sky_sphere *sky;
+        struct pp_spline *spline;
+        struct pp_macro *macro;
+        struct pp_fileh *fh;
+        void *ptr;
+    } u;
+} pp_value;
+
+/* An array of 1 to 5 dimensions; unset elements have kind V_NONE. */
+typedef struct pp_array {
+    int ndim;
+    int dims[5];
+    long n;
+    pp_value *items;
+} pp_array;
+
+/* A macro: name, parameters and where its body starts in the source. */
+typedef struct pp_macro {
+    const char *name;
+    int n_params;
+    const char **params;
+    uint32_t file;
+    uint32_t body_off;     /* just after the ')' of the parameter list */
+    uint32_t def_off;
+} pp_macro;
+
+/* material { texture interior } */
+typedef struct pp_material {
+    iris_texture *tex;
+    iris_texture *interior_tex;
+    iris_interior *inter;
+} pp_material;
+
+/* A colour/pigment/normal/texture/slope map. */
+typedef struct pp_map {
+    int kind;              /* V_COLOUR_MAP ... */
+    int n;
+    iris_map_entry *e;
+} pp_map;
+
+/* A spline{} (linear, quadratic, cubic, natural: all evaluated as
+** POV-Ray's piecewise forms; see expr.c). */
+typedef struct pp_spline {
+    int type;              /* 0 linear, 1 quadratic, 2 cubic, 3 natural */
+    int n, dim;
+    double *t;
+    double (*p)[5];
+} pp_spline;
+
+/* A file opened by #fopen. */
+typedef struct pp_fileh {
+    FILE *fp;
+    bool write;
+    const char *path;
+} pp_fileh;
+
+/* A symbol: a name bound to a value, or an alias of a caller's symbol
+** (a macro parameter passed an identifier: POV-Ray's by-reference rule). */
+typedef struct pp_sym {
+    const char *name;
+    struct pp_sym *ref;
+    pp_value val;
+    struct pp_sym *next;   /* hash chain */
+} pp_sym;
+
+/* One symbol table: the global one, one per #include file, one per
+** macro call. */
+typedef struct pp_scope {
+    pp_sym **buckets;
+    unsigned n_buckets, n_syms;
+} pp_scope;
+
+/* Input frames: the file being read, and the #include files and macro
+** calls that led to it. */
+enum pp_frame_kind { FR_FILE = 0, FR_INCLUDE, FR_MACRO, FR_STRING };
+
+typedef struct pp_frame {
+    int kind;
+    uint32_t file;
+    uint32_t pos;          /* where the next token starts */
+    uint32_t call_file, call_off; /* the #include or macro call */
+    const pp_macro *macro;
+    int cond_base;         /* cond stack depth when the frame started */
+    int scope;             /* its symbol table index */
+} pp_frame;
+
+/* Conditional/loop stack entries (#if, #while, #for, #switch, macro). */
+enum pp_cond_kind { C_IF = 0, C_ELSE, C_WHILE, C_FOR, C_SWITCH, C_MACRO };
+
+typedef struct pp_cond {
+    int kind;
+    uint32_t file, off;    /* the directive, for "missing #end" */
+    uint32_t loop_pos;     /* WHILE/FOR: where the body starts */
+    uint32_t cond_pos;     /* WHILE: where the condition starts */
+    double switch_val;     /* SWITCH */
+    bool matched;          /* SWITCH: a case ran */
+    pp_sym *for_sym;       /* FOR */
+    double for_end, for_step;
+    long iterations;
+} pp_cond;
+
+typedef struct pp_state pp_state;
+
+/* Per-object data the parser keeps beside the public node. */
+typedef struct pp_light_node {
+    iris_light *light;
+    struct pp_light_node *next;
+} pp_light_node;
+
+typedef struct pp_obj {
+    iris_object o;         /* first: (pp_obj *)obj is valid */
+    pp_light_node *lights; /* light_sources inside a CSG */
+    bool is_light_group;
+} pp_obj;
+
+struct pp_state {
+    iris_scene *scene;
+    iris_arena *A;         /* scene arena */
+    iris_arena *S;         /* scratch arena (values, arrays, tokens) */
+    iris_parse_options opt;
+    iris_diag_list *diags;
+    jmp_buf jb;
+    enum iris_status fail_status;
+
+    /* Sources */
+    pp_file *files;
+    int n_files, cap_files;
+    pp_frame *frames;
+    int n_frames, cap_frames;
+    pp_cond *conds;
+    int n_conds, cap_conds;
+    int include_depth, macro_depth;
+
+    /* Tokens: one token of look-ahead can be pushed back */
+    pp_token tok;          /* the current token */
+    bool have_unget;
+    pp_token unget;
+    int no_expand;         /* > 0: identifiers are not expanded as macros */
+
+    /* Keyword table (built per parse; tokens.def) */
+    const char **kw_name;
+    int *kw_hash;          /* open addressing: token kinds */
+    unsigned kw_mask;
+
+    /* Symbol tables */
+    pp_scope *scopes;
+    int n_scopes, cap_scopes;
+
+    /* Defaults set by #default */
+    iris_texture *default_tex;
+    iris_finish *default_finish;
+    iris_pigment *default_pigment;
+
+    /* Growing scene lists */
+    int cap_objects, cap_lights, cap_fogs;
+
+    /* Once-per-keyword warnings */
+    unsigned char *warned;
+
+    /* rand(): seed() streams */
+    uint64_t *rng;
+    int n_rng, cap_rng;
+
+    pp_fileh *open_files[32];
+    int n_open_files;
+
+    double version;
+    bool in_vector;        /* inside <..>: '>' closes, is no operator */
+    bool gamma_given;
+};
+
+/* ---- diag.c ------------------------------------------------------- */
+_Noreturn void pp_error(pp_state *ps, const pp_token *at, const char *fmt,
+                        ...) IRIS_PRINTF(3, 4);
+_Noreturn void pp_error_at(pp_state *ps, uint32_t file, uint32_t off,
+                           uint32_t len, const char *fmt, ...)
+    IRIS_PRINTF(5, 6);
+void pp_warning(pp_state *ps, const pp_token *at, const char *fmt, ...)
+    IRIS_PRINTF(3, 4);
+/* Warns once per token kind 'kw' that a feature is parsed but ignored. */
+void pp_warn_once(pp_state *ps, const pp_token *at, int kw, const char *what);
+_Noreturn void pp_nomem(pp_state *ps);
+iris_loc pp_loc(pp_state *ps, const pp_token *t);
+void pp_line_col(pp_state *ps, uint32_t file, uint32_t off,
+                 unsigned *line, unsigned *col);
+const char *pp_tok_name(pp_state *ps, const pp_token *t, char *buf,
+                        size_t n);
+const char *pp_kind_name(int kind);
+
+/* ---- lex.c -------------------------------------------------------- */
+void lex_init_keywords(pp_state *ps);
+/* Scans the token at 'pos' of file 'f'; returns the offset after it. */
+uint32_t lex_scan(pp_state *ps, uint32_t f, uint32_t pos, pp_token *t);
+const char *lex_keyword_name(int kind);
+
+/* ---- input.c: tokens with directives executed --------------------- */
+void pp_next(pp_state *ps);           /* advances ps->tok */
+void pp_unget(pp_state *ps);          /* pushes ps->tok back */
+bool pp_accept(pp_state *ps, int kind);
+void pp_expect(pp_state *ps, int kind, const char *what);
+void pp_open_file(pp_state *ps, const char *path, bool is_include,
+                  const pp_token *at);
+uint32_t pp_add_text(pp_state *ps, const char *name, const char *text,
+                     size_t len);
+/* True when the next raw token starts a directive (an expression ends). */
+bool pp_next_is_directive(pp_state *ps);
+void pp_skip_block(pp_state *ps);     /* after '{': up to its '}' */
+void pp_close_files(pp_state *ps);
+
+/* ---- symtab.c ----------------------------------------------------- */
+void sym_push_scope(pp_state *ps);
+void sym_pop_scope(pp_state *ps);
+void sym_free_all(pp_state *ps);
+pp_sym *sym_lookup(pp_state *ps, const char *name, size_t len);
+pp_sym *sym_define(pp_state *ps, int scope, const char *name, size_t len);
+pp_sym *sym_resolve(pp_sym *s);       /* follows by-reference aliases */
+bool sym_undef(pp_state *ps, const char *name, size_t len);
+/* The identifier text of token 't' (not NUL-terminated). */
+const char *pp_tok_text(pp_state *ps, const pp_token *t);
+
+/* ---- expr.c ------------------------------------------------------- */
+pp_value pp_expr(pp_state *ps);       /* numeric or string expression */
+double pp_float(pp_state *ps);
+iris_vec3 pp_vector(pp_state *ps);
+iris_vec2 pp_vector2(pp_state *ps);
+void pp_vector4(pp_state *ps, double out[4]);
+iris_colour pp_colour(pp_state *ps);
+const char *pp_string(pp_state *ps);
+bool pp_bool_opt(pp_state *ps);       /* optional on/off after a flag */
+/* Parses the value of #declare X = ...; (any kind). */
+pp_value pp_rvalue(pp_state *ps);
+void pp_value_promote(pp_value *v, int dim);
+double pp_srgb_decode(double c);
+/* True when the current token can start a float/vector expression. */
+bool pp_starts_expr(pp_state *ps);
+iris_colour pp_value_colour(const pp_value *v);
+
+/* ---- fnc.c: function { } compiler --------------------------------- */
+iris_fn *pp_function(pp_state *ps);   /* after 'function' */
+double pp_call_function(pp_state *ps, const iris_fn *fn);
+
+/* ---- mat.c: textures ---------------------------------------------- */
+iris_pigment *pp_pigment(pp_state *ps, const iris_pigment *base);
+iris_normal *pp_normal(pp_state *ps, const iris_normal *base);
+iris_finish *pp_finish(pp_state *ps, const iris_finish *base);
+iris_texture *pp_texture(pp_state *ps);           /* after 'texture' */
+iris_interior *pp_interior(pp_state *ps, const iris_interior *base);
+pp_material *pp_material_block(pp_state *ps);
+pp_map *pp_map_block(pp_state *ps, int kind);      /* after x_map */
+iris_texture *pp_default_texture(pp_state *ps);
+iris_transform *pp_transform_block(pp_state *ps);  /* after 'transform' */
+/* Parses one transform keyword (translate/rotate/scale/matrix/transform)
+** at the current token into 'out'; false if the token is none. */
+bool pp_transform_item(pp_state *ps, iris_transform *out);
+/* Composes 'xf' into every pattern of a copied texture/pigment/normal. */
+iris_texture *pp_tex_transform(pp_state *ps, const iris_texture *t,
+                               const iris_transform *xf);
+iris_pigment *pp_pig_transform(pp_state *ps, const iris_pigment *p,
+                               const iris_transform *xf);
+iris_normal *pp_nor_transform(pp_state *ps, const iris_normal *n,
+                              const iris_transform *xf);
+iris_texture *pp_texture_new(pp_state *ps, const pp_token *at);
+iris_pigment *pp_pigment_new(pp_state *ps, const pp_token *at);
+iris_fog *pp_fog(pp_state *ps);
+iris_sky_sphere *pp_sky_sphere(pp_state *ps, const iris_sky_sphere *b);
+void pp_pattern_init(iris_pattern *p);
+
+/* ---- obj.c: objects ----------------------------------------------- */
+/* Parses an object if the current token starts one; NULL otherwise. */
+iris_object *pp_object(pp_state *ps);
+bool pp_starts_object(pp_state *ps);
+iris_object *pp_object_copy(pp_state *ps, const iris_object *o);
+void pp_object_transform(pp_state *ps, iris_object *o,
+                         const iris_transform *xf);
+iris_light *pp_light(pp_state *ps);               /* after light_source */
+void pp_light_transform(iris_light *l, const iris_transform *xf);
+/* Resolves inheritance of a finished top-level object. */
+void pp_finalize_object(pp_state *ps, iris_object *o);
+
+/* ---- scene.c: top level ------------------------------------------- */
+void pp_scene_items(pp_state *ps);     /* until EOF */
+iris_camera *pp_camera(pp_state *ps, const iris_camera *base);
+void pp_add_object(pp_state *ps, iris_object *o);
+void pp_add_light(pp_state *ps, iris_light *l);
+
+/* ---- memory ------------------------------------------------------- */
+void *pp_alloc(pp_state *ps, size_t n);          /* scene arena, zeroed */
+void *pp_salloc(pp_state *ps, size_t n);         /* scratch arena */
+char *pp_strdup(pp_state *ps, const char *s, size_t n);
+
+#endif

@@ -1,0 +1,204 @@
+/* SPDX-License-Identifier: MIT */
+/*
+** main.c: the iris command: parse a scene, render it, write the image.
+**
+** This is the only place that joins the SDL front end (povparse) and the
+** renderer; both are used through include/iris/ only. Exit status: 0
+** success; 1 render or I/O failure; 2 bad usage or a scene error; 130
+** interrupted, with the image so far written.
+*/
+#include "config.h"
+
+#include <errno.h>
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "cli/options.h"
+#include "cli/report.h"
+#include "iris/iris.h"
+#include "util/thread.h"
+
+enum { EXIT_RENDER = 1, EXIT_USAGE = 2, EXIT_INTERRUPTED = 130 };
+
+/* Set by SIGINT/SIGTERM; the renderer polls it and stops soon. */
+static volatile int interrupted;
+
+static void on_signal(int sig)
+{
+    (void)sig;
+    interrupted = 1;
+}
+
+static void install_signals(void)
+{
+    struct sigaction sa;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = on_signal;
+    sigemptyset(&sa.sa_mask);
+    sigaction(SIGINT, &sa, NULL);
+    sigaction(SIGTERM, &sa, NULL);
+}
+
+/* Prints every diagnostic; returns the number of errors. */
+static int print_diags(const iris_diag_list *d, bool quiet)
+{
+    for (int i = 0; i < d->n; i++) {
+        if (quiet && d->items[i].sev != IRIS_SEV_ERROR)
+            continue;
+        iris_diag_format(&d->items[i], stderr);
+    }
+    return d->n_errors;
+}
+
+/* True when 'a' and 'b' name the same existing file. */
+static bool same_file(const char *a, const char *b)
+{
+    struct stat sa, sb;
+    return stat(a, &sa) == 0 && stat(b, &sb) == 0 && sa.st_dev == sb.st_dev &&
+           sa.st_ino == sb.st_ino;
+}
+
+static int parse_scene(const struct cli_options *o, iris_scene **scene)
+{
+    iris_parse_options po;
+    memset(&po, 0, sizeof po);
+    po.n_include_paths = o->n_include_paths;
+    po.include_paths = o->include_paths;
+    po.n_declares = o->n_declares;
+    po.declares = o->declares;
+    po.clock = o->clock;
+    po.image_width = o->render.width;
+    po.image_height = o->render.height;
+    po.read_policy = o->allow_unrestricted_io ? IRIS_IO_UNRESTRICTED : IRIS_IO_RESTRICTED;
+    po.quiet_debug = o->quiet;
+    iris_diag_list diags;
+    iris_diag_list_init(&diags);
+    enum iris_status st = iris_parse_file(o->scene, &po, scene, &diags);
+    print_diags(&diags, o->quiet);
+    iris_diag_list_fini(&diags);
+    if (st == IRIS_OK)
+        return 0;
+    if (st == IRIS_EIO) {
+        fprintf(stderr, "iris: %s: cannot read the scene: %s\n", o->scene,
+                errno ? strerror(errno) : iris_status_str(st));
+        return EXIT_USAGE;
+    }
+    if (st != IRIS_EPARSE)
+        fprintf(stderr, "iris: %s: %s\n", o->scene, iris_status_str(st));
+    return EXIT_USAGE;
+}
+
+int main(int argc, char **argv)
+{
+    double t0 = par_now();
+    struct cli_options o;
+    char err[512] = "";
+    if (cli_parse(argc, argv, &o, err, sizeof err) != 0) {
+        fprintf(stderr, "iris: %s\n", err);
+        return EXIT_USAGE;
+    }
+    if (o.action == CLI_HELP) {
+        cli_usage(stdout);
+        return 0;
+    }
+    if (o.action == CLI_VERSION) {
+        printf("iris %s\n", iris_version());
+        return 0;
+    }
+    install_signals();
+
+    struct run_times times = { 0, 0, 0 };
+    iris_scene *scene = NULL;
+    int rc = parse_scene(&o, &scene);
+    times.parse = par_now() - t0;
+    if (rc)
+        return rc;
+    if (o.action == CLI_PARSE_ONLY) {
+        if (o.verbose)
+            iris_scene_dump(scene, stdout);
+        iris_scene_destroy(scene);
+        return 0;
+    }
+
+    char *out_name = cli_output_name(&o);
+    if (!out_name) {
+        fprintf(stderr, "iris: out of memory\n");
+        iris_scene_destroy(scene);
+        return EXIT_RENDER;
+    }
+    if (same_file(out_name, o.scene)) {
+        fprintf(stderr, "iris: %s: refusing to overwrite the scene file with the image\n", out_name);
+        free(out_name);
+        iris_scene_destroy(scene);
+        return EXIT_USAGE;
+    }
+
+    struct progress prog;
+    progress_init(&prog, !o.quiet && isatty(STDERR_FILENO));
+    o.render.progress = progress_update;
+    o.render.progress_user = &prog;
+    o.render.interrupt = &interrupted;
+    if (o.action == CLI_PLAN) {
+        o.render.plan_out = stdout;
+        o.render.plan_only = true;
+    } else if (o.verbose) {
+        o.render.plan_out = stderr;
+    }
+
+    iris_image img;
+    iris_render_stats rs;
+    memset(&rs, 0, sizeof rs);
+    enum iris_status st = iris_image_init(&img, o.render.width, o.render.height);
+    if (st == IRIS_OK)
+        st = iris_render(scene, &o.render, &img, &rs, err, sizeof err);
+    progress_done(&prog);
+    if (o.action == CLI_PLAN) {
+        rc = st == IRIS_OK ? 0 : EXIT_RENDER;
+        if (st != IRIS_OK)
+            fprintf(stderr, "iris: %s: %s\n", o.scene, err[0] ? err : iris_status_str(st));
+        goto done;
+    }
+    if (st != IRIS_OK && st != IRIS_EINTR) {
+        fprintf(stderr, "iris: %s: %s\n", o.scene, err[0] ? err : iris_status_str(st));
+        rc = st == IRIS_EPARSE || st == IRIS_EINVAL ? EXIT_USAGE : EXIT_RENDER;
+        goto done;
+    }
+    if (interrupted)
+        st = IRIS_EINTR;
+
+    /* Write the image: all of it, or what was done before an interrupt. */
+    double tw = par_now();
+    enum iris_encoding enc = IRIS_ENC_SRGB;
+    enum iris_status wst = iris_image_write(&img, out_name, o.output_bits, enc,
+                                            err, sizeof err);
+    times.write = par_now() - tw;
+    if (wst != IRIS_OK) {
+        fprintf(stderr, "iris: %s\n", err);
+        rc = EXIT_RENDER;
+        goto done;
+    }
+    if (rs.nan_pixels)
+        fprintf(stderr, "iris: warning: %llu non-finite values were replaced by 0\n",
+                (unsigned long long)rs.nan_pixels);
+    if (!o.quiet)
+        fprintf(stderr, "iris: wrote %s (%dx%d) in %.2f s\n", out_name,
+                img.width, img.height, par_now() - t0);
+    rc = st == IRIS_EINTR ? EXIT_INTERRUPTED : 0;
+
+done:
+    times.total = par_now() - t0;
+    if (o.stats_file && stats_write(o.stats_file, &times, &rs) != 0) {
+        fprintf(stderr, "iris: %s: cannot write the statistics: %s\n",
+                o.stats_file, strerror(errno));
+        if (rc == 0)
+            rc = EXIT_RENDER;
+    }
+    iris_image_fini(&img);
+    free(out_name);
+    iris_scene_destroy(scene);
+    return rc;
+}

@@ -1,0 +1,61 @@
+/* SPDX-License-Identifier: MIT */
+/*
+** options.h: the iris command line.
+**
+** POV-Ray's switches as POV-Ray users type them (+I +O +W +H +A +AM +R +J
+** +Q +L +WT +FN +FE, +D/-D, +V/-V, Declare=Name=Value; case-insensitive,
+** '+' and '-' alike for numeric switches) and GNU long options for what
+** POV-Ray has no switch for. cli_parse() only fills a struct; it prints
+** nothing and never exits, so it can be tested.
+*/
+#ifndef IRIS_CLI_OPTIONS_H
+#define IRIS_CLI_OPTIONS_H
+
+#include <stdbool.h>
+#include <stddef.h>
+
+#include "iris/iris.h"
+
+#define CLI_MAX_PATHS 64
+#define CLI_MAX_DECLARES 64
+
+enum cli_action { CLI_RENDER = 0, CLI_HELP, CLI_VERSION, CLI_PARSE_ONLY,
+                  CLI_PLAN };
+
+struct cli_options {
+    enum cli_action action;
+    const char *scene;          /* +I or the plain argument */
+    const char *output;         /* +O / --output; NULL = default name */
+    char output_type;           /* 'N' png, 'E' exr, 0 = from the name */
+    int output_bits;            /* +FN16: 16 */
+    iris_render_options render; /* width, height, AA, threads, seed ... */
+    bool quiet, verbose;
+    const char *stats_file;
+    int n_include_paths;
+    const char *include_paths[CLI_MAX_PATHS];
+    int n_declares;
+    iris_declare declares[CLI_MAX_DECLARES];
+    double clock;
+    bool allow_unrestricted_io;
+};
+
+/*
+** Fills 'o' from argv. Returns 0, or -1 with a message in 'err' (bad
+** usage: the caller exits with status 2). The strings in 'o' point into
+** argv.
+*/
+int cli_parse(int argc, char **argv, struct cli_options *o, char *err,
+              size_t errlen);
+
+/* Prints the --help text. */
+void cli_usage(FILE *out);
+
+/*
+** The output file name: the given one, with an extension added from +F
+** when it has none; by default the scene's base name with .png (.exr for
+** +FE), in the current directory, as POV-Ray names it. Returns a
+** malloc'ed string.
+*/
+char *cli_output_name(const struct cli_options *o);
+
+#endif

@@ -1,0 +1,128 @@
+/* SPDX-License-Identifier: MIT */
+/*
+** material.h: textures evaluated at a surface point, as POV-Ray 3.7 does.
+**
+** The tracer (src/render) and the photon shooter (src/photon) both need
+** what a texture is at a hit: per layer the pigment (rgb, filter,
+** transmit), the finish, and the normal after normal{} perturbation.
+** mat_eval_texture() produces that. A texture_map blends whole textures,
+** so the result is one or more "stacks" of layers with weights summing to
+** 1; a plain layered texture gives a single stack. The helpers below
+** compute what POV-Ray derives from a layer: transmittance (rgbTransm),
+** opacity, Fresnel reflectivity and the layer's reflection colour.
+**
+** Patterns are evaluated in pattern space: the world point is mapped by
+** pattern.transform.inv (when has_transform), then the warps are applied
+** from the last in the array to the first, which is POV-Ray's order (a
+** warp{} or transform written later acts on the world side of the ones
+** written earlier). A trailing TURBULENCE warp of marble, wood, agate and
+** spiral patterns is their classic turbulence, used by the pattern itself.
+**
+** Depends on: util, math, image (image maps). Used by: render, photon.
+*/
+#ifndef IRIS_MATERIAL_MATERIAL_H
+#define IRIS_MATERIAL_MATERIAL_H
+
+#include <stdbool.h>
+#include <stdio.h>
+
+#include "iris/common.h"
+#include "iris/scene.h"
+#include "math/vec3.h"
+
+/* What a render shares for texture evaluation: loaded image maps and the
+** scene-wide settings patterns need. Immutable once built; thread-safe. */
+struct mat_ctx;
+
+/*
+** Builds the context for 'scene' (borrowed): loads every image an
+** image_map or bump_map names. A missing image is reported on 'log' and
+** evaluates as black, as a render must not fail for it.
+*/
+IRIS_NODISCARD enum iris_status mat_ctx_create(const iris_scene *scene,
+                                               FILE *log,
+                                               struct mat_ctx **out);
+void mat_ctx_destroy(struct mat_ctx *ctx);
+
+/* A surface point as the texture sees it. */
+struct mat_point {
+    vec3 p;                    /* world point */
+    vec3 n;                    /* unit normal facing the incoming ray */
+    vec3 d;                    /* unit incoming ray direction */
+    iris_vec2 uv;              /* surface uv, where the shape has one */
+    const iris_object *obj;    /* the primitive hit, or NULL */
+};
+
+/* One texture layer at a point. */
+struct mat_layer {
+    iris_colour pigment;       /* rgb, filter, transmit */
+    const iris_finish *finish; /* never NULL */
+    vec3 n;                    /* perturbed unit normal, facing the ray */
+    bool valid;                /* false: no colour here (image_map once) */
+};
+
+#define MAT_MAX_LAYERS 32
+#define MAT_MAX_STACKS 8
+
+/* Layers first..first+n-1 shaded together (top layer first). */
+struct mat_stack {
+    double weight;
+    int first, n;
+};
+
+struct mat_eval {
+    int n_layers, n_stacks;
+    struct mat_layer layers[MAT_MAX_LAYERS];
+    struct mat_stack stacks[MAT_MAX_STACKS];
+};
+
+/*
+** Evaluates 'tex' at 'pt' into stacks of layers. Blended texture_maps give
+** up to MAT_MAX_STACKS stacks (past that, the heaviest neighbour wins).
+*/
+void mat_eval_texture(const struct mat_ctx *ctx, const iris_texture *tex,
+                      const struct mat_point *pt, struct mat_eval *out);
+
+/* Evaluates a pigment at world point 'p'. Returns false where it has no
+** colour (image_map 'once' outside the image); *out is then clear. */
+bool mat_eval_pigment(const struct mat_ctx *ctx, const iris_pigment *pig,
+                      const struct mat_point *pt, iris_colour *out);
+
+/* Returns the normal 'n' (unit, facing the ray) perturbed by 'nrm'. */
+vec3 mat_perturb_normal(const struct mat_ctx *ctx, const iris_normal *nrm,
+                        const struct mat_point *pt, vec3 n);
+
+/* rgbTransm: per channel rgb*filter + transmit (semantics §3.2). */
+void mat_rgb_transm(const iris_colour *c, double out[3]);
+
+/* POV-Ray's opacity 1 - f - t, or the legacy 1 - (f max(rgb) + t) of
+** scenes older than #version 3.7. */
+double mat_opacity(const struct mat_ctx *ctx, const iris_colour *c);
+
+/* POV-Ray's greyscale: 0.297 r + 0.589 g + 0.114 b. */
+double mat_greyscale(const double c[3]);
+
+/*
+** POV-Ray's Fresnel reflectance (ComputeReflectivity type 1) for the
+** cosine 'cos_i' >= 0 of the incidence angle and the relative index
+** n = n_t / n_i. Returns 1 past the critical angle; result in [0, 1].
+*/
+double mat_fresnel(double cos_i, double n);
+
+/*
+** The reflection colour of a layer (semantics §3.3 step 3): standard
+** falloff or fresnel, then reflection metallic. 'cos_i' = -I.N_layer,
+** 'n' = n_t/n_i for fresnel. '*weight' gets the factor POV-Ray multiplies
+** the recursion weight by. Returns false when the layer does not reflect.
+*/
+bool mat_layer_reflectivity(const struct mat_layer *layer, double cos_i,
+                            double n, double refl[3], double *weight);
+
+/* The metallic-highlight factor of finish metallic M (semantics §3.3). */
+void mat_metallic_tint(double metallic, double cos_angle,
+                       const iris_colour *pigment, double out[3]);
+
+/* The scene's default noise generator, for pattern evaluation. */
+int mat_noise_generator(const struct mat_ctx *ctx);
+
+#endif

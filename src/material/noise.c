@@ -1,0 +1,407 @@
+/* SPDX-License-Identifier: MIT */
+/*
+** noise.c: POV-Ray 3.7's noise functions (see noise.h).
+**
+** DESIGN. POV-Ray's lattice noise hashes the integer cell of a point into
+** a 4096-entry permutation (shuffled by a fixed LCG with seed 0) and reads
+** four coefficients per lattice corner from a 267-entry table of random
+** numbers, whose odd slots hold half of each value. The sum of the eight
+** trilinear corner terms, smoothed by the cubic s-curve, is the noise;
+** generator 2 stretches its observed range [-1.05242, 0.988997] to [0, 1],
+** generator 1 adds 0.5 and clamps. Generator 3 is Perlin's gradient noise
+** over 2048 random unit gradients drawn by the same LCG from seed 1. All
+** tables are rebuilt from those seeds at start-up; only the 267 random
+** coefficients are data, listed below as POV-Ray ships them
+** (source/backend/texture/texture.cpp, RTable, v3.7.0.10).
+*/
+#include "config.h"
+
+#include <math.h>
+#include <pthread.h>
+#include <stdint.h>
+
+#include "material/noise.h"
+
+/* POV-Ray's integer-lattice offset: cells are counted from -10000 so
+** that negative coordinates hash like positive ones. */
+#define LATTICE_MIN (-10000)
+#define NOISE_EPSILON 1e-10
+
+/* The random coefficients of the lattice noise (see the file comment). */
+static const double rtable_values[267] = {
+    -1, 0.604974, -0.937102, 0.414115, 0.576226, -0.0161593,
+    0.432334, 0.103685, 0.590539, 0.0286412, 0.46981, -0.84622,
+    -0.0734112, -0.304097, -0.40206, -0.210132, -0.919127, 0.652033,
+    -0.83151, -0.183948, -0.671107, 0.852476, 0.043595, -0.404532,
+    0.75494, -0.335653, 0.618433, 0.605707, 0.708583, -0.477195,
+    0.899474, 0.490623, 0.221729, -0.400381, -0.853727, -0.932586,
+    0.659113, 0.961303, 0.325948, -0.750851, 0.842466, 0.734401,
+    -0.649866, 0.394491, -0.466056, -0.434073, 0.109026, 0.0847028,
+    -0.738857, 0.241505, 0.16228, -0.71426, -0.883665, -0.150408,
+    -0.90396, -0.686549, -0.785214, 0.488548, 0.0246433, 0.142473,
+    -0.602136, 0.375845, -0.00779736, 0.498955, -0.268147, 0.856382,
+    -0.386007, -0.596094, -0.867735, -0.570977, -0.914366, 0.28896,
+    0.672206, -0.233783, 0.94815, 0.895262, 0.343252, -0.173388,
+    -0.767971, -0.314748, 0.824308, -0.342092, 0.721431, -0.24004,
+    -0.63653, 0.553277, 0.376272, 0.158984, -0.452659, 0.396323,
+    -0.420676, -0.454154, 0.122179, 0.295857, 0.0664225, -0.202075,
+    -0.724788, 0.453513, 0.224567, -0.908812, 0.176349, -0.320516,
+    -0.697139, 0.742702, -0.900786, 0.471489, -0.133532, 0.119127,
+    -0.889769, -0.23183, -0.669673, -0.046891, -0.803433, -0.966735,
+    0.475578, -0.652644, 0.0112459, -0.730007, 0.128283, 0.145647,
+    -0.619318, 0.272023, 0.392966, 0.646418, -0.0207675, -0.315908,
+    0.480797, 0.535668, -0.250172, -0.83093, -0.653773, -0.443809,
+    0.119982, -0.897642, 0.89453, 0.165789, 0.633875, -0.886839,
+    0.930877, -0.537194, 0.587732, 0.722011, -0.209461, -0.0424659,
+    -0.814267, -0.919432, 0.280262, -0.66302, -0.558099, -0.537469,
+    -0.598779, 0.929656, -0.170794, -0.537163, 0.312581, 0.959442,
+    0.722652, 0.499931, 0.175616, -0.534874, -0.685115, 0.444999,
+    0.17171, 0.108202, -0.768704, -0.463828, 0.254231, 0.546014,
+    0.869474, 0.875212, -0.944427, 0.130724, -0.110185, 0.312184,
+    -0.33138, -0.629206, 0.0606546, 0.722866, -0.0979477, 0.821561,
+    0.0931258, -0.972808, 0.0318151, -0.867033, -0.387228, 0.280995,
+    -0.218189, -0.539178, -0.427359, -0.602075, 0.311971, 0.277974,
+    0.773159, 0.592493, -0.0331884, -0.630854, -0.269947, 0.339132,
+    0.581079, 0.209461, -0.317433, -0.284993, 0.181323, 0.341634,
+    0.804959, -0.229572, -0.758907, -0.336721, 0.605463, -0.991272,
+    -0.0188754, -0.300191, 0.368307, -0.176135, -0.3832, -0.749569,
+    0.62356, -0.573938, 0.278309, -0.971313, 0.839994, -0.830686,
+    0.439078, 0.66128, 0.694514, 0.0565042, 0.54342, -0.438804,
+    -0.0228428, -0.687068, 0.857267, 0.301991, -0.494255, -0.941039,
+    0.775509, 0.410575, -0.362081, -0.671534, -0.348379, 0.932433,
+    0.886442, 0.868681, -0.225666, -0.062211, -0.0976425, -0.641444,
+    -0.848112, 0.724697, 0.473503, 0.998749, 0.174701, 0.559625,
+    -0.029099, -0.337392, -0.958129, -0.659785, 0.236042, -0.246937,
+    0.659449, -0.027512, 0.821897, -0.226215, 0.0181735, 0.500481,
+    -0.420127, -0.427878, 0.566186,
+};
+
+/* rtable[2k] = value k, rtable[2k+1] = half of it, as POV-Ray lays it out. */
+static double rtable[267 * 2];
+static unsigned short hash_table[8192];
+
+#define GRAD_ENTRIES 2048
+static int grad_perm[2 * (GRAD_ENTRIES + 1)];
+static vec3 grad_vec[2 * (GRAD_ENTRIES + 1)];
+
+#define WAVE_TABLE 256
+static vec3 wave_sources[WAVE_TABLE];
+static double wave_freqs[WAVE_TABLE];
+
+static pthread_once_t noise_once = PTHREAD_ONCE_INIT;
+
+/* POV-Ray's table generator: next = next*1812433253 + 12345 in 32 bits,
+** and 15 bits taken from bit 16 up. */
+static int lcg15(uint32_t *state)
+{
+    *state = *state * 1812433253u + 12345u;
+    return (int)((*state >> 16) & 0x7FFF);
+}
+
+static void build_hash_table(void)
+{
+    uint32_t st = 0;
+    for (int i = 0; i < 4096; i++)
+        hash_table[i] = (unsigned short)i;
+    for (int i = 4095; i >= 0; i--) {
+        int j = lcg15(&st) % 4096;
+        unsigned short tmp = hash_table[i];
+        hash_table[i] = hash_table[j];
+        hash_table[j] = tmp;
+    }
+    for (int i = 0; i < 4096; i++)
+        hash_table[4096 + i] = hash_table[i];
+}
+
+static void build_gradients(void)
+{
+    uint32_t st = 1;
+    for (int i = 0; i < GRAD_ENTRIES; i++) {
+        double v[3], s;
+        do {
+            for (int j = 0; j < 3; j++)
+                v[j] = (double)((lcg15(&st) % (GRAD_ENTRIES << 1)) -
+                                GRAD_ENTRIES) / (double)GRAD_ENTRIES;
+            s = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+        } while (s > 1.0 || s < 1.0e-5);
+        s = 1.0 / sqrt(s);
+        grad_vec[i] = v3(v[0] * s, v[1] * s, v[2] * s);
+    }
+    for (int i = 0; i < GRAD_ENTRIES; i++)
+        grad_perm[i] = i;
+    /* POV-Ray steps by two here; reproduced because it fixes the table. */
+    for (int i = GRAD_ENTRIES; i > 0; i -= 2) {
+        int k = grad_perm[i];
+        int j = lcg15(&st) % GRAD_ENTRIES;
+        grad_perm[i] = grad_perm[j];
+        grad_perm[j] = k;
+    }
+    for (int i = 0; i < GRAD_ENTRIES + 2; i++) {
+        grad_perm[GRAD_ENTRIES + i] = grad_perm[i];
+        grad_vec[GRAD_ENTRIES + i] = grad_vec[i];
+    }
+}
+
+static void build_waves(void)
+{
+    uint32_t st = (uint32_t)-560851967;
+    for (int i = 0; i < WAVE_TABLE; i++) {
+        wave_sources[i] = v3_norm(noise_vector(v3((double)i, 0, 0)));
+        wave_freqs[i] = (double)lcg15(&st) * 0.000030518509476 + 0.01;
+    }
+}
+
+static void build_tables(void)
+{
+    for (int i = 0; i < 267; i++) {
+        rtable[2 * i] = rtable_values[i];
+        rtable[2 * i + 1] = rtable_values[i] * 0.5;
+    }
+    build_hash_table();
+    build_gradients();
+}
+
+static void init_once(void)
+{
+    build_tables();
+    build_waves(); /* needs the tables above */
+}
+
+void noise_init(void)
+{
+    pthread_once(&noise_once, init_once);
+}
+
+static double scurve(double a)
+{
+    return a * a * (3.0 - 2.0 * a);
+}
+
+/* The lattice cell of one coordinate: integer part (floored, with POV-Ray's
+** epsilon for negatives), its hash index and the fraction. */
+static void lattice(double x, int *index, double *frac)
+{
+    int cell = x >= 0 ? (int)x : (int)(x - (1 - NOISE_EPSILON));
+    *index = (cell - LATTICE_MIN) & 0xFFF;
+    *frac = x - cell;
+}
+
+static int hash2d(int a, int b)
+{
+    return hash_table[hash_table[a] ^ b];
+}
+
+/* Offset of the coefficients for lattice hash 'h' at z index 'iz'. */
+static const double *coeffs(int h, int iz)
+{
+    return &rtable[(hash_table[h ^ iz] & 0xFF) * 2];
+}
+
+/* One corner's term: weight times the linear function of the offsets. */
+static double corner(const double *mp, double s, double x, double y, double z)
+{
+    return s * (mp[1] + mp[2] * x + mp[4] * y + mp[6] * z);
+}
+
+/* Clips 'p' coordinates that would overflow the lattice arithmetic. */
+static vec3 safe_point(vec3 p)
+{
+    const double lim = 1e9;
+    if (!(fabs(p.x) < lim)) p.x = isnan(p.x) ? 0 : copysign(lim, p.x);
+    if (!(fabs(p.y) < lim)) p.y = isnan(p.y) ? 0 : copysign(lim, p.y);
+    if (!(fabs(p.z) < lim)) p.z = isnan(p.z) ? 0 : copysign(lim, p.z);
+    return p;
+}
+
+static double gradient_noise(vec3 p);
+
+double noise_value(vec3 p, int generator)
+{
+    noise_init();
+    p = safe_point(p);
+    if (generator == 3) {
+        /* POV-Ray's bias correction for the gradient noise. */
+        double v = 0.5 * (1.59 * gradient_noise(p) + 0.985);
+        return fmin(fmax(v, 0.0), 1.0);
+    }
+    int ix, iy, iz;
+    double fx, fy, fz;
+    lattice(p.x, &ix, &fx);
+    lattice(p.y, &iy, &fy);
+    lattice(p.z, &iz, &fz);
+    double gx = fx - 1, gy = fy - 1, gz = fz - 1;
+    double sx = scurve(fx), sy = scurve(fy), sz = scurve(fz);
+    double tx = 1 - sx, ty = 1 - sy, tz = 1 - sz;
+    double txty = tx * ty, sxty = sx * ty, txsy = tx * sy, sxsy = sx * sy;
+    int h00 = hash2d(ix, iy), h10 = hash2d(ix + 1, iy);
+    int h01 = hash2d(ix, iy + 1), h11 = hash2d(ix + 1, iy + 1);
+    double sum;
+    sum = corner(coeffs(h00, iz), txty * tz, fx, fy, fz);
+    sum += corner(coeffs(h10, iz), sxty * tz, gx, fy, fz);
+    sum += corner(coeffs(h01, iz), txsy * tz, fx, gy, fz);
+    sum += corner(coeffs(h11, iz), sxsy * tz, gx, gy, fz);
+    sum += corner(coeffs(h00, iz + 1), txty * sz, fx, fy, gz);
+    sum += corner(coeffs(h10, iz + 1), sxty * sz, gx, fy, gz);
+    sum += corner(coeffs(h01, iz + 1), txsy * sz, fx, gy, gz);
+    sum += corner(coeffs(h11, iz + 1), sxsy * sz, gx, gy, gz);
+    if (generator == 2) {
+        /* Stretch the measured range [-1.05242, 0.988997] to [0, 1]. */
+        sum = (sum + 1.05242) * 0.48985582;
+    } else {
+        sum += 0.5;
+    }
+    return fmin(fmax(sum, 0.0), 1.0);
+}
+
+/* Adds the three components of one corner (coefficient blocks 8 apart). */
+static void dcorner(vec3 *r, const double *mp, double s, double x, double y,
+                    double z)
+{
+    r->x += corner(mp, s, x, y, z);
+    r->y += corner(mp + 8, s, x, y, z);
+    r->z += corner(mp + 16, s, x, y, z);
+}
+
+vec3 noise_vector(vec3 p)
+{
+    noise_init();
+    p = safe_point(p);
+    int ix, iy, iz;
+    double fx, fy, fz;
+    lattice(p.x, &ix, &fx);
+    lattice(p.y, &iy, &fy);
+    lattice(p.z, &iz, &fz);
+    double gx = fx - 1, gy = fy - 1, gz = fz - 1;
+    double sx = scurve(fx), sy = scurve(fy), sz = scurve(fz);
+    double tx = 1 - sx, ty = 1 - sy, tz = 1 - sz;
+    double txty = tx * ty, sxty = sx * ty, txsy = tx * sy, sxsy = sx * sy;
+    int h00 = hash2d(ix, iy), h10 = hash2d(ix + 1, iy);
+    int h01 = hash2d(ix, iy + 1), h11 = hash2d(ix + 1, iy + 1);
+    vec3 r = v3(0, 0, 0);
+    dcorner(&r, coeffs(h00, iz), txty * tz, fx, fy, fz);
+    dcorner(&r, coeffs(h10, iz), sxty * tz, gx, fy, fz);
+    dcorner(&r, coeffs(h11, iz), sxsy * tz, gx, gy, fz);
+    dcorner(&r, coeffs(h01, iz), txsy * tz, fx, gy, fz);
+    dcorner(&r, coeffs(h01, iz + 1), txsy * sz, fx, gy, gz);
+    dcorner(&r, coeffs(h11, iz + 1), sxsy * sz, gx, gy, gz);
+    dcorner(&r, coeffs(h10, iz + 1), sxty * sz, gx, fy, gz);
+    dcorner(&r, coeffs(h00, iz + 1), txty * sz, fx, fy, gz);
+    return r;
+}
+
+/* Splits one coordinate for the gradient noise. */
+static void grad_setup(double x, int *b0, int *b1, double *r0, double *r1)
+{
+    const double rollover = 10000000.023157213;
+    double t = x + rollover;
+    int it = (int)floor(t);
+    *b0 = it & (GRAD_ENTRIES - 1);
+    *b1 = (*b0 + 1) & (GRAD_ENTRIES - 1);
+    *r0 = t - it;
+    *r1 = *r0 - 1.0;
+}
+
+static double lerp(double t, double a, double b)
+{
+    return a + t * (b - a);
+}
+
+static double gdot(int i, double x, double y, double z)
+{
+    return grad_vec[i].x * x + grad_vec[i].y * y + grad_vec[i].z * z;
+}
+
+static double gradient_noise(vec3 p)
+{
+    int bx0, bx1, by0, by1, bz0, bz1;
+    double rx0, rx1, ry0, ry1, rz0, rz1;
+    grad_setup(p.x, &bx0, &bx1, &rx0, &rx1);
+    grad_setup(p.y, &by0, &by1, &ry0, &ry1);
+    grad_setup(p.z, &bz0, &bz1, &rz0, &rz1);
+    int i = grad_perm[bx0], j = grad_perm[bx1];
+    int b00 = grad_perm[i + by0], b10 = grad_perm[j + by0];
+    int b01 = grad_perm[i + by1], b11 = grad_perm[j + by1];
+    double sx = scurve(rx0), sy = scurve(ry0), sz = scurve(rz0);
+    double a = lerp(sx, gdot(b00 + bz0, rx0, ry0, rz0),
+                    gdot(b10 + bz0, rx1, ry0, rz0));
+    double b = lerp(sx, gdot(b01 + bz0, rx0, ry1, rz0),
+                    gdot(b11 + bz0, rx1, ry1, rz0));
+    double c = lerp(sy, a, b);
+    a = lerp(sx, gdot(b00 + bz1, rx0, ry0, rz1),
+             gdot(b10 + bz1, rx1, ry0, rz1));
+    b = lerp(sx, gdot(b01 + bz1, rx0, ry1, rz1),
+             gdot(b11 + bz1, rx1, ry1, rz1));
+    double d = lerp(sy, a, b);
+    return lerp(sz, c, d);
+}
+
+double noise_turbulence(vec3 p, const struct noise_turb *t, int generator)
+{
+    /* Generators 2 and 3 are re-centred octave by octave, as POV-Ray does. */
+    double value = generator > 1
+        ? fmin(fmax(2.0 * noise_value(p, generator) - 0.5, 0.0), 1.0)
+        : noise_value(p, generator);
+    double l = t->lambda, o = t->omega;
+    for (int i = 2; i <= t->octaves; i++) {
+        double n = noise_value(v3_scale(p, l), generator);
+        value += o * (generator > 1 ? 2.0 * n - 0.5 : n);
+        if (i < t->octaves) {
+            l *= t->lambda;
+            o *= t->omega;
+        }
+    }
+    return value;
+}
+
+vec3 noise_dturbulence(vec3 p, const struct noise_turb *t)
+{
+    vec3 r = noise_vector(p);
+    double l = t->lambda, o = t->omega;
+    for (int i = 2; i <= t->octaves; i++) {
+        r = v3_madd(r, noise_vector(v3_scale(p, l)), o);
+        if (i < t->octaves) {
+            l *= t->lambda;
+            o *= t->omega;
+        }
+    }
+    return r;
+}
+
+int noise_hash3d(int a, int b, int c)
+{
+    noise_init();
+    return hash_table[hash_table[hash_table[a & 0xFFF] ^ (b & 0xFFF)] ^
+                      (c & 0xFFF)];
+}
+
+void noise_wave_source(int i, vec3 *source, double *frequency)
+{
+    noise_init();
+    if (i >= 0 && i < WAVE_TABLE) {
+        *source = wave_sources[i];
+        *frequency = wave_freqs[i];
+        return;
+    }
+    /* Past the table: replay the generator (rare: number_of_waves > 256). */
+    uint32_t st = (uint32_t)-560851967;
+    int r = 0;
+    for (int k = 0; k <= i; k++)
+        r = lcg15(&st);
+    *source = v3_norm(noise_vector(v3((double)i, 0, 0)));
+    *frequency = (double)r * 0.000030518509476 + 0.01;
+}
+
+double noise_cycloidal(double v)
+{
+    /* sin(2 pi v), written as POV-Ray writes it so that rounding agrees. */
+    const double two_pi = 6.283185307179586;
+    if (v >= 0.0)
+        return sin((double)((v - floor(v)) * 50000.0) / 50000.0 * two_pi);
+    return -sin((double)((-(v + floor(-v))) * 50000.0) / 50000.0 * two_pi);
+}
+
+double noise_triangle_wave(double v)
+{
+    double off = v >= 0.0 ? v - floor(v) : v + 1.0 + floor(fabs(v));
+    return off >= 0.5 ? 2.0 * (1.0 - off) : 2.0 * off;
+}
