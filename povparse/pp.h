@@ -43,17 +43,6 @@ enum pp_tok {
     T_COUNT
 };
 
-struct pp_sym;
-
-/* One token: where it is (file, byte offset, length) and its value. */
-typedef struct pp_token {
-    int kind;
-    uint32_t file;
-    uint32_t off, len;
-    double num;            /* T_NUMBER */
-    const char *str;       /* T_STRING contents (scratch arena) */
-    struct pp_sym *sym;    /* T_IDENT: the symbol when it was read */
-} pp_token;
 
 /* A source file held in memory with its line map. */
 typedef struct pp_file {
@@ -112,6 +101,20 @@ typedef struct pp_value {
     } u;
 } pp_value;
 
+struct pp_sym;
+
+/* One token: where it is (file, byte offset, length) and its value. */
+typedef struct pp_token {
+    int kind;
+    uint32_t file;
+    uint32_t off, len;
+    double num;            /* T_NUMBER */
+    const char *str;       /* T_STRING contents (scratch arena) */
+    struct pp_sym *sym;    /* T_IDENT: the symbol, valid only until the
+                              next token (a macro may end and free it) */
+    pp_value val;          /* T_IDENT: a copy of the symbol's value */
+} pp_token;
+
 /* An array of 1 to 5 dimensions; unset elements have kind V_NONE. */
 typedef struct pp_array {
     int ndim;
@@ -164,6 +167,8 @@ typedef struct pp_fileh {
 ** (a macro parameter passed an identifier: POV-Ray's by-reference rule). */
 typedef struct pp_sym {
     const char *name;
+    size_t name_len;
+    char name_buf[48];     /* short names live here */
     struct pp_sym *ref;
     pp_value val;
     struct pp_sym *next;   /* hash chain */
@@ -175,6 +180,7 @@ typedef struct pp_scope {
     pp_sym **buckets;
     unsigned n_buckets, n_syms;
 } pp_scope;
+
 
 /* Input frames: the file being read, and the #include files and macro
 ** calls that led to it. */
@@ -237,10 +243,10 @@ struct pp_state {
     int n_conds, cap_conds;
     int include_depth, macro_depth;
 
-    /* Tokens: one token of look-ahead can be pushed back */
+    /* Tokens: up to four tokens of look-ahead can be pushed back */
     pp_token tok;          /* the current token */
-    bool have_unget;
-    pp_token unget;
+    int n_unget;
+    pp_token unget[4];
     int no_expand;         /* > 0: identifiers are not expanded as macros */
 
     /* Keyword table (built per parse; tokens.def) */
@@ -251,6 +257,7 @@ struct pp_state {
     /* Symbol tables */
     pp_scope *scopes;
     int n_scopes, cap_scopes;
+    pp_sym *free_syms;     /* recycled symbols */
 
     /* Defaults set by #default */
     iris_texture *default_tex;
@@ -312,6 +319,19 @@ uint32_t pp_add_text(pp_state *ps, const char *name, const char *text,
 bool pp_next_is_directive(pp_state *ps);
 void pp_skip_block(pp_state *ps);     /* after '{': up to its '}' */
 void pp_close_files(pp_state *ps);
+/* Raw skipping of a false branch: returns the directive it stopped at
+** (T_ELSE, T_ELSEIF, T_END, T_CASE, T_RANGE, T_BREAK) at depth 0. */
+enum { SKIP_IF = 0, SKIP_END, SKIP_SWITCH };
+int pp_skip(pp_state *ps, int mode, const pp_cond *opener);
+void pp_push_cond(pp_state *ps, int kind, const pp_token *at);
+void pp_push_frame(pp_state *ps, int kind, uint32_t file, uint32_t pos,
+                   const pp_token *call);
+void pp_pop_frame(pp_state *ps);
+/* The raw next token of the current frame (no directives, no macros). */
+void pp_raw(pp_state *ps, pp_token *t);
+/* Runs the directive whose keyword follows '#' (directive.c). */
+void pp_directive(pp_state *ps, const pp_token *hash);
+void pp_call_macro(pp_state *ps, const pp_macro *m, const pp_token *call);
 
 /* ---- symtab.c ----------------------------------------------------- */
 void sym_push_scope(pp_state *ps);

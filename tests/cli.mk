@@ -1,1 +1,13 @@
-## tests/cli.mk: end-to-end tests of the iris command.
+## tests/cli.mk: the iris command and image files.
+check_PROGRAMS += tests/cli/test_options tests/cli/image_roundtrip
+TESTS += tests/cli/test_options tests/cli/image_roundtrip tests/cli/cli.sh
+tests_cli_test_options_SOURCES = tests/cli/test_options.c src/cli/options.c
+tests_cli_test_options_CFLAGS = $(TEST_CFLAGS)
+tests_cli_test_options_LDADD = $(TEST_LDADD)
+tests_cli_image_roundtrip_SOURCES = tests/cli/image_roundtrip.c
+tests_cli_image_roundtrip_CFLAGS = $(TEST_CFLAGS)
+tests_cli_image_roundtrip_LDADD = $(TEST_LDADD)
+EXTRA_DIST += tests/cli/cli.sh tests/cli/scenes
+check_PROGRAMS += tests/cli/imgtool
+tests_cli_imgtool_SOURCES = tests/cli/imgtool.c
+tests_cli_imgtool_LDADD = libiris_core.la $(IRIS_LIBS)

@@ -1,1 +1,29 @@
-## tools: generators run by make targets, not at render time.
+## tools: generators run by make targets, not at render time. Their output
+## is checked in, so an ordinary build needs neither the tools nor data/.
+##   make regen-tables   data/*.csv -> src/spectrum/tables.c
+##   make regen-burns    Burns' curves -> src/spectrum/burns_table.c
+##                       (needs LAPACKE: Debian liblapacke-dev)
+EXTRA_PROGRAMS = tools/gen_tables
+tools_gen_tables_SOURCES = tools/gen_tables.c
+CLEANFILES += tools/gen_tables$(EXEEXT)
+
+regen-tables: tools/gen_tables$(EXEEXT)
+	tools/gen_tables$(EXEEXT) $(top_srcdir)/data > $(top_srcdir)/src/spectrum/tables.c.tmp
+	mv $(top_srcdir)/src/spectrum/tables.c.tmp $(top_srcdir)/src/spectrum/tables.c
+
+if HAVE_LAPACKE
+EXTRA_PROGRAMS += tools/burns
+tools_burns_SOURCES = tools/burns.c
+tools_burns_CFLAGS = $(AM_CFLAGS) $(LAPACKE_CFLAGS)
+tools_burns_LDADD = libiris_core.la $(LAPACKE_LIBS) $(IRIS_LIBS)
+CLEANFILES += tools/burns$(EXEEXT)
+
+regen-burns: tools/burns$(EXEEXT)
+	tools/burns$(EXEEXT) > $(top_srcdir)/src/spectrum/burns_table.c.tmp
+	mv $(top_srcdir)/src/spectrum/burns_table.c.tmp $(top_srcdir)/src/spectrum/burns_table.c
+else
+regen-burns:
+	@echo "regen-burns needs LAPACKE (Debian: liblapacke-dev); rerun configure" >&2; exit 1
+endif
+.PHONY: regen-tables regen-burns
+EXTRA_DIST += tools/gen_tables.c tools/burns.c

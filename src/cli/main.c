@@ -111,30 +111,31 @@ int main(int argc, char **argv)
     }
     install_signals();
 
-    struct run_times times = { 0, 0, 0 };
-    iris_scene *scene = NULL;
-    int rc = parse_scene(&o, &scene);
-    times.parse = par_now() - t0;
-    if (rc)
-        return rc;
-    if (o.action == CLI_PARSE_ONLY) {
-        if (o.verbose)
-            iris_scene_dump(scene, stdout);
-        iris_scene_destroy(scene);
-        return 0;
-    }
-
     char *out_name = cli_output_name(&o);
     if (!out_name) {
         fprintf(stderr, "iris: out of memory\n");
-        iris_scene_destroy(scene);
         return EXIT_RENDER;
     }
     if (same_file(out_name, o.scene)) {
         fprintf(stderr, "iris: %s: refusing to overwrite the scene file with the image\n", out_name);
         free(out_name);
-        iris_scene_destroy(scene);
         return EXIT_USAGE;
+    }
+
+    struct run_times times = { 0, 0, 0 };
+    iris_scene *scene = NULL;
+    int rc = parse_scene(&o, &scene);
+    times.parse = par_now() - t0;
+    if (rc) {
+        free(out_name);
+        return rc;
+    }
+    if (o.action == CLI_PARSE_ONLY) {
+        if (o.verbose)
+            iris_scene_dump(scene, stdout);
+        free(out_name);
+        iris_scene_destroy(scene);
+        return 0;
     }
 
     struct progress prog;

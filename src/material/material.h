@@ -51,6 +51,7 @@ struct mat_point {
     vec3 d;                    /* unit incoming ray direction */
     iris_vec2 uv;              /* surface uv, where the shape has one */
     const iris_object *obj;    /* the primitive hit, or NULL */
+    bool skip_normals;         /* quality below 8: normal{} is ignored */
 };
 
 /* One texture layer at a point. */

@@ -2,7 +2,7 @@
 /*
 ** tables.h: the measured spectral data compiled into the program.
 **
-** tables.c is generated from data/*.csv by tools/gen_tables (`make
+** tables.c is generated from the CSV files of data/ by tools/gen_tables (`make
 ** regen-tables`); burns_table.c by tools/burns (`make regen-burns`). Use
 ** the interpolating functions of spectrum.h rather than these arrays.
 */

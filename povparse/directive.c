@@ -1,0 +1,724 @@
+/* SPDX-License-Identifier: MIT */
+/*
+** directive.c: the language directives (#declare, #if, #while, #macro,
+** #include, #fopen, ...), run by input.c when it meets a '#'.
+**
+** Control flow is POV-Ray's: a false #if branch is skipped by raw
+** scanning; a #while loop remembers where its condition starts and jumps
+** back there at its #end; a macro call pushes a frame that reads the body
+** from the source, and the body's #end pops it.
+*/
+#include "config.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "pp.h"
+
+/* Reads an identifier token without expanding macros. */
+static void ident(pp_state *ps, const char *what)
+{
+    ps->no_expand++;
+    pp_next(ps);
+    ps->no_expand--;
+    int k = ps->tok.kind;
+    if (k != T_IDENT) {
+        char buf[80];
+        if (k > T_KW_FIRST)
+            pp_error(ps, &ps->tok, "%s is a reserved word and cannot be %s",
+                     pp_tok_name(ps, &ps->tok, buf, sizeof buf), what);
+        pp_error(ps, &ps->tok, "expected an identifier for %s, found %s",
+                 what, pp_tok_name(ps, &ps->tok, buf, sizeof buf));
+    }
+}
+
+/* Parses '(' float ')' as the condition of #if/#while/#case. */
+static double cond_value(pp_state *ps)
+{
+    return pp_float(ps);
+}
+
+/* Assigns 'v' to array element [..] of 'arr'; reads the indices. */
+static pp_value *array_slot(pp_state *ps, pp_array *arr)
+{
+    long idx = 0;
+    for (int d = 0; d < arr->ndim; d++) {
+        pp_expect(ps, T_LBRACKET, "'['");
+        pp_token at = ps->tok;
+        double f = pp_float(ps);
+        pp_expect(ps, T_RBRACKET, "']'");
+        long i = (long)f;
+        if (!(f >= 0) || i >= arr->dims[d])
+            pp_error(ps, &at, "array index %g out of range [0, %d]", f,
+                     arr->dims[d] - 1);
+        idx = idx * arr->dims[d] + i;
+    }
+    return &arr->items[idx];
+}
+
+/* #declare / #local Name [index...] = rvalue [;] */
+static void do_declare(pp_state *ps, bool local)
+{
+    ident(ps, "declared");
+    pp_token name = ps->tok;
+    const char *text = pp_tok_text(ps, &name);
+    pp_value *slot = NULL;
+    pp_sym *target = NULL;
+    if (pp_accept(ps, T_LBRACKET)) {
+        pp_unget(ps);
+        pp_sym *s = sym_resolve(sym_lookup(ps, text, name.len));
+        if (!s || s->val.kind != V_ARRAY)
+            pp_error(ps, &name, "'%.*s' is not an array", (int)name.len,
+                     text);
+        slot = array_slot(ps, s->val.u.arr);
+    }
+    pp_expect(ps, T_EQUALS, "'='");
+    pp_value v = pp_rvalue(ps);
+    if (slot) {
+        if (slot->kind != V_NONE && slot->kind != v.kind &&
+            !((slot->kind == V_FLOAT || slot->kind == V_VECTOR ||
+               slot->kind == V_COLOUR) &&
+              (v.kind == V_FLOAT || v.kind == V_VECTOR || v.kind == V_COLOUR)))
+            pp_error(ps, &name, "cannot store a %s in an array of %s",
+                     pp_kind_name(v.kind), pp_kind_name(slot->kind));
+        *slot = v;
+    } else {
+        if (local) {
+            target = sym_define(ps, ps->n_scopes - 1, text, name.len);
+        } else {
+            /* #declare writes where the name already lives (this is how a
+            ** macro's by-reference parameters return values), else in the
+            ** global table. */
+            target = sym_lookup(ps, text, name.len);
+            if (!target)
+                target = sym_define(ps, 0, text, name.len);
+        }
+        target = sym_resolve(target);
+        target->val = v;
+    }
+    if (!pp_next_is_directive(ps)) {
+        pp_next(ps);
+        if (ps->tok.kind != T_SEMI)
+            pp_unget(ps);
+    }
+}
+
+/* Starts an #if-like branch: runs it when 'cond', else skips to the
+** #else/#elseif that applies. */
+static void branch(pp_state *ps, const pp_token *at, bool cond)
+{
+    pp_push_cond(ps, C_IF, at);
+    if (cond)
+        return;
+    for (;;) {
+        pp_cond opener = ps->conds[ps->n_conds - 1];
+        int k = pp_skip(ps, SKIP_IF, &opener);
+        if (k == T_END) {
+            ps->n_conds--;
+            return;
+        }
+        if (k == T_ELSE) {
+            ps->conds[ps->n_conds - 1].kind = C_ELSE;
+            return;
+        }
+        /* #elseif (cond) */
+        if (cond_value(ps) != 0)
+            return;
+    }
+}
+
+/* #ifdef / #ifndef ( identifier [index] ) */
+static bool is_defined(pp_state *ps)
+{
+    pp_expect(ps, T_LPAREN, "'('");
+    ps->no_expand++;
+    pp_next(ps);
+    ps->no_expand--;
+    bool def;
+    if (ps->tok.kind != T_IDENT) {
+        /* POV-Ray: reserved words count as defined. */
+        def = ps->tok.kind > T_KW_FIRST;
+    } else {
+        pp_sym *s = sym_resolve(sym_lookup(ps, pp_tok_text(ps, &ps->tok),
+                                           ps->tok.len));
+        def = s && s->val.kind != V_NONE;
+        if (s && s->val.kind == V_ARRAY && pp_accept(ps, T_LBRACKET)) {
+            pp_unget(ps);
+            def = array_slot(ps, s->val.u.arr)->kind != V_NONE;
+        }
+    }
+    pp_expect(ps, T_RPAREN, "')'");
+    return def;
+}
+
+/* #switch (value) ... #case (v) ... #range (lo, hi) ... #else ... #end */
+static void switch_seek(pp_state *ps)
+{
+    for (;;) {
+        pp_cond opener = ps->conds[ps->n_conds - 1];
+        int k = pp_skip(ps, SKIP_SWITCH, &opener);
+        pp_cond *c = &ps->conds[ps->n_conds - 1];
+        if (k == T_END) {
+            ps->n_conds--;
+            return;
+        }
+        if (k == T_ELSE) {
+            c->matched = true;
+            return;
+        }
+        if (k == T_BREAK)
+            continue;
+        if (k == T_CASE) {
+            pp_expect(ps, T_LPAREN, "'('");
+            double v = pp_float(ps);
+            pp_expect(ps, T_RPAREN, "')'");
+            if (fabs(v - c->switch_val) < 1e-10) {
+                c->matched = true;
+                return;
+            }
+        } else if (k == T_RANGE) {
+            pp_expect(ps, T_LPAREN, "'('");
+            double lo = pp_float(ps);
+            pp_expect(ps, T_COMMA, "','");
+            double hi = pp_float(ps);
+            pp_expect(ps, T_RPAREN, "')'");
+            if (c->switch_val >= lo && c->switch_val <= hi) {
+                c->matched = true;
+                return;
+            }
+        }
+    }
+}
+
+/* Leaves the innermost #switch/#while/#for at #break. */
+static void do_break(pp_state *ps, const pp_token *at)
+{
+    pp_frame *fr = &ps->frames[ps->n_frames - 1];
+    int levels = 0;
+    for (int i = ps->n_conds - 1; i >= fr->cond_base; i--) {
+        int k = ps->conds[i].kind;
+        if (k == C_SWITCH || k == C_WHILE || k == C_FOR) {
+            pp_cond opener = ps->conds[i];
+            for (int j = 0; j <= levels; j++)
+                pp_skip(ps, SKIP_END, &opener);
+            ps->n_conds = i;
+            return;
+        }
+        if (k != C_IF && k != C_ELSE)
+            break;
+        levels++;
+    }
+    pp_error(ps, at, "#break outside #switch, #while or #for");
+}
+
+/* The #end of the innermost open directive. */
+static void do_end(pp_state *ps, const pp_token *at)
+{
+    pp_frame *fr = &ps->frames[ps->n_frames - 1];
+    if (ps->n_conds <= fr->cond_base)
+        pp_error(ps, at, "#end without #if, #while, #switch or #macro");
+    pp_cond *c = &ps->conds[ps->n_conds - 1];
+    switch (c->kind) {
+    case C_IF: case C_ELSE: case C_SWITCH:
+        ps->n_conds--;
+        return;
+    case C_WHILE: {
+        long limit = ps->opt.max_while_iterations;
+        if (++c->iterations > limit)
+            pp_error_at(ps, c->file, c->off, 6, "#while loop ran more than "
+                        "%ld times (limit: max_while_iterations)", limit);
+        fr->pos = c->cond_pos;
+        ps->n_unget = 0;
+        if (cond_value(ps) != 0)
+            return;
+        pp_cond opener = *c;
+        pp_skip(ps, SKIP_END, &opener);
+        ps->n_conds--;
+        return;
+    }
+    case C_FOR: {
+        long limit = ps->opt.max_while_iterations;
+        if (++c->iterations > limit)
+            pp_error_at(ps, c->file, c->off, 4, "#for loop ran more than "
+                        "%ld times (limit: max_while_iterations)", limit);
+        pp_sym *s = sym_resolve(c->for_sym);
+        double v = (s->val.kind == V_FLOAT ? s->val.v[0] : 0) + c->for_step;
+        if (c->for_step > 0 ? v <= c->for_end + 1e-10 * fabs(c->for_end)
+                            : v >= c->for_end - 1e-10 * fabs(c->for_end)) {
+            s->val.kind = V_FLOAT;
+            s->val.dim = 1;
+            s->val.v[0] = v;
+            fr->pos = c->loop_pos;
+            ps->n_unget = 0;
+            return;
+        }
+        ps->n_conds--;
+        return;
+    }
+    case C_MACRO:
+        ps->n_conds--;
+        pp_pop_frame(ps);
+        return;
+    default:
+        break;
+    }
+}
+
+void pp_call_macro(pp_state *ps, const pp_macro *m, const pp_token *call)
+{
+    if (ps->macro_depth >= ps->opt.max_macro_depth)
+        pp_error(ps, call, "macro '%s' nested more than %d deep (endless "
+                 "recursion?)", m->name, ps->opt.max_macro_depth);
+    pp_expect(ps, T_LPAREN, "'(' after the macro name");
+    pp_value *vals = NULL;
+    pp_sym **refs = NULL;
+    if (m->n_params) {
+        vals = pp_salloc(ps, (size_t)m->n_params * sizeof *vals);
+        refs = pp_salloc(ps, (size_t)m->n_params * sizeof *refs);
+    }
+    int n = 0;
+    if (!pp_accept(ps, T_RPAREN)) {
+        for (;;) {
+            if (n >= m->n_params)
+                pp_error(ps, &ps->tok, "too many parameters in the call of "
+                         "macro '%s' (it takes %d)", m->name, m->n_params);
+            /* A lone identifier is passed by reference. */
+            ps->no_expand++;
+            pp_next(ps);
+            ps->no_expand--;
+            if (ps->tok.kind == T_IDENT && ps->tok.val.kind != V_MACRO) {
+                pp_token id = ps->tok;
+                pp_next(ps);
+                if ((ps->tok.kind == T_COMMA || ps->tok.kind == T_RPAREN) &&
+                    id.sym) {
+                    refs[n] = id.sym;
+                    vals[n] = id.val;
+                    n++;
+                    if (ps->tok.kind == T_RPAREN)
+                        break;
+                    continue;
+                }
+                pp_unget(ps);
+                ps->tok = id;
+            }
+            pp_unget(ps);
+            vals[n++] = pp_rvalue(ps);
+            pp_next(ps);
+            if (ps->tok.kind == T_RPAREN)
+                break;
+            if (ps->tok.kind != T_COMMA) {
+                char buf[80];
+                pp_error(ps, &ps->tok, "expected ',' or ')' in the call of "
+                         "macro '%s', found %s", m->name,
+                         pp_tok_name(ps, &ps->tok, buf, sizeof buf));
+            }
+        }
+    }
+    if (n != m->n_params)
+        pp_error(ps, call, "macro '%s' takes %d parameters, %d given",
+                 m->name, m->n_params, n);
+    ps->macro_depth++;
+    pp_push_frame(ps, FR_MACRO, m->file, m->body_off, call);
+    ps->frames[ps->n_frames - 1].macro = m;
+    int scope = ps->n_scopes - 1;
+    for (int i = 0; i < n; i++) {
+        pp_sym *s = sym_define(ps, scope, m->params[i], strlen(m->params[i]));
+        if (refs[i])
+            s->ref = refs[i];
+        else
+            s->val = vals[i];
+    }
+    pp_token at = *call;
+    pp_push_cond(ps, C_MACRO, &at);
+    ps->frames[ps->n_frames - 1].cond_base = ps->n_conds - 1;
+}
+
+/* #macro Name ( params ) body #end */
+static void do_macro(pp_state *ps, const pp_token *at)
+{
+    ident(ps, "a macro name");
+    pp_token name = ps->tok;
+    pp_macro *m = pp_salloc(ps, sizeof *m);
+    m->name = pp_strdup(ps, pp_tok_text(ps, &name), name.len);
+    pp_expect(ps, T_LPAREN, "'('");
+    const char *params[64];
+    ps->no_expand++;
+    pp_next(ps);
+    while (ps->tok.kind != T_RPAREN) {
+        if (ps->tok.kind != T_IDENT) {
+            ps->no_expand--;
+            pp_error(ps, &ps->tok, "expected a parameter name");
+        }
+        if (m->n_params >= 64) {
+            ps->no_expand--;
+            pp_error(ps, &ps->tok, "too many macro parameters (max 64)");
+        }
+        params[m->n_params++] = pp_strdup(ps, pp_tok_text(ps, &ps->tok),
+                                          ps->tok.len);
+        pp_next(ps);
+        if (ps->tok.kind == T_COMMA)
+            pp_next(ps);
+    }
+    ps->no_expand--;
+    m->params = pp_salloc(ps, (size_t)(m->n_params + 1) * sizeof *m->params);
+    memcpy(m->params, params, (size_t)m->n_params * sizeof *params);
+    pp_frame *fr = &ps->frames[ps->n_frames - 1];
+    m->file = fr->file;
+    m->body_off = fr->pos;
+    m->def_off = at->off;
+    pp_cond opener;
+    memset(&opener, 0, sizeof opener);
+    opener.kind = C_MACRO;
+    opener.file = at->file;
+    opener.off = at->off;
+    pp_skip(ps, SKIP_END, &opener);
+    pp_sym *s = sym_define(ps, 0, pp_tok_text(ps, &name), name.len);
+    s->ref = NULL;
+    s->val.kind = V_MACRO;
+    s->val.u.macro = m;
+}
+
+/* #for (Identifier, Start, End [, Step]) */
+static void do_for(pp_state *ps, const pp_token *at)
+{
+    pp_expect(ps, T_LPAREN, "'('");
+    ident(ps, "the loop variable");
+    pp_token name = ps->tok;
+    pp_expect(ps, T_COMMA, "','");
+    double start = pp_float(ps);
+    pp_expect(ps, T_COMMA, "','");
+    double end = pp_float(ps);
+    double step = 1;
+    if (pp_accept(ps, T_COMMA))
+        step = pp_float(ps);
+    pp_expect(ps, T_RPAREN, "')'");
+    if (step == 0)
+        pp_error(ps, at, "#for step must not be 0");
+    pp_sym *s = sym_lookup(ps, pp_tok_text(ps, &name), name.len);
+    if (!s)
+        s = sym_define(ps, ps->n_scopes - 1, pp_tok_text(ps, &name), name.len);
+    s = sym_resolve(s);
+    s->val.kind = V_FLOAT;
+    s->val.dim = 1;
+    s->val.v[0] = start;
+    pp_push_cond(ps, C_FOR, at);
+    pp_cond *c = &ps->conds[ps->n_conds - 1];
+    c->for_sym = s;
+    c->for_end = end;
+    c->for_step = step;
+    c->loop_pos = ps->frames[ps->n_frames - 1].pos;
+    ps->n_unget = 0;
+    if (step > 0 ? start > end : start < end) {
+        pp_cond opener = *c;
+        pp_skip(ps, SKIP_END, &opener);
+        ps->n_conds--;
+    }
+}
+
+/* #fopen Name "file" read|write|append */
+static void do_fopen(pp_state *ps)
+{
+    ident(ps, "a file identifier");
+    pp_token name = ps->tok;
+    const char *path = pp_string(ps);
+    pp_token mode = ps->tok;
+    pp_next(ps);
+    mode = ps->tok;
+    bool write = mode.kind == T_WRITE || mode.kind == T_APPEND;
+    if (!write && mode.kind != T_READ)
+        pp_error(ps, &mode, "expected read, write or append");
+    pp_fileh *fh = pp_salloc(ps, sizeof *fh);
+    fh->write = write;
+    fh->path = path;
+    if (write && !ps->opt.allow_writes) {
+        pp_warning(ps, &mode, "#fopen for writing refused (writes are not "
+                   "allowed); output to \"%s\" is dropped", path);
+    } else {
+        if (ps->n_open_files >= 32)
+            pp_error(ps, &name, "too many open files");
+        char full[4096];
+        if (path[0] != '/' && ps->n_files > 0)
+            snprintf(full, sizeof full, "%s/%s", ps->files[name.file].dir,
+                     path);
+        else
+            snprintf(full, sizeof full, "%s", path);
+        fh->fp = fopen(full, mode.kind == T_READ ? "r" :
+                             mode.kind == T_WRITE ? "w" : "a");
+        if (!fh->fp)
+            pp_error(ps, &mode, "cannot open \"%s\"", full);
+        ps->open_files[ps->n_open_files++] = fh;
+    }
+    pp_sym *s = sym_define(ps, 0, pp_tok_text(ps, &name), name.len);
+    s->val.kind = V_FILE;
+    s->val.u.fh = fh;
+}
+
+static pp_fileh *file_ident(pp_state *ps)
+{
+    ident(ps, "a file identifier");
+    if (ps->tok.val.kind != V_FILE)
+        pp_error(ps, &ps->tok, "not a file opened by #fopen");
+    return ps->tok.val.u.fh;
+}
+
+/* Reads one comma-separated item (number, vector or string) from 'fp'. */
+static bool read_item(pp_state *ps, FILE *fp, pp_value *v)
+{
+    int c;
+    do {
+        c = fgetc(fp);
+    } while (c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == ',');
+    if (c == EOF)
+        return false;
+    memset(v, 0, sizeof *v);
+    if (c == '"') {
+        char buf[4096];
+        size_t n = 0;
+        while ((c = fgetc(fp)) != EOF && c != '"')
+            if (n + 1 < sizeof buf)
+                buf[n++] = (char)c;
+        v->kind = V_STRING;
+        v->u.str = pp_strdup(ps, buf, n);
+        return true;
+    }
+    if (c == '<') {
+        int d = 0;
+        v->kind = V_VECTOR;
+        while (d < 5 && fscanf(fp, " %lf ,", &v->v[d]) == 1)
+            d++;
+        while ((c = fgetc(fp)) != EOF && c != '>')
+            ;
+        v->dim = d < 2 ? 2 : d;
+        return true;
+    }
+    ungetc(c, fp);
+    v->kind = V_FLOAT;
+    v->dim = 1;
+    return fscanf(fp, "%lf", &v->v[0]) == 1;
+}
+
+/* #read (File, Var1, Var2, ...) */
+static void do_read(pp_state *ps)
+{
+    pp_expect(ps, T_LPAREN, "'('");
+    pp_fileh *fh = file_ident(ps);
+    while (pp_accept(ps, T_COMMA)) {
+        ident(ps, "a variable to read into");
+        pp_token name = ps->tok;
+        pp_value v;
+        if (fh->fp && !fh->write && read_item(ps, fh->fp, &v)) {
+            pp_sym *s = sym_lookup(ps, pp_tok_text(ps, &name), name.len);
+            if (!s)
+                s = sym_define(ps, 0, pp_tok_text(ps, &name), name.len);
+            sym_resolve(s)->val = v;
+        }
+    }
+    pp_expect(ps, T_RPAREN, "')'");
+}
+
+/* Writes value 'v' as POV-Ray's #write does. */
+static void write_value(FILE *fp, const pp_value *v)
+{
+    if (!fp)
+        return;
+    if (v->kind == V_STRING) {
+        fputs(v->u.str, fp);
+    } else if (v->kind == V_FLOAT) {
+        fprintf(fp, "%g", v->v[0]);
+    } else if (v->kind == V_VECTOR || v->kind == V_COLOUR) {
+        fputc('<', fp);
+        for (int i = 0; i < v->dim; i++)
+            fprintf(fp, i ? ",%g" : "%g", v->v[i]);
+        fputc('>', fp);
+    }
+}
+
+/* #write (File, items...) */
+static void do_write(pp_state *ps)
+{
+    pp_expect(ps, T_LPAREN, "'('");
+    pp_fileh *fh = file_ident(ps);
+    while (pp_accept(ps, T_COMMA)) {
+        pp_value v = pp_expr(ps);
+        write_value(fh->write ? fh->fp : NULL, &v);
+    }
+    pp_expect(ps, T_RPAREN, "')'");
+}
+
+/* #debug / #warning / #error / #render / #statistics "text" */
+static void do_message(pp_state *ps, int kind, const pp_token *at)
+{
+    const char *s = pp_string(ps);
+    if (kind == T_ERROR)
+        pp_error(ps, at, "#error: %s", s);
+    if (kind == T_WARNING) {
+        pp_warning(ps, at, "#warning: %s", s);
+        return;
+    }
+    if (!ps->opt.quiet_debug)
+        fputs(s, ps->opt.debug_stream ? ps->opt.debug_stream : stderr);
+}
+
+/* #default { texture | pigment | finish | normal } */
+static void do_default(pp_state *ps)
+{
+    pp_expect(ps, T_LBRACE, "'{'");
+    for (;;) {
+        pp_next(ps);
+        iris_texture *t = pp_alloc(ps, sizeof *t);
+        *t = *pp_default_texture(ps);
+        switch (ps->tok.kind) {
+        case T_TEXTURE: {
+            iris_texture *nt = pp_texture(ps);
+            ps->default_tex = nt;
+            if (nt->finish)
+                ps->default_finish = nt->finish;
+            if (nt->pigment)
+                ps->default_pigment = nt->pigment;
+            continue;
+        }
+        case T_PIGMENT:
+            t->pigment = pp_pigment(ps, t->pigment);
+            ps->default_pigment = t->pigment;
+            ps->default_tex = t;
+            continue;
+        case T_FINISH:
+            t->finish = pp_finish(ps, t->finish);
+            ps->default_finish = t->finish;
+            ps->default_tex = t;
+            continue;
+        case T_NORMAL:
+            t->normal = pp_normal(ps, t->normal);
+            ps->default_tex = t;
+            continue;
+        case T_RBRACE:
+            return;
+        default: {
+            char buf[80];
+            pp_error(ps, &ps->tok, "expected texture, pigment, finish or "
+                     "normal in #default, found %s",
+                     pp_tok_name(ps, &ps->tok, buf, sizeof buf));
+        }
+        }
+    }
+}
+
+void pp_directive(pp_state *ps, const pp_token *hash)
+{
+    pp_token kw;
+    pp_raw(ps, &kw);
+    pp_token at = kw;
+    at.off = hash->off;
+    at.len = kw.off + kw.len - hash->off;
+    if (kw.file != hash->file)
+        at = kw;
+    switch (kw.kind) {
+    case T_DECLARE: do_declare(ps, false); return;
+    case T_LOCAL: do_declare(ps, true); return;
+    case T_UNDEF:
+        ident(ps, "undefined");
+        sym_undef(ps, pp_tok_text(ps, &ps->tok), ps->tok.len);
+        return;
+    case T_IF:
+        branch(ps, &at, cond_value(ps) != 0);
+        return;
+    case T_IFDEF:
+        branch(ps, &at, is_defined(ps));
+        return;
+    case T_IFNDEF:
+        branch(ps, &at, !is_defined(ps));
+        return;
+    case T_ELSE: case T_ELSEIF: {
+        pp_frame *fr = &ps->frames[ps->n_frames - 1];
+        if (ps->n_conds > fr->cond_base) {
+            pp_cond *c = &ps->conds[ps->n_conds - 1];
+            if (c->kind == C_SWITCH && kw.kind == T_ELSE)
+                return; /* falling through into the default clause */
+            if (c->kind == C_IF) {
+                pp_cond opener = *c;
+                pp_skip(ps, SKIP_END, &opener);
+                ps->n_conds--;
+                return;
+            }
+        }
+        pp_error(ps, &at, "%s without #if", kw.kind == T_ELSE ? "#else"
+                                                              : "#elseif");
+    }
+    case T_END:
+        do_end(ps, &at);
+        return;
+    case T_WHILE: {
+        uint32_t cond_pos = ps->frames[ps->n_frames - 1].pos;
+        bool run = cond_value(ps) != 0;
+        pp_push_cond(ps, C_WHILE, &at);
+        ps->conds[ps->n_conds - 1].cond_pos = cond_pos;
+        if (!run) {
+            pp_cond opener = ps->conds[ps->n_conds - 1];
+            pp_skip(ps, SKIP_END, &opener);
+            ps->n_conds--;
+        }
+        return;
+    }
+    case T_FOR: do_for(ps, &at); return;
+    case T_SWITCH: {
+        double v = cond_value(ps);
+        pp_push_cond(ps, C_SWITCH, &at);
+        ps->conds[ps->n_conds - 1].switch_val = v;
+        switch_seek(ps);
+        return;
+    }
+    case T_CASE: case T_RANGE: {
+        pp_frame *fr = &ps->frames[ps->n_frames - 1];
+        if (ps->n_conds <= fr->cond_base ||
+            ps->conds[ps->n_conds - 1].kind != C_SWITCH)
+            pp_error(ps, &at, "#case or #range outside #switch");
+        /* Inside a matched clause without #break: POV-Ray falls through;
+        ** the label's value is read and ignored. */
+        pp_expect(ps, T_LPAREN, "'('");
+        pp_float(ps);
+        if (kw.kind == T_RANGE) {
+            pp_expect(ps, T_COMMA, "','");
+            pp_float(ps);
+        }
+        pp_expect(ps, T_RPAREN, "')'");
+        return;
+    }
+    case T_BREAK: do_break(ps, &at); return;
+    case T_MACRO: do_macro(ps, &at); return;
+    case T_INCLUDE: {
+        const char *name = pp_string(ps);
+        pp_open_file(ps, name, true, &at);
+        return;
+    }
+    case T_VERSION: {
+        double v = pp_float(ps);
+        ps->version = v;
+        ps->scene->version = v;
+        if (!pp_next_is_directive(ps) && !pp_accept(ps, T_SEMI))
+            ;
+        return;
+    }
+    case T_DEFAULT: do_default(ps); return;
+    case T_DEBUG: case T_WARNING: case T_ERROR: case T_RENDER:
+    case T_STATISTICS:
+        do_message(ps, kw.kind, &at);
+        return;
+    case T_FOPEN: do_fopen(ps); return;
+    case T_FCLOSE: {
+        pp_fileh *fh = file_ident(ps);
+        if (fh->fp) {
+            fclose(fh->fp);
+            fh->fp = NULL;
+        }
+        return;
+    }
+    case T_READ: do_read(ps); return;
+    case T_WRITE: do_write(ps); return;
+    default: {
+        char buf[80];
+        pp_error(ps, &at, "unknown directive #%s",
+                 pp_tok_name(ps, &kw, buf, sizeof buf));
+    }
+    }
+}

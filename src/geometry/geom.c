@@ -1,0 +1,344 @@
+/* SPDX-License-Identifier: MIT */
+/*
+** geom.c: the crossing list, the per-kind dispatch of geom.h and the
+** parameter checks that keep degenerate shapes out of the solvers.
+*/
+#include "config.h"
+
+#include "geometry/geom.h"
+
+#include <math.h>
+#include <string.h>
+
+#include "util/mem.h"
+
+void isect_list_init(struct isect_list *l)
+{
+    l->v = l->inline_buf;
+    l->n = 0;
+    l->cap = GEOM_INLINE;
+    l->overflow = false;
+}
+
+void isect_list_fini(struct isect_list *l)
+{
+    if (l->v != l->inline_buf)
+        iris_free(l->v);
+    isect_list_init(l);
+}
+
+void isect_push(struct isect_list *l, double t, vec3 n, double u, double v)
+{
+    if (!isfinite(t) || !isfinite(n.x) || !isfinite(n.y) || !isfinite(n.z) ||
+        (n.x == 0 && n.y == 0 && n.z == 0))
+        return;
+    if (l->n == l->cap) {
+        int cap = l->cap * 2;
+        struct geom_isect *nv = iris_malloc((size_t)cap * sizeof *nv);
+        if (!nv) {
+            l->overflow = true;
+            return;
+        }
+        memcpy(nv, l->v, (size_t)l->n * sizeof *nv);
+        if (l->v != l->inline_buf)
+            iris_free(l->v);
+        l->v = nv;
+        l->cap = cap;
+    }
+    struct geom_isect *e = &l->v[l->n++];
+    e->t = t;
+    e->n = n;
+    e->uv.u = isfinite(u) ? u : 0;
+    e->uv.v = isfinite(v) ? v : 0;
+}
+
+bool geom_is_analytic(enum iris_object_kind kind)
+{
+    switch (kind) {
+    case IRIS_OBJ_SPHERE: case IRIS_OBJ_BOX: case IRIS_OBJ_PLANE:
+    case IRIS_OBJ_CYLINDER: case IRIS_OBJ_CONE: case IRIS_OBJ_TORUS:
+    case IRIS_OBJ_DISC: case IRIS_OBJ_POLYGON: case IRIS_OBJ_PRISM:
+    case IRIS_OBJ_LATHE: case IRIS_OBJ_SOR: case IRIS_OBJ_SUPERELLIPSOID:
+    case IRIS_OBJ_BLOB: case IRIS_OBJ_TEXT: case IRIS_OBJ_ISOSURFACE:
+    case IRIS_OBJ_QUADRIC: case IRIS_OBJ_POLY:
+        return true;
+    default:
+        return false;
+    }
+}
+
+bool geom_clip_box(vec3 lo, vec3 hi, vec3 o, vec3 d, double *t0, double *t1)
+{
+    double a = *t0, b = *t1;
+    for (int k = 0; k < 3; k++) {
+        double ok = v3_comp(o, k), dk = v3_comp(d, k);
+        double l = v3_comp(lo, k), h = v3_comp(hi, k);
+        if (dk == 0) {
+            if (ok < l || ok > h)
+                return false;
+            continue;
+        }
+        double ta = (l - ok) / dk, tb = (h - ok) / dk;
+        if (ta > tb) {
+            double s = ta;
+            ta = tb;
+            tb = s;
+        }
+        a = fmax(a, ta);
+        b = fmin(b, tb);
+        if (a > b)
+            return false;
+    }
+    *t0 = a;
+    *t1 = b;
+    return true;
+}
+
+void geom_intersect(const iris_object *o, const struct geom_profile *prof,
+                    vec3 ro, vec3 rd, double t0, double t1,
+                    struct isect_list *out)
+{
+    switch (o->kind) {
+    case IRIS_OBJ_SPHERE: geom_sphere_hits(o, ro, rd, t0, t1, out); break;
+    case IRIS_OBJ_PLANE: geom_plane_hits(o, ro, rd, t0, t1, out); break;
+    case IRIS_OBJ_BOX: geom_box_hits(o, ro, rd, t0, t1, out); break;
+    case IRIS_OBJ_CYLINDER:
+    case IRIS_OBJ_CONE: geom_cone_hits(o, ro, rd, t0, t1, out); break;
+    case IRIS_OBJ_DISC: geom_disc_hits(o, ro, rd, t0, t1, out); break;
+    case IRIS_OBJ_TORUS: geom_torus_hits(o, ro, rd, t0, t1, out); break;
+    case IRIS_OBJ_QUADRIC:
+    case IRIS_OBJ_POLY: geom_poly_hits(o, ro, rd, t0, t1, out); break;
+    case IRIS_OBJ_POLYGON: geom_polygon_hits(o, ro, rd, t0, t1, out); break;
+    case IRIS_OBJ_SUPERELLIPSOID:
+        geom_superellipsoid_hits(o, ro, rd, t0, t1, out);
+        break;
+    case IRIS_OBJ_BLOB: geom_blob_hits(o, ro, rd, t0, t1, out); break;
+    case IRIS_OBJ_ISOSURFACE:
+        geom_isosurface_hits(o, ro, rd, t0, t1, out);
+        break;
+    case IRIS_OBJ_LATHE:
+    case IRIS_OBJ_SOR:
+        if (prof)
+            geom_lathe_hits(prof, ro, rd, t0, t1, out);
+        break;
+    case IRIS_OBJ_PRISM:
+        if (prof)
+            geom_extrude_hits(prof, 1, ro, rd, t0, t1, out);
+        break;
+    case IRIS_OBJ_TEXT:
+        if (prof)
+            geom_extrude_hits(prof, 2, ro, rd, t0, t1, out);
+        break;
+    default:
+        break;
+    }
+}
+
+bool geom_inside(const iris_object *o, const struct geom_profile *prof,
+                 vec3 p)
+{
+    switch (o->kind) {
+    case IRIS_OBJ_SPHERE:
+        return v3_len2(v3_sub(p, o->u.sphere.centre)) <
+               o->u.sphere.radius * o->u.sphere.radius;
+    case IRIS_OBJ_PLANE:
+        /* POV-Ray: the half-space the normal points away from */
+        return v3_dot(v3_norm(o->u.plane.normal), p) < o->u.plane.distance;
+    case IRIS_OBJ_BOX: {
+        vec3 lo = v3_min(o->u.box.lo, o->u.box.hi);
+        vec3 hi = v3_max(o->u.box.lo, o->u.box.hi);
+        return p.x > lo.x && p.x < hi.x && p.y > lo.y && p.y < hi.y &&
+               p.z > lo.z && p.z < hi.z;
+    }
+    case IRIS_OBJ_CYLINDER:
+    case IRIS_OBJ_CONE:
+        return geom_cone_inside(o, p);
+    case IRIS_OBJ_DISC:
+        /* POV-Ray: the half-space behind the disc's normal */
+        return v3_dot(v3_sub(p, o->u.disc.centre), o->u.disc.normal) < 0;
+    case IRIS_OBJ_TORUS: {
+        double R = o->u.torus.major, r = o->u.torus.minor;
+        double q = sqrt(p.x * p.x + p.z * p.z) - R;
+        return q * q + p.y * p.y < r * r;
+    }
+    case IRIS_OBJ_QUADRIC:
+    case IRIS_OBJ_POLY:
+        return geom_poly_eval(o, p) < 0;
+    case IRIS_OBJ_SUPERELLIPSOID:
+        return geom_superellipsoid_eval(o, p) < 0;
+    case IRIS_OBJ_BLOB:
+        return geom_blob_density(o, p) > o->u.blob.threshold;
+    case IRIS_OBJ_ISOSURFACE:
+        return geom_isosurface_inside(o, p);
+    case IRIS_OBJ_LATHE:
+    case IRIS_OBJ_SOR:
+        return prof && geom_lathe_inside(prof, p);
+    case IRIS_OBJ_PRISM:
+        return prof && geom_extrude_inside(prof, 1, p);
+    case IRIS_OBJ_TEXT:
+        return prof && geom_extrude_inside(prof, 2, p);
+    default:
+        /* polygon and other thin shapes have no inside */
+        return false;
+    }
+}
+
+/* Box of a cone/cylinder: the two end discs' boxes joined. */
+static void cone_bounds(vec3 a, vec3 b, double ra, double rb, vec3 *lo,
+                        vec3 *hi)
+{
+    vec3 w = v3_norm(v3_sub(b, a));
+    /* A disc of radius r with unit normal w spans r·sqrt(1 - w_k^2) */
+    vec3 e = v3(sqrt(fmax(0, 1 - w.x * w.x)), sqrt(fmax(0, 1 - w.y * w.y)),
+                sqrt(fmax(0, 1 - w.z * w.z)));
+    *lo = v3_min(v3_sub(a, v3_scale(e, ra)), v3_sub(b, v3_scale(e, rb)));
+    *hi = v3_max(v3_add(a, v3_scale(e, ra)), v3_add(b, v3_scale(e, rb)));
+}
+
+bool geom_bounds(const iris_object *o, const struct geom_profile *prof,
+                 vec3 *lo, vec3 *hi)
+{
+    switch (o->kind) {
+    case IRIS_OBJ_SPHERE: {
+        double r = fabs(o->u.sphere.radius);
+        vec3 c = o->u.sphere.centre;
+        *lo = v3_sub(c, v3(r, r, r));
+        *hi = v3_add(c, v3(r, r, r));
+        return true;
+    }
+    case IRIS_OBJ_BOX:
+        *lo = v3_min(o->u.box.lo, o->u.box.hi);
+        *hi = v3_max(o->u.box.lo, o->u.box.hi);
+        return true;
+    case IRIS_OBJ_CYLINDER:
+        cone_bounds(o->u.cylinder.base, o->u.cylinder.cap,
+                    o->u.cylinder.radius, o->u.cylinder.radius, lo, hi);
+        return true;
+    case IRIS_OBJ_CONE:
+        cone_bounds(o->u.cone.base, o->u.cone.cap, fabs(o->u.cone.base_radius),
+                    fabs(o->u.cone.cap_radius), lo, hi);
+        return true;
+    case IRIS_OBJ_DISC: {
+        vec3 c = o->u.disc.centre;
+        cone_bounds(c, v3_add(c, v3_scale(v3_norm(o->u.disc.normal), 1e-9 *
+                                          o->u.disc.radius)),
+                    o->u.disc.radius, o->u.disc.radius, lo, hi);
+        return true;
+    }
+    case IRIS_OBJ_TORUS: {
+        double R = fabs(o->u.torus.major), r = fabs(o->u.torus.minor);
+        *lo = v3(-R - r, -r, -R - r);
+        *hi = v3(R + r, r, R + r);
+        return true;
+    }
+    case IRIS_OBJ_POLYGON: {
+        if (o->u.polygon.n_points < 1)
+            return false;
+        *lo = *hi = o->u.polygon.points[0];
+        for (int i = 1; i < o->u.polygon.n_points; i++) {
+            *lo = v3_min(*lo, o->u.polygon.points[i]);
+            *hi = v3_max(*hi, o->u.polygon.points[i]);
+        }
+        return true;
+    }
+    case IRIS_OBJ_SUPERELLIPSOID:
+        *lo = v3(-1, -1, -1);
+        *hi = v3(1, 1, 1);
+        return true;
+    case IRIS_OBJ_BLOB:
+        return geom_blob_bounds(o, lo, hi);
+    case IRIS_OBJ_ISOSURFACE:
+        if (o->u.isosurface.contained_kind == 1) {
+            double r = fabs(o->u.isosurface.radius);
+            *lo = v3_sub(o->u.isosurface.centre, v3(r, r, r));
+            *hi = v3_add(o->u.isosurface.centre, v3(r, r, r));
+        } else {
+            *lo = v3_min(o->u.isosurface.lo, o->u.isosurface.hi);
+            *hi = v3_max(o->u.isosurface.lo, o->u.isosurface.hi);
+        }
+        return true;
+    case IRIS_OBJ_LATHE:
+    case IRIS_OBJ_SOR:
+        if (!prof)
+            return false;
+        geom_lathe_bounds(prof, lo, hi);
+        return true;
+    case IRIS_OBJ_PRISM:
+    case IRIS_OBJ_TEXT:
+        if (!prof)
+            return false;
+        geom_extrude_bounds(prof, o->kind == IRIS_OBJ_PRISM ? 1 : 2, lo, hi);
+        return true;
+    default:
+        /* plane, quadric, poly: unbounded */
+        return false;
+    }
+}
+
+static bool finite3(vec3 v)
+{
+    return isfinite(v.x) && isfinite(v.y) && isfinite(v.z);
+}
+
+const char *geom_validate(const iris_object *o)
+{
+    switch (o->kind) {
+    case IRIS_OBJ_SPHERE:
+        if (!(o->u.sphere.radius > 0) || !finite3(o->u.sphere.centre))
+            return "sphere radius is not positive";
+        return NULL;
+    case IRIS_OBJ_PLANE:
+        if (!(v3_len(o->u.plane.normal) > 0) ||
+            !isfinite(o->u.plane.distance))
+            return "plane normal is zero";
+        return NULL;
+    case IRIS_OBJ_BOX:
+        if (!finite3(o->u.box.lo) || !finite3(o->u.box.hi))
+            return "box corner is not finite";
+        return NULL;
+    case IRIS_OBJ_CYLINDER:
+        if (!(o->u.cylinder.radius > 0) ||
+            !(v3_len(v3_sub(o->u.cylinder.cap, o->u.cylinder.base)) > 0))
+            return "cylinder has zero radius or length";
+        return NULL;
+    case IRIS_OBJ_CONE:
+        if (!(fabs(o->u.cone.base_radius) + fabs(o->u.cone.cap_radius) > 0) ||
+            !(v3_len(v3_sub(o->u.cone.cap, o->u.cone.base)) > 0))
+            return "cone has zero radii or length";
+        return NULL;
+    case IRIS_OBJ_DISC:
+        if (!(o->u.disc.radius > 0) || !(v3_len(o->u.disc.normal) > 0))
+            return "disc has zero radius or normal";
+        return NULL;
+    case IRIS_OBJ_TORUS:
+        if (!(o->u.torus.minor > 0) || !(o->u.torus.major >= 0))
+            return "torus radius is not positive";
+        return NULL;
+    case IRIS_OBJ_QUADRIC:
+    case IRIS_OBJ_POLY: {
+        int n = o->u.poly.order;
+        if (n < 1 || n > 15 || !o->u.poly.coeffs ||
+            o->u.poly.n_coeffs != (n + 1) * (n + 2) * (n + 3) / 6)
+            return "poly has a bad order or coefficient count";
+        return NULL;
+    }
+    case IRIS_OBJ_POLYGON:
+        if (o->u.polygon.n_points < 3 || !o->u.polygon.points)
+            return "polygon has fewer than 3 points";
+        return NULL;
+    case IRIS_OBJ_SUPERELLIPSOID:
+        if (!(o->u.superellipsoid.e > 0) || !(o->u.superellipsoid.n > 0))
+            return "superellipsoid exponents must be positive";
+        return NULL;
+    case IRIS_OBJ_BLOB:
+        if (o->u.blob.n_components < 1 || !o->u.blob.components)
+            return "blob has no components";
+        return NULL;
+    case IRIS_OBJ_ISOSURFACE:
+        if (!o->u.isosurface.fn)
+            return "isosurface has no function";
+        return NULL;
+    default:
+        return NULL;
+    }
+}

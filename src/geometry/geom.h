@@ -1,0 +1,152 @@
+/* SPDX-License-Identifier: MIT */
+/*
+** geom.h: analytic shapes in their own object space.
+**
+** Each analytic shape (sphere, box, torus, blob, ...) answers three
+** questions about a ray or point already transformed into object space:
+** every crossing of the ray with the surface, whether a point is inside,
+** and a bounding box. Meshes are not here (accel hands them to Embree);
+** CSG is not here either (accel combines the children's answers). All work
+** is in double precision; tolerances are relative to the shape's own size
+** so that scaling a scene does not change which surfaces are found.
+**
+** Depends on: math, util. Used by: accel.
+*/
+#ifndef IRIS_GEOMETRY_GEOM_H
+#define IRIS_GEOMETRY_GEOM_H
+
+#include <stdbool.h>
+#include <stdio.h>
+
+#include "iris/scene.h"
+#include "math/vec3.h"
+
+/* One crossing of a ray with a surface, in object space. */
+struct geom_isect {
+    double t;        /* ray parameter: the same in object and world space */
+    vec3 n;          /* outward normal in object space, any length > 0 */
+    iris_vec2 uv;    /* surface uv where the shape defines one, else 0 */
+};
+
+/*
+** A growable list of crossings. The first 'GEOM_INLINE' entries live in
+** the struct itself so that the common case never calls malloc.
+*/
+#define GEOM_INLINE 16
+struct isect_list {
+    struct geom_isect *v;
+    int n, cap;
+    bool overflow;   /* an allocation failed: some crossings were dropped */
+    struct geom_isect inline_buf[GEOM_INLINE];
+};
+
+void isect_list_init(struct isect_list *l);
+void isect_list_fini(struct isect_list *l);
+/* Appends a crossing unless 't' or 'n' is not finite or n is zero. */
+void isect_push(struct isect_list *l, double t, vec3 n, double u, double v);
+
+/* Whether 'kind' is handled here (analytic user geometry). */
+bool geom_is_analytic(enum iris_object_kind kind);
+
+/*
+** A 2-D outline made of straight segments: the flattened spline of a
+** prism or lathe, or the glyph outlines of a text object. Segments are
+** grouped (one group per glyph or sub-polygon) with a 2-D box each, so a
+** ray skips the groups it cannot meet. Owned by the caller of
+** geom_prepare(), freed by geom_profile_free().
+*/
+struct geom_profile {
+    int n_seg;
+    iris_vec2 *a, *b;          /* segment i runs from a[i] to b[i] */
+    int n_groups;
+    int *group_first, *group_count;
+    iris_vec2 *group_lo, *group_hi;
+    iris_vec2 lo, hi;          /* box of every segment */
+    double h1, h2;             /* extrusion range (prism: y, text: z) */
+    bool conic;                /* prism conic_sweep */
+};
+
+/*
+** Prepares what 'obj' needs beyond its plain data: the flattened profile
+** of prism, lathe and text objects (NULL for every other kind). Returns
+** NULL and sets '*why' when the object cannot be built ("font not found").
+*/
+struct geom_profile *geom_prepare(const iris_object *obj, const char **why);
+void geom_profile_free(struct geom_profile *p);
+
+/*
+** Appends every crossing with tmin < t < tmax of the object-space ray
+** o + t·d ('d' need not have unit length) with the surface of 'obj',
+** ignoring its transform, inverse and clipped_by. Unordered.
+*/
+void geom_intersect(const iris_object *obj, const struct geom_profile *prof,
+                    vec3 o, vec3 d, double tmin, double tmax,
+                    struct isect_list *out);
+
+/* Whether object-space point 'p' is inside 'obj' (not inverted). */
+bool geom_inside(const iris_object *obj, const struct geom_profile *prof,
+                 vec3 p);
+
+/* Object-space bounding box; false when the shape is unbounded. */
+bool geom_bounds(const iris_object *obj, const struct geom_profile *prof,
+                 vec3 *lo, vec3 *hi);
+
+/*
+** Checks the parameters of 'obj' and prepares what it needs. Returns NULL
+** when it can be rendered, else a short reason ("radius is not positive")
+** that the caller reports with the object's location.
+*/
+const char *geom_validate(const iris_object *obj);
+
+/* Per-shape entry points, called by geom.c's dispatch. */
+void geom_sphere_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
+                      double t1, struct isect_list *out);
+void geom_plane_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
+                     double t1, struct isect_list *out);
+void geom_box_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
+                   double t1, struct isect_list *out);
+void geom_cone_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
+                    double t1, struct isect_list *out);
+void geom_disc_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
+                    double t1, struct isect_list *out);
+bool geom_cone_inside(const iris_object *o, vec3 p);
+void geom_torus_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
+                     double t1, struct isect_list *out);
+void geom_poly_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
+                    double t1, struct isect_list *out);
+double geom_poly_eval(const iris_object *o, vec3 p);
+void geom_polygon_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
+                       double t1, struct isect_list *out);
+void geom_superellipsoid_hits(const iris_object *o, vec3 ro, vec3 rd,
+                              double t0, double t1, struct isect_list *out);
+double geom_superellipsoid_eval(const iris_object *o, vec3 p);
+void geom_blob_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
+                    double t1, struct isect_list *out);
+double geom_blob_density(const iris_object *o, vec3 p);
+bool geom_blob_bounds(const iris_object *o, vec3 *lo, vec3 *hi);
+/* Lathe and sor: the profile (r, y) revolved about the y axis. */
+void geom_lathe_hits(const struct geom_profile *p, vec3 ro, vec3 rd,
+                     double t0, double t1, struct isect_list *out);
+bool geom_lathe_inside(const struct geom_profile *p, vec3 q);
+void geom_lathe_bounds(const struct geom_profile *p, vec3 *lo, vec3 *hi);
+/* Prism and text: the profile extruded along 'axis' (1 = y, 2 = z). */
+void geom_extrude_hits(const struct geom_profile *p, int axis, vec3 ro,
+                       vec3 rd, double t0, double t1, struct isect_list *out);
+bool geom_extrude_inside(const struct geom_profile *p, int axis, vec3 q);
+void geom_extrude_bounds(const struct geom_profile *p, int axis, vec3 *lo,
+                         vec3 *hi);
+/* Profiles from splines and fonts (profile.c, text.c). */
+struct geom_profile *geom_profile_new(int n_seg_cap);
+bool geom_profile_add(struct geom_profile *p, iris_vec2 a, iris_vec2 b);
+void geom_profile_close_group(struct geom_profile *p);
+struct geom_profile *geom_text_profile(const iris_object *o,
+                                       const char **why);
+void geom_isosurface_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
+                          double t1, struct isect_list *out);
+bool geom_isosurface_inside(const iris_object *o, vec3 p);
+
+/* Whether the box lo..hi is hit by o + t·d for some t in [t0, t1];
+** narrows [t0, t1] to the part inside the box. */
+bool geom_clip_box(vec3 lo, vec3 hi, vec3 o, vec3 d, double *t0, double *t1);
+
+#endif

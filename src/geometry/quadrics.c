@@ -1,0 +1,291 @@
+/* SPDX-License-Identifier: MIT */
+/*
+** quadrics.c: sphere, plane, box, cylinder, cone, disc and polygon.
+**
+** Closed-form intersections in object space. Quadratics use the
+** numerically stable form (no subtraction of nearly equal numbers), and
+** the sphere measures its discriminant at the ray's closest approach to
+** the centre, which keeps full precision for rays starting far away
+** (Haines et al., Ray Tracing Gems ch. 7).
+*/
+#include "config.h"
+
+#include "geometry/geom.h"
+
+#include <math.h>
+
+/*
+** Real roots of a·t² + b·t + c = 0 into r[0] <= r[1]; returns the count.
+** When |a| is negligible against the other terms the equation is treated
+** as linear: 1e-14 relative is a few hundred ulps, below which the
+** quadratic root at "infinity" is only rounding noise.
+*/
+static int quadratic(double a, double b, double c, double scale, double r[2])
+{
+    if (fabs(a) <= 1e-14 * scale) {
+        if (b == 0)
+            return 0;
+        r[0] = -c / b;
+        return 1;
+    }
+    double disc = b * b - 4 * a * c;
+    if (disc < 0)
+        return 0;
+    double q = -0.5 * (b + copysign(sqrt(disc), b));
+    double x0 = q / a, x1 = q != 0 ? c / q : x0;
+    r[0] = fmin(x0, x1);
+    r[1] = fmax(x0, x1);
+    return 2;
+}
+
+void geom_sphere_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
+                      double t1, struct isect_list *out)
+{
+    vec3 c = o->u.sphere.centre;
+    double rad = o->u.sphere.radius;
+    double a = v3_len2(rd);
+    if (!(a > 0))
+        return;
+    vec3 oc = v3_sub(ro, c);
+    double tc = -v3_dot(oc, rd) / a;
+    vec3 pc = v3_madd(oc, rd, tc);
+    double h2 = (rad * rad - v3_len2(pc)) / a;
+    if (h2 < 0)
+        return;
+    double h = sqrt(h2);
+    for (int k = 0; k < 2; k++) {
+        double t = k ? tc + h : tc - h;
+        if (t > t0 && t < t1) {
+            vec3 n = v3_scale(v3_madd(oc, rd, t), 1.0 / rad);
+            /* POV-Ray's sphere uv: u around y from +x, v from the pole */
+            double u = atan2(-n.z, n.x) / (2 * M_PI);
+            if (u < 0)
+                u += 1;
+            double v = 0.5 + asin(fmax(-1, fmin(1, n.y))) / M_PI;
+            isect_push(out, t, n, u, v);
+        }
+    }
+}
+
+void geom_plane_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
+                     double t1, struct isect_list *out)
+{
+    vec3 n = v3_norm(o->u.plane.normal);
+    double dn = v3_dot(n, rd);
+    if (dn == 0)
+        return;
+    double t = (o->u.plane.distance - v3_dot(n, ro)) / dn;
+    if (t > t0 && t < t1)
+        isect_push(out, t, n, 0, 0);
+}
+
+void geom_box_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
+                   double t1, struct isect_list *out)
+{
+    vec3 lo = v3_min(o->u.box.lo, o->u.box.hi);
+    vec3 hi = v3_max(o->u.box.lo, o->u.box.hi);
+    double tin = -INFINITY, tout = INFINITY;
+    int ain = -1, aout = -1;
+    double sin_ = 0, sout = 0;
+    for (int k = 0; k < 3; k++) {
+        double ok = v3_comp(ro, k), dk = v3_comp(rd, k);
+        double l = v3_comp(lo, k), h = v3_comp(hi, k);
+        if (dk == 0) {
+            if (ok < l || ok > h)
+                return;
+            continue;
+        }
+        double ta = (l - ok) / dk, tb = (h - ok) / dk;
+        /* Entering through the low face when moving +, else the high one */
+        double sa = -1, sb = 1;
+        if (ta > tb) {
+            double s = ta;
+            ta = tb;
+            tb = s;
+            sa = 1;
+            sb = -1;
+        }
+        if (ta > tin) {
+            tin = ta;
+            ain = k;
+            sin_ = sa;
+        }
+        if (tb < tout) {
+            tout = tb;
+            aout = k;
+            sout = sb;
+        }
+    }
+    if (!(tin <= tout) || ain < 0 || aout < 0)
+        return;
+    double nin[3] = { 0, 0, 0 }, nout[3] = { 0, 0, 0 };
+    nin[ain] = sin_;
+    nout[aout] = sout;
+    if (tin > t0 && tin < t1)
+        isect_push(out, tin, v3(nin[0], nin[1], nin[2]), 0, 0);
+    if (tout > t0 && tout < t1 && tout > tin)
+        isect_push(out, tout, v3(nout[0], nout[1], nout[2]), 0, 0);
+}
+
+/* The cone (or cylinder) frame: base 'a', unit axis 'w', length 'len'. */
+struct cone_frame {
+    vec3 a, u, v, w;
+    double len, ra, rb;
+};
+
+static void cone_frame(const iris_object *o, struct cone_frame *f)
+{
+    vec3 b;
+    if (o->kind == IRIS_OBJ_CYLINDER) {
+        f->a = o->u.cylinder.base;
+        b = o->u.cylinder.cap;
+        f->ra = f->rb = o->u.cylinder.radius;
+    } else {
+        f->a = o->u.cone.base;
+        b = o->u.cone.cap;
+        f->ra = fabs(o->u.cone.base_radius);
+        f->rb = fabs(o->u.cone.cap_radius);
+    }
+    vec3 ax = v3_sub(b, f->a);
+    f->len = v3_len(ax);
+    f->w = v3_scale(ax, 1.0 / f->len);
+    v3_basis(f->w, &f->u, &f->v);
+}
+
+void geom_cone_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
+                    double t1, struct isect_list *out)
+{
+    struct cone_frame f;
+    cone_frame(o, &f);
+    vec3 q = v3_sub(ro, f.a);
+    double ox = v3_dot(q, f.u), oy = v3_dot(q, f.v), oz = v3_dot(q, f.w);
+    double dx = v3_dot(rd, f.u), dy = v3_dot(rd, f.v), dz = v3_dot(rd, f.w);
+    double k = (f.rb - f.ra) / f.len;
+
+    /* Side: x² + y² = (ra + k·z)², 0 <= z <= len */
+    double ro_ = f.ra + k * oz;
+    double A = dx * dx + dy * dy - k * k * dz * dz;
+    double B = 2 * (ox * dx + oy * dy - ro_ * k * dz);
+    double C = ox * ox + oy * oy - ro_ * ro_;
+    double r[2];
+    int n = quadratic(A, B, C, dx * dx + dy * dy + k * k * dz * dz, r);
+    for (int i = 0; i < n; i++) {
+        double t = r[i], z = oz + t * dz;
+        double rz = f.ra + k * z;
+        if (!(t > t0 && t < t1) || z < 0 || z > f.len || rz < 0)
+            continue;
+        double x = ox + t * dx, y = oy + t * dy;
+        vec3 nn = v3_add(v3_add(v3_scale(f.u, x), v3_scale(f.v, y)),
+                         v3_scale(f.w, -rz * k));
+        isect_push(out, t, nn, atan2(y, x) / (2 * M_PI) + 0.5, z / f.len);
+    }
+
+    /* End caps */
+    if (o->open || dz == 0)
+        return;
+    for (int end = 0; end < 2; end++) {
+        double zc = end ? f.len : 0, rc = end ? f.rb : f.ra;
+        double t = (zc - oz) / dz;
+        if (!(t > t0 && t < t1) || rc <= 0)
+            continue;
+        double x = ox + t * dx, y = oy + t * dy;
+        if (x * x + y * y <= rc * rc)
+            isect_push(out, t, end ? f.w : v3_neg(f.w), 0, 0);
+    }
+}
+
+bool geom_cone_inside(const iris_object *o, vec3 p)
+{
+    struct cone_frame f;
+    cone_frame(o, &f);
+    vec3 q = v3_sub(p, f.a);
+    double z = v3_dot(q, f.w);
+    if (!(z > 0 && z < f.len))
+        return false;
+    double x = v3_dot(q, f.u), y = v3_dot(q, f.v);
+    double rz = f.ra + (f.rb - f.ra) * z / f.len;
+    return x * x + y * y < rz * rz;
+}
+
+void geom_disc_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
+                    double t1, struct isect_list *out)
+{
+    vec3 n = v3_norm(o->u.disc.normal);
+    double dn = v3_dot(n, rd);
+    if (dn == 0)
+        return;
+    double t = v3_dot(v3_sub(o->u.disc.centre, ro), n) / dn;
+    if (!(t > t0 && t < t1))
+        return;
+    double r2 = v3_len2(v3_sub(v3_madd(ro, rd, t), o->u.disc.centre));
+    double ro2 = o->u.disc.radius * o->u.disc.radius;
+    double ri2 = o->u.disc.hole_radius * o->u.disc.hole_radius;
+    if (r2 <= ro2 && r2 >= ri2)
+        isect_push(out, t, n, 0, 0);
+}
+
+/* Newell's normal of the polygon's points (robust for concave outlines). */
+static vec3 polygon_normal(const iris_object *o)
+{
+    vec3 n = v3(0, 0, 0);
+    const vec3 *p = o->u.polygon.points;
+    int m = o->u.polygon.n_points;
+    for (int i = 0; i < m; i++) {
+        vec3 a = p[i], b = p[(i + 1) % m];
+        n.x += (a.y - b.y) * (a.z + b.z);
+        n.y += (a.z - b.z) * (a.x + b.x);
+        n.z += (a.x - b.x) * (a.y + b.y);
+    }
+    return v3_norm(n);
+}
+
+/* 2-D crossing test of the half-open edge (a, b) with the +u ray from q. */
+static int crosses(double qu, double qv, double au, double av, double bu,
+                   double bv)
+{
+    if ((av > qv) == (bv > qv))
+        return 0;
+    double u = au + (qv - av) * (bu - au) / (bv - av);
+    return u > qu;
+}
+
+void geom_polygon_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
+                       double t1, struct isect_list *out)
+{
+    const vec3 *p = o->u.polygon.points;
+    int m = o->u.polygon.n_points;
+    vec3 n = polygon_normal(o);
+    double dn = v3_dot(n, rd);
+    if (dn == 0 || !(v3_len2(n) > 0))
+        return;
+    double t = v3_dot(v3_sub(p[0], ro), n) / dn;
+    if (!(t > t0 && t < t1))
+        return;
+    vec3 x = v3_madd(ro, rd, t);
+
+    /* Project on the plane of the two axes the normal is least along */
+    int drop = fabs(n.x) > fabs(n.y) ? (fabs(n.x) > fabs(n.z) ? 0 : 2)
+                                     : (fabs(n.y) > fabs(n.z) ? 1 : 2);
+    int iu = drop == 0 ? 1 : 0, iv = drop == 2 ? 1 : 2;
+    double qu = v3_comp(x, iu), qv = v3_comp(x, iv);
+
+    /* Even-odd over every edge; a point equal to its sub-polygon's first
+    ** point closes that sub-polygon (POV-Ray's rule) */
+    int parity = 0, start = 0;
+    for (int i = 1; i < m; i++) {
+        vec3 a = p[i - 1], b = p[i];
+        parity ^= crosses(qu, qv, v3_comp(a, iu), v3_comp(a, iv),
+                          v3_comp(b, iu), v3_comp(b, iv));
+        if (b.x == p[start].x && b.y == p[start].y && b.z == p[start].z) {
+            start = i + 1;
+            i++;
+        }
+    }
+    if (start < m) {
+        vec3 a = p[m - 1], b = p[start];
+        parity ^= crosses(qu, qv, v3_comp(a, iu), v3_comp(a, iv),
+                          v3_comp(b, iu), v3_comp(b, iv));
+    }
+    if (parity)
+        isect_push(out, t, n, 0, 0);
+}

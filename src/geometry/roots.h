@@ -1,0 +1,30 @@
+/* SPDX-License-Identifier: MIT */
+/*
+** roots.h: real roots of polynomials, for ray/surface intersection.
+**
+** One method serves every degree (torus quartics, poly of order up to 15,
+** blob quartics): the roots of p lie between consecutive roots of p', so
+** the roots of the derivative (found recursively) isolate them and a
+** safeguarded Newton/bisection refines each bracket to full precision.
+** It never loses a simple root the way closed-form quartic formulas can
+** when coefficients cancel, which matters for thin tori seen edge-on.
+*/
+#ifndef IRIS_GEOMETRY_ROOTS_H
+#define IRIS_GEOMETRY_ROOTS_H
+
+#define ROOTS_MAX_DEGREE 35
+
+/*
+** Stores in 'out' (ascending) the real roots in the open interval (lo, hi)
+** of c[0] + c[1]·t + ... + c[deg]·t^deg, and returns their count (at most
+** 'deg'). Infinite 'lo'/'hi' are replaced by Cauchy's root bound. Roots of
+** even multiplicity (the polynomial touches zero without changing sign)
+** are not reported: for a ray they are grazing contacts.
+*/
+int roots_in_interval(const double *c, int deg, double lo, double hi,
+                      double *out);
+
+/* Horner evaluation of the polynomial above. */
+double roots_eval(const double *c, int deg, double t);
+
+#endif

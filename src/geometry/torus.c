@@ -1,0 +1,62 @@
+/* SPDX-License-Identifier: MIT */
+/*
+** torus.c: the torus about the y axis (POV-Ray's orientation).
+**
+** The quartic (|p|² + R² - r²)² = 4R²(x² + z²) is set up in a parameter
+** measured from the ray's closest approach to the centre, along a unit
+** direction: far ray origins would otherwise make the coefficients span
+** many orders of magnitude and cancel (POV-Ray moves the origin for the
+** same reason). Roots come from roots.c, which refines to full precision.
+*/
+#include "config.h"
+
+#include "geometry/geom.h"
+#include "geometry/roots.h"
+
+#include <math.h>
+
+void geom_torus_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
+                     double t1, struct isect_list *out)
+{
+    double R = o->u.torus.major, r = o->u.torus.minor;
+    double dl = v3_len(rd);
+    if (!(dl > 0))
+        return;
+    vec3 d = v3_scale(rd, 1.0 / dl);
+
+    /* Shift the origin to the closest approach; reject outside the
+    ** bounding sphere of radius R + r */
+    double s = -v3_dot(ro, d);
+    vec3 p = v3_madd(ro, d, s);
+    double rb = R + r;
+    double h2 = rb * rb - v3_len2(p);
+    if (h2 <= 0)
+        return;
+    double h = sqrt(h2);
+    double lo = fmax(-h, t0 * dl - s), hi = fmin(h, t1 * dl - s);
+    if (!(lo < hi))
+        return;
+
+    double beta = 2 * v3_dot(p, d);
+    double gamma = v3_len2(p) + R * R - r * r;
+    double c[5];
+    c[4] = 1;
+    c[3] = 2 * beta;
+    c[2] = beta * beta + 2 * gamma - 4 * R * R * (d.x * d.x + d.z * d.z);
+    c[1] = 2 * beta * gamma - 8 * R * R * (p.x * d.x + p.z * d.z);
+    c[0] = gamma * gamma - 4 * R * R * (p.x * p.x + p.z * p.z);
+
+    double u[4];
+    int n = roots_in_interval(c, 4, lo, hi, u);
+    for (int i = 0; i < n; i++) {
+        vec3 q = v3_madd(p, d, u[i]);
+        double rxz = sqrt(q.x * q.x + q.z * q.z);
+        /* Outward normal: from the nearest point of the core circle */
+        vec3 nn = rxz > 0 ? v3(q.x - R * q.x / rxz, q.y, q.z - R * q.z / rxz)
+                          : v3(0, q.y, 0);
+        double uu = atan2(q.z, q.x) / (2 * M_PI);
+        double vv = atan2(q.y, rxz - R) / (2 * M_PI);
+        isect_push(out, (s + u[i]) / dl, nn, uu < 0 ? uu + 1 : uu,
+                   vv < 0 ? vv + 1 : vv);
+    }
+}

@@ -1,0 +1,60 @@
+/* SPDX-License-Identifier: MIT */
+/*
+** mat_internal.h: what the files of src/material share and nobody else
+** needs: the context's layout, pattern evaluation and the MT19937 table
+** POV-Ray's cells and crackle draw from.
+*/
+#ifndef IRIS_MATERIAL_MAT_INTERNAL_H
+#define IRIS_MATERIAL_MAT_INTERNAL_H
+
+#include "iris/image.h"
+#include "material/material.h"
+
+/* One image loaded for an image_map, bump_map or image_pattern. */
+struct mat_image {
+    const iris_image_ref *ref;
+    iris_image img;            /* width 0 when it could not be loaded */
+};
+
+struct mat_ctx {
+    const iris_scene *scene;
+    int noise_generator;       /* the scene's default, 1..3 */
+    int n_waves;               /* number_of_waves */
+    bool legacy_opacity;       /* #version < 3.7 */
+    int n_images;
+    struct mat_image *images;
+};
+
+/* Maps world point 'p' to the pattern's space: transform, then warps. */
+vec3 pat_space(const struct mat_ctx *ctx, const iris_pattern *pat, vec3 p);
+
+/* Evaluates the pattern function at pattern-space point 'q', then applies
+** frequency, phase and the wave type, as POV-Ray's Evaluate_TPat. */
+double pat_eval_at(const struct mat_ctx *ctx, const iris_pattern *pat,
+                   vec3 q, const struct mat_point *pt);
+
+/* pat_eval_at(pat_space(p)). */
+double pat_value(const struct mat_ctx *ctx, const iris_pattern *pat,
+                 vec3 p, const struct mat_point *pt);
+
+/* Whether the pattern's value is a map index (checker, hexagon, brick...)
+** rather than a position in [0, 1]. */
+bool pat_is_list(enum iris_pattern_kind kind);
+
+/* The noise generator the pattern uses. */
+int pat_noise_generator(const struct mat_ctx *ctx, const iris_pattern *pat);
+
+/* POV-Ray's PatternRands(i): the i-th (mod 32768) of MT19937's default
+** stream scaled to [0, 1). */
+double pat_rand(unsigned long i);
+
+/* The loaded image for 'ref', or NULL. */
+const iris_image *mat_find_image(const struct mat_ctx *ctx,
+                                 const iris_image_ref *ref);
+
+/* Image map lookup (planar/spherical/cylindrical, once, interpolate) at
+** pattern-space point 'q'. Returns false outside a 'once' image. */
+bool mat_image_lookup(const struct mat_ctx *ctx, const iris_image_ref *ref,
+                      vec3 q, iris_colour *out);
+
+#endif

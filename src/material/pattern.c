@@ -1,0 +1,598 @@
+/* SPDX-License-Identifier: MIT */
+/*
+** pattern.c: pattern functions, warps and wave shaping, as POV-Ray 3.7
+** computes them (source/backend/pattern/pattern.cpp, warps.cpp), so that
+** a pattern and its colour map land on the same pixels as in POV-Ray.
+**
+** Kind-specific numbers read from iris_pattern.params[]: spiral arms
+** (params[0]); agate_turb (params[0], 0 = POV-Ray's 1.0); quilted
+** control0/control1 (params[0], params[1], both 0 = POV-Ray's 1, 1);
+** crackle metric (params[0], 0 = 2), offset (params[1]), solid (params[2]
+** != 0), form (params[3..5], all 0 = <-1, 1, 0>).
+*/
+#include "config.h"
+
+#include <math.h>
+#include <pthread.h>
+#include <stdint.h>
+
+#include "iris/fn.h"
+#include "material/mat_internal.h"
+#include "material/noise.h"
+#include "math/transform.h"
+
+#define PAT_EPSILON 1e-10
+#define COORD_LIMIT 1.0e17
+
+/* ------------------------------------------------------------------ */
+/* MT19937: POV-Ray's PatternRands table comes from its default stream.  */
+/* ------------------------------------------------------------------ */
+
+#define MT_N 624
+#define RAND_TABLE 32768
+
+static double rand_table[RAND_TABLE];
+static pthread_once_t rand_once = PTHREAD_ONCE_INIT;
+
+/* Fills rand_table with the first 32768 outputs of MT19937 seeded with
+** 5489 (the standard default), each divided by 2^32 as Boost's
+** uniform_real<double>(0, 1) does for a 32-bit engine. */
+static void build_rand_table(void)
+{
+    uint32_t mt[MT_N];
+    mt[0] = 5489u;
+    for (int i = 1; i < MT_N; i++)
+        mt[i] = 1812433253u * (mt[i - 1] ^ (mt[i - 1] >> 30)) + (uint32_t)i;
+    int idx = MT_N;
+    for (int k = 0; k < RAND_TABLE; k++) {
+        if (idx >= MT_N) {
+            for (int i = 0; i < MT_N; i++) {
+                uint32_t y = (mt[i] & 0x80000000u) |
+                             (mt[(i + 1) % MT_N] & 0x7fffffffu);
+                mt[i] = mt[(i + 397) % MT_N] ^ (y >> 1) ^
+                        ((y & 1u) ? 0x9908b0dfu : 0u);
+            }
+            idx = 0;
+        }
+        uint32_t y = mt[idx++];
+        y ^= y >> 11;
+        y ^= (y << 7) & 0x9d2c5680u;
+        y ^= (y << 15) & 0xefc60000u;
+        y ^= y >> 18;
+        rand_table[k] = (double)y / 4294967296.0;
+    }
+}
+
+double pat_rand(unsigned long i)
+{
+    pthread_once(&rand_once, build_rand_table);
+    return rand_table[i % RAND_TABLE];
+}
+
+/* ------------------------------------------------------------------ */
+/* Warps                                                                */
+/* ------------------------------------------------------------------ */
+
+static struct noise_turb turb_params(const iris_warp *w)
+{
+    struct noise_turb t;
+    t.octaves = w->octaves > 0 ? w->octaves : 6;
+    t.omega = w->omega != 0 ? w->omega : 0.5;
+    t.lambda = w->lambda != 0 ? w->lambda : 2.0;
+    if (t.octaves > 10)
+        t.octaves = 10;
+    return t;
+}
+
+/* The classic turbulence of patterns that use it themselves (see
+** material.h): warps[0] when it is a turbulence warp. */
+static const iris_warp *classic_turb(const iris_pattern *pat)
+{
+    if (pat->n_warps > 0 && pat->warps[0].kind == IRIS_WARP_TURBULENCE)
+        return &pat->warps[0];
+    return NULL;
+}
+
+static bool uses_own_turb(enum iris_pattern_kind k)
+{
+    return k == IRIS_PAT_MARBLE || k == IRIS_PAT_WOOD;
+}
+
+static double repeat_axis(vec3 v, int axis)
+{
+    return v3_comp(v, axis);
+}
+
+static vec3 set_axis(vec3 v, int axis, double x)
+{
+    if (axis == 0) v.x = x;
+    else if (axis == 1) v.y = x;
+    else v.z = x;
+    return v;
+}
+
+static vec3 warp_repeat(const iris_warp *w, vec3 p)
+{
+    int axis = w->repeat.x != 0 ? 0 : w->repeat.y != 0 ? 1 : 2;
+    double width = repeat_axis(w->repeat, axis);
+    if (width == 0)
+        return p;
+    double blk = floor(repeat_axis(p, axis) / width);
+    vec3 r = set_axis(p, axis, repeat_axis(p, axis) - blk * width);
+    if (((long long)blk) & 1) {
+        /* flip: components of 'flip' that are 1 mirror that axis */
+        vec3 f = v3(w->flip.x != 0 ? -1 : 1, w->flip.y != 0 ? -1 : 1,
+                    w->flip.z != 0 ? -1 : 1);
+        r = v3_mul(r, f);
+        if (repeat_axis(f, axis) < 0)
+            r = set_axis(r, axis, width + repeat_axis(r, axis));
+    }
+    return v3_madd(r, w->offset, blk);
+}
+
+static vec3 warp_black_hole(const iris_warp *w, vec3 p)
+{
+    vec3 delta = v3_sub(p, w->centre);
+    double len = v3_len(delta);
+    if (w->radius <= 0 || len >= w->radius)
+        return p;
+    len = (w->radius - len) / w->radius;
+    double power = w->falloff != 0 ? w->falloff : 2.0;
+    double strength = pow(len, power) * (w->strength != 0 ? w->strength : 1);
+    if (strength > 1.0)
+        strength = 1.0;
+    return v3_madd(p, delta, w->inverse ? -strength : strength);
+}
+
+vec3 pat_space(const struct mat_ctx *ctx, const iris_pattern *pat, vec3 p)
+{
+    (void)ctx;
+    vec3 q = pat->has_transform ? xf_inv_point(&pat->transform, p) : p;
+    for (int i = pat->n_warps - 1; i >= 0; i--) {
+        const iris_warp *w = &pat->warps[i];
+        switch (w->kind) {
+        case IRIS_WARP_TURBULENCE: {
+            if (i == 0 && uses_own_turb(pat->kind))
+                break;
+            struct noise_turb t = turb_params(w);
+            vec3 d = noise_dturbulence(q, &t);
+            q = v3_add(q, v3_mul(d, w->turbulence));
+            break;
+        }
+        case IRIS_WARP_REPEAT:
+            q = warp_repeat(w, q);
+            break;
+        case IRIS_WARP_BLACK_HOLE:
+            q = warp_black_hole(w, q);
+            break;
+        case IRIS_WARP_TRANSFORM:
+            q = xf_inv_point(&w->transform, q);
+            break;
+        default:
+            /* planar/spherical/cylindrical/toroidal mapping warps: not
+            ** implemented; the point passes unchanged. */
+            break;
+        }
+    }
+    q.x = fmin(fmax(q.x, -COORD_LIMIT), COORD_LIMIT);
+    q.y = fmin(fmax(q.y, -COORD_LIMIT), COORD_LIMIT);
+    q.z = fmin(fmax(q.z, -COORD_LIMIT), COORD_LIMIT);
+    return q;
+}
+
+/* ------------------------------------------------------------------ */
+/* Pattern functions                                                    */
+/* ------------------------------------------------------------------ */
+
+int pat_noise_generator(const struct mat_ctx *ctx, const iris_pattern *pat)
+{
+    int g = pat->noise_generator;
+    if (g < 1 || g > 3)
+        g = ctx ? ctx->noise_generator : 2;
+    return g;
+}
+
+bool pat_is_list(enum iris_pattern_kind kind)
+{
+    return kind == IRIS_PAT_CHECKER || kind == IRIS_PAT_HEXAGON ||
+           kind == IRIS_PAT_BRICK || kind == IRIS_PAT_OBJECT ||
+           kind == IRIS_PAT_SQUARE || kind == IRIS_PAT_TRIANGULAR ||
+           kind == IRIS_PAT_IMAGE_MAP;
+}
+
+/* POV-Ray's density clipping for boxed, spherical, cylindrical, planar. */
+static double clip_density(double r)
+{
+    if (r < 0.0)
+        return 1.0;
+    if (r > 1.0)
+        return 0.0;
+    return 1.0 - r;
+}
+
+static double checker(vec3 p)
+{
+    double s = floor(p.x + PAT_EPSILON) + floor(p.y + PAT_EPSILON) +
+               floor(p.z + PAT_EPSILON);
+    long long v = (long long)s;
+    return (v & 1) ? 1.0 : 0.0;
+}
+
+/* Fractional part in [0, 1) of 'v' after POV-Ray's truncation. */
+static double frac_trunc(double v)
+{
+    double f = v - (double)(long long)v;
+    return f < 0.0 ? f + 1.0 : f;
+}
+
+static double brick(const iris_pattern *pat, vec3 p)
+{
+    double mortar = pat->mortar;
+    vec3 size = pat->brick_size;
+    if (size.x == 0 && size.y == 0 && size.z == 0)
+        size = v3(8, 3, 4.5);
+    if (size.x == 0 || size.y == 0 || size.z == 0)
+        return 1.0;
+    double fudge = PAT_EPSILON + mortar;
+    double x = p.x + fudge, y = p.y + fudge, z = p.z + fudge;
+    double mw = mortar / size.x, mh = mortar / size.y, md = mortar / size.z;
+    if (frac_trunc(y / size.y) <= mh)
+        return 0.0;
+    double by = frac_trunc(y / size.y * 0.5);
+    if (frac_trunc(x / size.x) <= mw && by <= 0.5)
+        return 0.0;
+    if (frac_trunc(x / size.x + 0.5) <= mw && by > 0.5)
+        return 0.0;
+    if (frac_trunc(z / size.z) <= md && by > 0.5)
+        return 0.0;
+    if (frac_trunc(z / size.z + 0.5) <= md && by <= 0.5)
+        return 0.0;
+    return 1.0;
+}
+
+/* The hexagon tiling on a grid of half-triangles (xfactor 0.5, zfactor
+** sqrt(3)/2), three colours 0, 1, 2. */
+static double hexagon(vec3 p)
+{
+    static const int straight_a[6] = { 0, 1, 1, 2, 2, 0 };  /* xm 0, 5 */
+    static const int straight_b[6] = { 2, 2, 0, 0, 1, 1 };  /* xm 2, 3 */
+    static const int below[6] = { 0, 2, 1, 0, 2, 1 };       /* zl/xl < 1 */
+    static const int above[6] = { 2, 1, 0, 2, 1, 0 };
+    double x = fabs(p.x);
+    double z = p.z < 0.0 ? 5.196152424 - fabs(p.z) : p.z;
+    double xs = x / 0.5, zs = z / 0.866025404;
+    xs -= floor(xs / 6.0) * 6.0;
+    zs -= floor(zs / 6.0) * 6.0;
+    int xm = (int)floor(xs) % 6, zm = (int)floor(zs) % 6;
+    if (xm < 0) xm += 6;
+    if (zm < 0) zm += 6;
+    switch (xm) {
+    case 0: case 5:
+        return straight_a[zm];
+    case 2: case 3:
+        return straight_b[zm];
+    default: {
+        double xl = xs - xm, zl = zs - zm;
+        if ((xm + zm) % 2 == 1)
+            xl = 1.0 - xl;
+        if (xl == 0.0)
+            xl = 0.0001;
+        return (zl / xl) < 1.0 ? below[zm] : above[zm];
+    }
+    }
+}
+
+static double granite(vec3 p, int gen)
+{
+    double sum = 0.0, freq = 1.0;
+    vec3 t1 = v3_scale(p, 4.0);
+    for (int i = 0; i < 6; i++, freq *= 2.0) {
+        double n = noise_value(v3_scale(t1, freq), gen), temp;
+        if (gen == 1) {
+            temp = fabs(0.5 - n);
+        } else {
+            temp = fabs(1.0 - 2.0 * n);
+            if (temp > 0.5)
+                temp = 0.5;
+        }
+        sum += temp / freq;
+    }
+    return sum;
+}
+
+static double wrinkles(vec3 p, int gen)
+{
+    double lambda = 2.0, omega = 0.5, value;
+    if (gen > 1)
+        value = fmin(fmax(noise_value(p, gen) * 2.0 - 0.5, 0.0), 1.0);
+    else
+        value = noise_value(p, gen);
+    for (int i = 1; i < 10; i++) {
+        double n = noise_value(v3_scale(p, lambda), gen);
+        if (gen > 1)
+            value += omega * fmin(fmax(n * 2.0 - 0.5, 0.0), 1.0);
+        else
+            value += omega * n;
+        lambda *= 2.0;
+        omega *= 0.5;
+    }
+    return value / 2.0;
+}
+
+static double turb_value(const iris_pattern *pat, vec3 p, int gen,
+                         double scale_x)
+{
+    const iris_warp *w = classic_turb(pat);
+    if (!w)
+        return 0.0;
+    struct noise_turb t = turb_params(w);
+    return scale_x * noise_turbulence(p, &t, gen);
+}
+
+static double agate(const iris_pattern *pat, vec3 p, int gen)
+{
+    double scale = pat->params[0] != 0 ? pat->params[0] : 1.0;
+    struct noise_turb t = { 6, 0.5, 2.0 };
+    const iris_warp *w = classic_turb(pat);
+    if (w)
+        t = turb_params(w);
+    double turb = scale * noise_turbulence(p, &t, gen);
+    double n = 0.5 * (noise_cycloidal(1.3 * turb + 1.1 * p.z) + 1.0);
+    if (n < 0.0)
+        return 0.0;
+    return pow(fmin(1.0, n), 0.77);
+}
+
+static double wood(const iris_pattern *pat, vec3 p)
+{
+    double px = 0.0, py = 0.0;
+    const iris_warp *w = classic_turb(pat);
+    if (w) {
+        struct noise_turb t = turb_params(w);
+        vec3 d = noise_dturbulence(p, &t);
+        px = noise_cycloidal((p.x + d.x) * w->turbulence.x);
+        py = noise_cycloidal((p.y + d.y) * w->turbulence.y);
+    }
+    px += p.x;
+    py += p.y;
+    return sqrt(px * px + py * py);
+}
+
+static double spiral_phase(vec3 p, double *rad)
+{
+    *rad = sqrt(p.x * p.x + p.y * p.y);
+    if (*rad == 0.0)
+        return 0.0;
+    if (p.x < 0.0)
+        return 3.0 * M_PI_2 - asin(p.y / *rad);
+    return M_PI_2 + asin(p.y / *rad);
+}
+
+static double quilt_cubic(double t, double p1, double p2)
+{
+    double it = 1 - t;
+    double v = t * t * t + 3.0 * t * it * it * p1 + 3.0 * t * t * it * p2;
+    return v * 0.8660254037844386; /* POV-Ray's INV_SQRT_3_4 = sqrt(3)/2 */
+}
+
+static double quilted(const iris_pattern *pat, vec3 p)
+{
+    double c0 = pat->params[0], c1 = pat->params[1];
+    if (c0 == 0 && c1 == 0)
+        c0 = c1 = 1.0;
+    vec3 v = v3(p.x - floor(p.x) - 0.5, p.y - floor(p.y) - 0.5,
+                p.z - floor(p.z) - 0.5);
+    double t = quilt_cubic(v3_len(v), c0, c1);
+    v = v3_scale(v, t);
+    return (fabs(v.x) + fabs(v.y) + fabs(v.z)) / 3.0;
+}
+
+static double waves_sum(const struct mat_ctx *ctx, const iris_pattern *pat,
+                        vec3 p, bool ripples)
+{
+    int n = ctx && ctx->n_waves > 0 ? ctx->n_waves : 10;
+    double sum = 0.0;
+    for (int i = 0; i < n; i++) {
+        vec3 src;
+        double f;
+        noise_wave_source(i, &src, &f);
+        double len = v3_len(v3_sub(p, src));
+        if (len == 0.0)
+            len = 1.0;
+        if (ripples) {
+            sum += noise_cycloidal(len * pat->frequency + pat->phase);
+        } else {
+            sum += noise_cycloidal(len * pat->frequency * f + pat->phase) / f;
+        }
+    }
+    if (ripples)
+        return 0.5 * (1.0 + sum / n);
+    return 0.2 * (2.5 + sum / n);
+}
+
+/* Metric distance of crackle. */
+static double crackle_dist(vec3 d, double metric)
+{
+    if (metric == 2)
+        return d.x * d.x + d.y * d.y + d.z * d.z;
+    if (metric == 1)
+        return fabs(d.x) + fabs(d.y) + fabs(d.z);
+    return pow(fabs(d.x), metric) + pow(fabs(d.y), metric) +
+           pow(fabs(d.z), metric);
+}
+
+/* The random point POV-Ray picks in the unit cube at (x, y, z). */
+static vec3 cube_point(int x, int y, int z)
+{
+    unsigned long seed = (unsigned long)noise_hash3d(x & 0xFFF, y & 0xFFF,
+                                                     z & 0xFFF);
+    return v3(x + pat_rand(seed), y + pat_rand(seed + 1),
+              z + pat_rand(seed + 2));
+}
+
+static double crackle(const struct mat_ctx *ctx, const iris_pattern *pat,
+                      vec3 p)
+{
+    double metric = pat->params[0] != 0 ? pat->params[0] : 2.0;
+    double offset = pat->params[1];
+    bool solid = pat->params[2] != 0;
+    vec3 form = v3(pat->params[3], pat->params[4], pat->params[5]);
+    if (form.x == 0 && form.y == 0 && form.z == 0)
+        form = v3(-1, 1, 0);
+    int fx = (int)floor(p.x - PAT_EPSILON), fy = (int)floor(p.y - PAT_EPSILON),
+        fz = (int)floor(p.z - PAT_EPSILON);
+    double m1 = INFINITY, m2 = INFINITY, m3 = INFINITY;
+    vec3 best = p;
+    /* A 5x5x5 neighbourhood holds every candidate POV-Ray's 81 cubes do. */
+    for (int dx = -2; dx <= 2; dx++)
+        for (int dy = -2; dy <= 2; dy++)
+            for (int dz = -2; dz <= 2; dz++) {
+                vec3 c = cube_point(fx + dx, fy + dy, fz + dz);
+                double s = crackle_dist(v3_sub(c, p), metric);
+                if (s < m1) {
+                    m3 = m2; m2 = m1; m1 = s; best = c;
+                } else if (s < m2) {
+                    m3 = m2; m2 = s;
+                } else if (s < m3) {
+                    m3 = s;
+                }
+            }
+    if (offset != 0) {
+        double o = metric == 2 ? offset * offset
+                 : metric == 1 ? offset : pow(offset, metric);
+        m1 += o; m2 += o; m3 += o;
+    }
+    double tf;
+    if (solid) {
+        tf = noise_value(best, pat_noise_generator(ctx, pat));
+    } else if (metric == 2) {
+        tf = form.x * sqrt(m1) + form.y * sqrt(m2) + form.z * sqrt(m3);
+    } else if (metric == 1) {
+        tf = form.x * m1 + form.y * m2 + form.z * m3;
+    } else {
+        tf = form.x * pow(m1, 1.0 / metric) + form.y * pow(m2, 1.0 / metric) +
+             form.z * pow(m3, 1.0 / metric);
+    }
+    return fmax(fmin(tf, 1.0), 0.0);
+}
+
+static double function_value(const iris_pattern *pat, vec3 p)
+{
+    if (!pat->fn)
+        return 0.0;
+    double args[3] = { p.x, p.y, p.z };
+    double v = iris_fn_eval(pat->fn, args, 3);
+    if (!isfinite(v))
+        return 0.0;
+    return v > 1.0 ? fmod(v, 1.0) : v;
+}
+
+/* The raw pattern function, before frequency and wave shaping. */
+static double raw_value(const struct mat_ctx *ctx, const iris_pattern *pat,
+                        vec3 p, const struct mat_point *pt)
+{
+    int gen = pat_noise_generator(ctx, pat);
+    switch (pat->kind) {
+    case IRIS_PAT_AGATE: return agate(pat, p, gen);
+    case IRIS_PAT_BOZO: case IRIS_PAT_SPOTTED: case IRIS_PAT_BUMPS:
+        return noise_value(p, gen);
+    case IRIS_PAT_BRICK: return brick(pat, p);
+    case IRIS_PAT_CELLS:
+        return fmin(pat_rand((unsigned long)noise_hash3d(
+                        (int)floor(p.x + PAT_EPSILON),
+                        (int)floor(p.y + PAT_EPSILON),
+                        (int)floor(p.z + PAT_EPSILON))), 1.0);
+    case IRIS_PAT_CHECKER: return checker(p);
+    case IRIS_PAT_CRACKLE: return crackle(ctx, pat, p);
+    case IRIS_PAT_GRADIENT: {
+        double r = v3_dot(p, pat->vector);
+        return r > 1.0 ? fmod(r, 1.0) : r;
+    }
+    case IRIS_PAT_GRANITE: return granite(p, gen);
+    case IRIS_PAT_HEXAGON: return hexagon(p);
+    case IRIS_PAT_LEOPARD: {
+        double s = (sin(p.x) + sin(p.y) + sin(p.z)) / 3.0;
+        return s * s;
+    }
+    case IRIS_PAT_MARBLE:
+        return p.x + turb_value(pat, p, gen,
+                                classic_turb(pat) ? classic_turb(pat)->turbulence.x : 0);
+    case IRIS_PAT_ONION: return fmod(v3_len(p), 1.0);
+    case IRIS_PAT_RADIAL:
+        if (fabs(p.x) < 0.001 && fabs(p.z) < 0.001)
+            return 0.25;
+        return 0.25 + (atan2(p.x, p.z) + M_PI) / (2 * M_PI);
+    case IRIS_PAT_SPIRAL1: case IRIS_PAT_SPIRAL2: {
+        double rad, phi = spiral_phase(p, &rad);
+        const iris_warp *w = classic_turb(pat);
+        double turb = w ? turb_value(pat, p, gen, w->turbulence.x) : 0.0;
+        double v = p.z + rad + pat->params[0] * phi / (2 * M_PI) + turb;
+        if (pat->kind == IRIS_PAT_SPIRAL1)
+            return v;
+        return noise_triangle_wave(rad) + noise_triangle_wave(v);
+    }
+    case IRIS_PAT_WOOD: return wood(pat, p);
+    case IRIS_PAT_WAVES: return waves_sum(ctx, pat, p, false);
+    case IRIS_PAT_RIPPLES: return waves_sum(ctx, pat, p, true);
+    case IRIS_PAT_WRINKLES: return wrinkles(p, gen);
+    case IRIS_PAT_DENTS: {
+        double n = noise_value(p, gen);
+        return n * n * n;
+    }
+    case IRIS_PAT_QUILTED: return quilted(pat, p);
+    case IRIS_PAT_FUNCTION: return function_value(pat, p);
+    case IRIS_PAT_PLANAR: return clip_density(fabs(p.y));
+    case IRIS_PAT_BOXED:
+        return clip_density(fmax(fabs(p.x), fmax(fabs(p.y), fabs(p.z))));
+    case IRIS_PAT_SPHERICAL: return clip_density(v3_len(p));
+    case IRIS_PAT_CYLINDRICAL:
+        return clip_density(sqrt(p.x * p.x + p.z * p.z));
+    case IRIS_PAT_IMAGE_PATTERN: {
+        iris_colour c;
+        if (!pat->image || !mat_image_lookup(ctx, pat->image, p, &c))
+            return 0.0;
+        /* POV-Ray's image_pattern uses the grey level (use_alpha: alpha) */
+        if (pat->image->use_alpha)
+            return 1.0 - c.t;
+        return 0.297 * c.r + 0.589 * c.g + 0.114 * c.b;
+    }
+    case IRIS_PAT_SLOPE:
+        /* slope: the angle of the surface normal to 'vector' */
+        if (pt) {
+            vec3 v = v3_norm(pat->vector);
+            return 0.5 + 0.5 * v3_dot(pt->n, v);
+        }
+        return 0.0;
+    default:
+        return 0.0;
+    }
+}
+
+double pat_eval_at(const struct mat_ctx *ctx, const iris_pattern *pat,
+                   vec3 q, const struct mat_point *pt)
+{
+    double v = raw_value(ctx, pat, q, pt);
+    if (pat_is_list(pat->kind) || pat->kind == IRIS_PAT_AVERAGE)
+        return v;
+    if (!isfinite(v))
+        v = 0.0;
+    if (pat->frequency != 0.0)
+        v = fmod(v * pat->frequency + pat->phase, 1.00001);
+    if (v < 0.0)
+        v -= floor(v);
+    switch (pat->wave) {
+    case IRIS_WAVE_SINE: v = (1.0 + noise_cycloidal(v)) * 0.5; break;
+    case IRIS_WAVE_TRIANGLE: v = noise_triangle_wave(v); break;
+    case IRIS_WAVE_SCALLOP: v = fabs(noise_cycloidal(v * 0.5)); break;
+    case IRIS_WAVE_CUBIC: v = v * v * (-2.0 * v + 3.0); break;
+    case IRIS_WAVE_POLY: v = pow(v, pat->wave_exponent); break;
+    default: break;
+    }
+    return isfinite(v) ? v : 0.0;
+}
+
+double pat_value(const struct mat_ctx *ctx, const iris_pattern *pat, vec3 p,
+                 const struct mat_point *pt)
+{
+    return pat_eval_at(ctx, pat, pat_space(ctx, pat, p), pt);
+}

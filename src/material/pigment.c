@@ -1,0 +1,341 @@
+/* SPDX-License-Identifier: MIT */
+/*
+** pigment.c: pigments: solid colours, colour maps, pigment maps, average,
+** and image maps, as POV-Ray's Compute_Pigment and image_map compute them.
+**
+** A colour map is searched as POV-Ray searches it (Search_Blend_Map): the
+** first entry whose value is >= v, blended linearly with the one before;
+** below the first entry and above the last the end colours hold. A
+** pattern given without a map gets POV-Ray's default map for its kind.
+*/
+#include "config.h"
+
+#include <math.h>
+#include <string.h>
+
+#include "material/mat_internal.h"
+
+/* A colour-map entry of POV-Ray's built-in default maps. */
+struct def_entry {
+    double v, r, g, b;
+};
+
+static const struct def_entry gray_map[] = { { 0, 0, 0, 0 }, { 1, 1, 1, 1 } };
+static const struct def_entry bozo_map[] = {
+    { 0.4, 1, 1, 1 }, { 0.4, 0, 1, 0 }, { 0.6, 0, 1, 0 },
+    { 0.6, 0, 0, 1 }, { 0.8, 0, 0, 1 }, { 0.8, 1, 0, 0 } };
+static const struct def_entry wood_map[] = {
+    { 0.6, 0.666, 0.312, 0.2 }, { 0.6, 0.4, 0.1333, 0.066 } };
+static const struct def_entry agate_map[] = {
+    { 0.0, 1, 1, 1 }, { 0.5, 0.95, 0.75, 0.5 }, { 0.5, 0.9, 0.7, 0.5 },
+    { 0.6, 0.9, 0.7, 0.4 }, { 0.6, 1.0, 0.7, 0.4 }, { 1.0, 0.6, 0.3, 0.0 } };
+static const struct def_entry radial_map[] = {
+    { 0.0, 0, 1, 1 }, { 0.333, 1, 1, 0 }, { 0.666, 1, 0, 1 },
+    { 1.0, 0, 1, 1 } };
+static const struct def_entry marble_map[] = {
+    { 0.0, 0.9, 0.8, 0.8 }, { 0.9, 0.9, 0.08, 0.08 }, { 0.9, 0, 0, 0 } };
+static const struct def_entry brick_map[] = {
+    { 0.0, 0.5, 0.5, 0.5 }, { 1.0, 0.6, 0.15, 0.15 } };
+static const struct def_entry hex_map[] = {
+    { 0.0, 0, 0, 1 }, { 1.0, 0, 1, 0 }, { 2.0, 1, 0, 0 } };
+
+/* POV-Ray's default map for a pattern given without one. */
+static const struct def_entry *default_map(enum iris_pattern_kind k, int *n)
+{
+#define RET(m) do { *n = (int)(sizeof m / sizeof m[0]); return m; } while (0)
+    switch (k) {
+    case IRIS_PAT_BOZO: RET(bozo_map);
+    case IRIS_PAT_BRICK: RET(brick_map);
+    case IRIS_PAT_WOOD: RET(wood_map);
+    case IRIS_PAT_RADIAL: RET(radial_map);
+    case IRIS_PAT_AGATE: RET(agate_map);
+    case IRIS_PAT_MARBLE: RET(marble_map);
+    case IRIS_PAT_HEXAGON: RET(hex_map);
+    case IRIS_PAT_CHECKER: case IRIS_PAT_OBJECT:
+        *n = 2;
+        return hex_map; /* POV-Ray: checker uses the first two hex colours */
+    default: RET(gray_map);
+    }
+#undef RET
+}
+
+static iris_colour colour_rgb(double r, double g, double b)
+{
+    iris_colour c = { r, g, b, 0, 0 };
+    return c;
+}
+
+static iris_colour colour_lerp(iris_colour a, iris_colour b, double t)
+{
+    iris_colour c = { a.r + t * (b.r - a.r), a.g + t * (b.g - a.g),
+                      a.b + t * (b.b - a.b), a.f + t * (b.f - a.f),
+                      a.t + t * (b.t - a.t) };
+    return c;
+}
+
+/* Search_Blend_Map over 'n' values read by 'value_at': sets *prev, *cur. */
+static void search_map(double v, const iris_map_entry *e,
+                       const struct def_entry *d, int n, int *prev, int *cur)
+{
+#define VAL(i) (e ? e[i].value : d[i].v)
+    int last = n - 1;
+    if (v >= VAL(last)) {
+        *prev = *cur = last;
+        return;
+    }
+    int p = 0, c = 0;
+    while (v > VAL(c)) {
+        p = c;
+        c++;
+    }
+    if (v == VAL(c))
+        p = c;
+    *prev = p;
+    *cur = c;
+#undef VAL
+}
+
+static double map_value(const iris_map_entry *e, const struct def_entry *d,
+                        int i)
+{
+    return e ? e[i].value : d[i].v;
+}
+
+static bool entry_colour(const struct mat_ctx *ctx, const iris_pigment *pig,
+                         const struct def_entry *d, int i,
+                         const struct mat_point *pt, iris_colour *out);
+
+/* The average pattern: the weighted mean of the map's pigments. */
+static bool average(const struct mat_ctx *ctx, const iris_pigment *pig,
+                    const struct mat_point *pt, iris_colour *out)
+{
+    iris_colour sum = { 0, 0, 0, 0, 0 };
+    double total = 0;
+    for (int i = 0; i < pig->n_entries; i++) {
+        iris_colour c;
+        double w = pig->entries[i].value;
+        if (w == 0 && pig->n_entries > 0)
+            w = 1.0; /* entries written without weights count once */
+        if (!entry_colour(ctx, pig, NULL, i, pt, &c))
+            memset(&c, 0, sizeof c);
+        sum.r += w * c.r; sum.g += w * c.g; sum.b += w * c.b;
+        sum.f += w * c.f; sum.t += w * c.t;
+        total += w;
+    }
+    if (total > 0) {
+        sum.r /= total; sum.g /= total; sum.b /= total;
+        sum.f /= total; sum.t /= total;
+    }
+    *out = sum;
+    return true;
+}
+
+static bool entry_colour(const struct mat_ctx *ctx, const iris_pigment *pig,
+                         const struct def_entry *d, int i,
+                         const struct mat_point *pt, iris_colour *out)
+{
+    if (d) {
+        *out = colour_rgb(d[i].r, d[i].g, d[i].b);
+        return true;
+    }
+    const iris_map_entry *e = &pig->entries[i];
+    if (pig->is_pigment_map || e->pigment) {
+        if (!e->pigment) {
+            memset(out, 0, sizeof *out);
+            return true;
+        }
+        return mat_eval_pigment(ctx, e->pigment, pt, out);
+    }
+    *out = e->colour;
+    return true;
+}
+
+bool mat_eval_pigment(const struct mat_ctx *ctx, const iris_pigment *pig,
+                      const struct mat_point *pt, iris_colour *out)
+{
+    memset(out, 0, sizeof *out);
+    if (!pig)
+        return true;
+    const iris_pattern *pat = &pig->pattern;
+    if (pat->kind == IRIS_PAT_NONE) {
+        *out = pig->colour;
+        return true;
+    }
+    if (pat->kind == IRIS_PAT_IMAGE_MAP) {
+        if (!pat->image)
+            return true;
+        vec3 q = pat_space(ctx, pat, pt->p);
+        if (!mat_image_lookup(ctx, pat->image, q, out)) {
+            iris_colour clear = { 1, 1, 1, 0, 1 };
+            *out = clear;
+            return false;
+        }
+        return true;
+    }
+    if (pat->kind == IRIS_PAT_AVERAGE)
+        return average(ctx, pig, pt, out);
+
+    const iris_map_entry *e = pig->n_entries > 0 ? pig->entries : NULL;
+    const struct def_entry *d = NULL;
+    int n = pig->n_entries;
+    if (!e)
+        d = default_map(pat->kind, &n);
+
+    double v = pat_value(ctx, pat, pt->p, pt);
+    int prev, cur;
+    search_map(v, e, d, n, &prev, &cur);
+    iris_colour c_cur, c_prev;
+    bool found = entry_colour(ctx, pig, d, cur, pt, &c_cur);
+    if (prev == cur) {
+        *out = c_cur;
+        return found;
+    }
+    found = entry_colour(ctx, pig, d, prev, pt, &c_prev) || found;
+    double v0 = map_value(e, d, prev), v1 = map_value(e, d, cur);
+    double t = v1 > v0 ? (v - v0) / (v1 - v0) : 1.0;
+    *out = colour_lerp(c_prev, c_cur, t);
+    return found;
+}
+
+/* ------------------------------------------------------------------ */
+/* Image maps (POV-Ray's imageutil.cpp)                                 */
+/* ------------------------------------------------------------------ */
+
+const iris_image *mat_find_image(const struct mat_ctx *ctx,
+                                 const iris_image_ref *ref)
+{
+    if (!ctx)
+        return NULL;
+    for (int i = 0; i < ctx->n_images; i++)
+        if (ctx->images[i].ref == ref ||
+            (ctx->images[i].ref->path && ref->path &&
+             strcmp(ctx->images[i].ref->path, ref->path) == 0))
+            return ctx->images[i].img.width > 0 ? &ctx->images[i].img : NULL;
+    return NULL;
+}
+
+/* x mod w in [0, w). */
+static double wrap(double x, double w)
+{
+    double r = fmod(x, w);
+    if (r < 0)
+        r += w;
+    if (r >= w)
+        r = 0;
+    return r;
+}
+
+/* The angle of (x, z) from +x in [0, 1), as POV-Ray's mappers compute it. */
+static double angle_xz(double x, double z, double len)
+{
+    double theta;
+    if (z == 0.0)
+        theta = x > 0 ? 0.0 : M_PI;
+    else {
+        theta = acos(fmin(fmax(x / len, -1.0), 1.0));
+        if (z < 0.0)
+            theta = 2 * M_PI - theta;
+    }
+    return theta / (2 * M_PI);
+}
+
+/* Image coordinates (pixels, before the y flip) of 'q'; false if the
+** point is off a 'once' image. */
+static bool map_pos(const iris_image_ref *ref, int w, int h, vec3 q,
+                    double *u, double *v)
+{
+    *u = *v = 0;
+    switch (ref->map_type) {
+    case 1: { /* spherical */
+        double len = v3_len(q);
+        if (len == 0.0)
+            return false;
+        vec3 n = v3_scale(q, 1.0 / len);
+        double phi = 0.5 + asin(fmin(fmax(n.y, -1.0), 1.0)) / M_PI;
+        double lxz = sqrt(n.x * n.x + n.z * n.z);
+        double theta = lxz == 0.0 ? 0.0 : angle_xz(n.x, n.z, lxz);
+        *u = theta * w;
+        *v = phi * h;
+        break;
+    }
+    case 2: { /* cylindrical */
+        if (ref->once && (q.y < 0.0 || q.y > 1.0))
+            return false;
+        *v = fmod(q.y * h, (double)h);
+        double len = v3_len(q);
+        if (len == 0.0)
+            return false;
+        double x = q.x / len, z = q.z / len;
+        double lxz = sqrt(x * x + z * z);
+        if (lxz == 0.0)
+            return false;
+        *u = angle_xz(x, z, lxz) * w;
+        break;
+    }
+    default: /* planar: x runs along the width, y along the height */
+        if (ref->once && (q.x < 0.0 || q.x > 1.0 || q.y < 0.0 || q.y > 1.0))
+            return false;
+        *u = fmod(q.x * w, (double)w);
+        *v = fmod(q.y * h, (double)h);
+        break;
+    }
+    *u += 1e-10;
+    *v += 1e-10;
+    if (ref->once && (*u >= w || *v >= h || *u < 0.0 || *v < 0.0))
+        return false;
+    *u = wrap(*u, w);
+    *v = wrap(-*v, h); /* image rows run downwards */
+    return true;
+}
+
+static iris_colour texel(const iris_image *img, const iris_image_ref *ref,
+                         double x, double y)
+{
+    int ix, iy;
+    if (ref->once) {
+        ix = x < 0 ? 0 : x >= img->width ? img->width - 1 : (int)x;
+        iy = y < 0 ? 0 : y >= img->height ? img->height - 1 : (int)y;
+    } else {
+        ix = (int)wrap(x, img->width);
+        iy = (int)wrap(y, img->height);
+    }
+    const float *px = &img->pixels[((size_t)iy * img->width + ix) * 4];
+    iris_colour c = { px[0], px[1], px[2], 0, 1.0 - px[3] };
+    c.f += ref->filter_all;
+    c.t += ref->transmit_all;
+    return c;
+}
+
+bool mat_image_lookup(const struct mat_ctx *ctx, const iris_image_ref *ref,
+                      vec3 q, iris_colour *out)
+{
+    memset(out, 0, sizeof *out);
+    const iris_image *img = mat_find_image(ctx, ref);
+    if (!img || img->width <= 0 || img->height <= 0)
+        return true; /* a missing image renders black (reported once) */
+    double x, y;
+    if (!map_pos(ref, img->width, img->height, q, &x, &y))
+        return false;
+    if (ref->interpolate != 2 && ref->interpolate != 4) {
+        *out = texel(img, ref, x, y);
+        return true;
+    }
+    /* Bilinear over the four texels around the sample (POV-Ray's Interp;
+    ** normalised-distance interpolation uses the same weights here). */
+    x += 0.5;
+    y += 0.5;
+    int ix = (int)x, iy = (int)y;
+    double p = x - ix, qf = y - iy;
+    iris_colour c0 = texel(img, ref, ix, iy);
+    iris_colour c1 = texel(img, ref, ix - 1, iy);
+    iris_colour c2 = texel(img, ref, ix, iy - 1);
+    iris_colour c3 = texel(img, ref, ix - 1, iy - 1);
+    double f0 = p * qf, f1 = (1 - p) * qf, f2 = p * (1 - qf),
+           f3 = (1 - p) * (1 - qf);
+    out->r = c0.r * f0 + c1.r * f1 + c2.r * f2 + c3.r * f3;
+    out->g = c0.g * f0 + c1.g * f1 + c2.g * f2 + c3.g * f3;
+    out->b = c0.b * f0 + c1.b * f1 + c2.b * f2 + c3.b * f3;
+    out->f = c0.f * f0 + c1.f * f1 + c2.f * f2 + c3.f * f3;
+    out->t = c0.t * f0 + c1.t * f1 + c2.t * f2 + c3.t * f3;
+    return true;
+}

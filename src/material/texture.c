@@ -1,0 +1,487 @@
+/* SPDX-License-Identifier: MIT */
+/*
+** texture.c: the material context, texture evaluation into layer stacks,
+** and the optical helpers of material.h (transmittance, opacity, Fresnel
+** and layer reflectivity as POV-Ray's ComputeLightedTexture computes them).
+**
+** DESIGN. POV-Ray shades a texture_map by shading each of the two
+** neighbouring textures completely and mixing the colours. So that the
+** tracer and the photon shooter need not recurse through textures, a
+** texture is flattened here into weighted stacks of plain layers: a
+** layered texture is one stack; a texture_map layer splits every stack
+** into one per neighbouring entry, weighted by the blend fraction.
+*/
+#include "config.h"
+
+#include <math.h>
+#include <string.h>
+
+#include "material/mat_internal.h"
+#include "material/noise.h"
+#include "util/mem.h"
+
+/* ------------------------------------------------------------------ */
+/* Context                                                              */
+/* ------------------------------------------------------------------ */
+
+struct image_list {
+    int n, cap;
+    const iris_image_ref **refs;
+};
+
+static bool add_ref(struct image_list *l, const iris_image_ref *ref)
+{
+    if (!ref || !ref->path)
+        return true;
+    for (int i = 0; i < l->n; i++)
+        if (l->refs[i] == ref || strcmp(l->refs[i]->path, ref->path) == 0)
+            return true;
+    if (l->n == l->cap) {
+        int cap = l->cap ? 2 * l->cap : 8;
+        const iris_image_ref **r = iris_realloc((void *)l->refs,
+                                                (size_t)cap * sizeof *r);
+        if (!r)
+            return false;
+        l->refs = r;
+        l->cap = cap;
+    }
+    l->refs[l->n++] = ref;
+    return true;
+}
+
+/* Visiting guard: textures and pigments may be shared, and a malformed
+** scene could even make them cyclic; a depth limit ends any walk. */
+#define WALK_DEPTH 64
+
+static bool walk_texture(struct image_list *l, const iris_texture *t,
+                         int depth);
+
+static bool walk_pattern(struct image_list *l, const iris_pattern *p)
+{
+    return add_ref(l, p->image);
+}
+
+static bool walk_pigment(struct image_list *l, const iris_pigment *p,
+                         int depth)
+{
+    if (!p || depth > WALK_DEPTH)
+        return true;
+    if (!walk_pattern(l, &p->pattern))
+        return false;
+    for (int i = 0; i < p->n_entries; i++)
+        if (!walk_pigment(l, p->entries[i].pigment, depth + 1))
+            return false;
+    return true;
+}
+
+static bool walk_normal(struct image_list *l, const iris_normal *n, int depth)
+{
+    if (!n || depth > WALK_DEPTH)
+        return true;
+    if (!walk_pattern(l, &n->pattern) || !add_ref(l, n->bump_map))
+        return false;
+    for (int i = 0; i < n->n_entries; i++)
+        if (!walk_normal(l, n->entries[i].normal, depth + 1))
+            return false;
+    return true;
+}
+
+static bool walk_texture(struct image_list *l, const iris_texture *t,
+                         int depth)
+{
+    for (; t && depth <= WALK_DEPTH; t = t->next, depth++) {
+        if (!walk_pigment(l, t->pigment, depth) ||
+            !walk_normal(l, t->normal, depth) ||
+            !walk_pattern(l, &t->map_pattern))
+            return false;
+        for (int i = 0; i < t->n_entries; i++)
+            if (!walk_texture(l, t->entries[i].texture, depth + 1))
+                return false;
+    }
+    return true;
+}
+
+static bool walk_object(struct image_list *l, const iris_object *o, int depth)
+{
+    if (!o || depth > WALK_DEPTH)
+        return true;
+    if (!walk_texture(l, o->texture, 0) ||
+        !walk_texture(l, o->interior_texture, 0))
+        return false;
+    if (o->kind >= IRIS_OBJ_UNION && o->kind <= IRIS_OBJ_LIGHT_GROUP)
+        for (int i = 0; i < o->u.csg.n_children; i++)
+            if (!walk_object(l, o->u.csg.children[i], depth + 1))
+                return false;
+    if (o->kind == IRIS_OBJ_MESH)
+        for (int i = 0; i < o->u.mesh.n_textures; i++)
+            if (!walk_texture(l, o->u.mesh.textures[i], 0))
+                return false;
+    return true;
+}
+
+enum iris_status mat_ctx_create(const iris_scene *scene, FILE *log,
+                                struct mat_ctx **out)
+{
+    *out = NULL;
+    noise_init();
+    struct mat_ctx *ctx = iris_calloc(1, sizeof *ctx);
+    if (!ctx)
+        return IRIS_ENOMEM;
+    ctx->scene = scene;
+    ctx->noise_generator = 2;
+    ctx->n_waves = 10;
+    if (scene) {
+        int g = scene->settings.noise_generator;
+        ctx->noise_generator = g >= 1 && g <= 3 ? g : 2;
+        if (scene->settings.number_of_waves > 0)
+            ctx->n_waves = scene->settings.number_of_waves;
+        ctx->legacy_opacity = scene->version > 0 && scene->version < 3.7;
+    }
+    struct image_list l = { 0, 0, NULL };
+    bool ok = true;
+    if (scene) {
+        for (int i = 0; ok && i < scene->n_objects; i++)
+            ok = walk_object(&l, scene->objects[i], 0);
+        if (scene->sky_sphere)
+            for (int i = 0; ok && i < scene->sky_sphere->n_pigments; i++)
+                ok = walk_pigment(&l, scene->sky_sphere->pigments[i], 0);
+    }
+    if (ok && l.n > 0) {
+        ctx->images = iris_calloc((size_t)l.n, sizeof *ctx->images);
+        ok = ctx->images != NULL;
+    }
+    for (int i = 0; ok && i < l.n; i++) {
+        struct mat_image *mi = &ctx->images[ctx->n_images++];
+        mi->ref = l.refs[i];
+        char err[256] = "";
+        if (iris_image_read(&mi->img, mi->ref->path, err, sizeof err) !=
+            IRIS_OK) {
+            fprintf(log ? log : stderr,
+                    "warning: cannot read image '%s'%s%s; it renders black\n",
+                    mi->ref->path, err[0] ? ": " : "", err);
+            memset(&mi->img, 0, sizeof mi->img);
+        }
+    }
+    iris_free((void *)l.refs);
+    if (!ok) {
+        mat_ctx_destroy(ctx);
+        return IRIS_ENOMEM;
+    }
+    *out = ctx;
+    return IRIS_OK;
+}
+
+void mat_ctx_destroy(struct mat_ctx *ctx)
+{
+    if (!ctx)
+        return;
+    for (int i = 0; i < ctx->n_images; i++)
+        if (ctx->images[i].img.width > 0)
+            iris_image_fini(&ctx->images[i].img);
+    iris_free(ctx->images);
+    iris_free(ctx);
+}
+
+int mat_noise_generator(const struct mat_ctx *ctx)
+{
+    return ctx ? ctx->noise_generator : 2;
+}
+
+/* ------------------------------------------------------------------ */
+/* Texture evaluation                                                   */
+/* ------------------------------------------------------------------ */
+
+/* The finish of a texture that has none (never happens with the parser,
+** but a hand-built scene may omit it). */
+static const iris_finish *default_finish(void)
+{
+    /* POV-Ray's defaults (semantics §3.1). */
+    static const iris_finish f = {
+        .ambient = { 0.1, 0.1, 0.1, 0, 0 },
+        .diffuse = 0.6, .brilliance = 1, .phong_size = 40,
+        .roughness = 0.05, .reflection_falloff = 1,
+        .reflection_exponent = 1, .legacy_refraction = 1,
+    };
+    return &f;
+}
+
+static void eval_layer(const struct mat_ctx *ctx, const iris_texture *t,
+                       const struct mat_point *pt, struct mat_layer *l)
+{
+    l->valid = mat_eval_pigment(ctx, t->pigment, pt, &l->pigment);
+    l->finish = t->finish ? t->finish : default_finish();
+    l->n = pt->n;
+    if (t->normal && !pt->skip_normals) {
+        vec3 n = mat_perturb_normal(ctx, t->normal, pt, pt->n);
+        /* A perturbed normal stays on the side the ray came from. */
+        if (v3_dot(n, pt->n) < 0)
+            n = v3_norm(v3_madd(n, pt->n, -2.0 * v3_dot(n, pt->n)));
+        l->n = n;
+    }
+}
+
+static void set_empty(struct mat_eval *e)
+{
+    e->n_layers = 0;
+    e->n_stacks = 1;
+    e->stacks[0].weight = 1.0;
+    e->stacks[0].first = 0;
+    e->stacks[0].n = 0;
+}
+
+/* Keeps the MAT_MAX_STACKS heaviest of 'n' candidate stacks. */
+struct cand {
+    double w;
+    const struct mat_eval *a, *b;
+    int ia, ib;
+};
+
+static void combine(const struct mat_eval *const *alts, const double *w,
+                    int n_alts, const struct mat_eval *rest,
+                    struct mat_eval *out)
+{
+    struct cand c[MAT_MAX_STACKS * MAT_MAX_STACKS * 2];
+    int nc = 0;
+    for (int a = 0; a < n_alts; a++)
+        for (int i = 0; i < alts[a]->n_stacks; i++)
+            for (int j = 0; j < rest->n_stacks; j++) {
+                if (nc >= (int)(sizeof c / sizeof c[0]))
+                    break;
+                c[nc].w = w[a] * alts[a]->stacks[i].weight *
+                          rest->stacks[j].weight;
+                c[nc].a = alts[a];
+                c[nc].ia = i;
+                c[nc].b = rest;
+                c[nc].ib = j;
+                nc++;
+            }
+    /* selection of the heaviest (nc is small) */
+    for (int i = 0; i < nc; i++)
+        for (int j = i + 1; j < nc; j++)
+            if (c[j].w > c[i].w) {
+                struct cand t = c[i];
+                c[i] = c[j];
+                c[j] = t;
+            }
+    if (nc > MAT_MAX_STACKS)
+        nc = MAT_MAX_STACKS;
+    double total = 0;
+    for (int i = 0; i < nc; i++)
+        total += c[i].w;
+    out->n_layers = 0;
+    out->n_stacks = 0;
+    for (int i = 0; i < nc; i++) {
+        struct mat_stack *s = &out->stacks[out->n_stacks++];
+        s->weight = total > 0 ? c[i].w / total : 1.0 / nc;
+        s->first = out->n_layers;
+        s->n = 0;
+        const struct mat_stack *sa = &c[i].a->stacks[c[i].ia];
+        const struct mat_stack *sb = &c[i].b->stacks[c[i].ib];
+        for (int k = 0; k < sa->n && out->n_layers < MAT_MAX_LAYERS; k++) {
+            out->layers[out->n_layers++] = c[i].a->layers[sa->first + k];
+            s->n++;
+        }
+        for (int k = 0; k < sb->n && out->n_layers < MAT_MAX_LAYERS; k++) {
+            out->layers[out->n_layers++] = c[i].b->layers[sb->first + k];
+            s->n++;
+        }
+    }
+    if (out->n_stacks == 0)
+        set_empty(out);
+}
+
+static void eval_list(const struct mat_ctx *ctx, const iris_texture *tex,
+                      const struct mat_point *pt, struct mat_eval *out,
+                      int depth);
+
+/* A texture_map layer: the two neighbouring entries and their weights. */
+static void eval_map(const struct mat_ctx *ctx, const iris_texture *t,
+                     const struct mat_point *pt, const struct mat_eval *rest,
+                     struct mat_eval *out, int depth)
+{
+    const iris_map_entry *e = t->entries;
+    int n = t->n_entries, p = 0, c = 0;
+    double v = pat_value(ctx, &t->map_pattern, pt->p, pt);
+    if (v >= e[n - 1].value) {
+        p = c = n - 1;
+    } else {
+        while (v > e[c].value) {
+            p = c;
+            c++;
+        }
+        if (v == e[c].value)
+            p = c;
+    }
+    struct mat_eval *alt = iris_malloc(2 * sizeof *alt);
+    if (!alt) {
+        *out = *rest;
+        return;
+    }
+    const struct mat_eval *alts[2];
+    double w[2];
+    int n_alts = 0;
+    double frac = p == c ? 1.0 : (v - e[p].value) / (e[c].value - e[p].value);
+    eval_list(ctx, e[c].texture, pt, &alt[0], depth + 1);
+    alts[n_alts] = &alt[0];
+    w[n_alts++] = frac;
+    if (p != c) {
+        eval_list(ctx, e[p].texture, pt, &alt[1], depth + 1);
+        alts[n_alts] = &alt[1];
+        w[n_alts++] = 1.0 - frac;
+    }
+    combine(alts, w, n_alts, rest, out);
+    iris_free(alt);
+}
+
+static void eval_list(const struct mat_ctx *ctx, const iris_texture *tex,
+                      const struct mat_point *pt, struct mat_eval *out,
+                      int depth)
+{
+    set_empty(out);
+    if (!tex || depth > 8)
+        return;
+    /* Collect the list so it can be walked bottom-up. */
+    const iris_texture *list[MAT_MAX_LAYERS];
+    int n = 0;
+    for (const iris_texture *t = tex; t && n < MAT_MAX_LAYERS; t = t->next)
+        list[n++] = t;
+    for (int i = n - 1; i >= 0; i--) {
+        const iris_texture *t = list[i];
+        if (t->map_pattern.kind != IRIS_PAT_NONE && t->n_entries > 0) {
+            struct mat_eval *rest = iris_malloc(sizeof *rest);
+            if (!rest)
+                return;
+            *rest = *out;
+            eval_map(ctx, t, pt, rest, out, depth);
+            iris_free(rest);
+            continue;
+        }
+        /* A plain layer goes on top of every stack. */
+        struct mat_layer l;
+        eval_layer(ctx, t, pt, &l);
+        struct mat_eval *prev = iris_malloc(sizeof *prev);
+        if (!prev)
+            return;
+        *prev = *out;
+        out->n_layers = 0;
+        for (int s = 0; s < prev->n_stacks; s++) {
+            struct mat_stack *ps = &prev->stacks[s], *os = &out->stacks[s];
+            os->weight = ps->weight;
+            os->first = out->n_layers;
+            os->n = 0;
+            if (out->n_layers < MAT_MAX_LAYERS) {
+                out->layers[out->n_layers++] = l;
+                os->n++;
+            }
+            for (int k = 0; k < ps->n && out->n_layers < MAT_MAX_LAYERS; k++) {
+                out->layers[out->n_layers++] = prev->layers[ps->first + k];
+                os->n++;
+            }
+        }
+        iris_free(prev);
+    }
+}
+
+void mat_eval_texture(const struct mat_ctx *ctx, const iris_texture *tex,
+                      const struct mat_point *pt, struct mat_eval *out)
+{
+    eval_list(ctx, tex, pt, out, 0);
+}
+
+/* ------------------------------------------------------------------ */
+/* Optical helpers                                                      */
+/* ------------------------------------------------------------------ */
+
+void mat_rgb_transm(const iris_colour *c, double out[3])
+{
+    out[0] = c->r * c->f + c->t;
+    out[1] = c->g * c->f + c->t;
+    out[2] = c->b * c->f + c->t;
+}
+
+double mat_opacity(const struct mat_ctx *ctx, const iris_colour *c)
+{
+    if (ctx && ctx->legacy_opacity)
+        return 1.0 - (c->f * fmax(c->r, fmax(c->g, c->b)) + c->t);
+    return 1.0 - c->f - c->t;
+}
+
+double mat_greyscale(const double c[3])
+{
+    return 0.297 * c[0] + 0.589 * c[1] + 0.114 * c[2];
+}
+
+double mat_fresnel(double cos_i, double n)
+{
+    double c = fabs(cos_i);
+    double sqx = n * n + c * c - 1.0;
+    if (!(sqx > 0.0))
+        return 1.0;
+    double g = sqrt(sqx);
+    double a = (g - c) / (g + c);
+    double num = c * (g + c) - 1.0, den = c * (g - c) + 1.0;
+    double f = 0.5 * a * a * (1.0 + (num * num) / (den * den));
+    if (!isfinite(f))
+        return 1.0;
+    return fmin(1.0, fmax(0.0, f));
+}
+
+/* POV-Ray's metallic factor F(x) of the angle x = acos(c)/(pi/2). */
+static double metallic_f(double cos_angle)
+{
+    double x = fabs(acos(fmin(fmax(cos_angle, -1.0), 1.0))) / M_PI_2;
+    double f = 0.014567225 / ((x - 1.12) * (x - 1.12)) - 0.011612903;
+    return fmin(1.0, fmax(0.0, f));
+}
+
+void mat_metallic_tint(double metallic, double cos_angle,
+                       const iris_colour *pigment, double out[3])
+{
+    double f = metallic_f(cos_angle);
+    out[0] = 1.0 + metallic * (1.0 - f) * (pigment->r - 1.0);
+    out[1] = 1.0 + metallic * (1.0 - f) * (pigment->g - 1.0);
+    out[2] = 1.0 + metallic * (1.0 - f) * (pigment->b - 1.0);
+}
+
+bool mat_layer_reflectivity(const struct mat_layer *layer, double cos_i,
+                            double n, double refl[3], double *weight)
+{
+    const iris_finish *f = layer->finish;
+    const double mx[3] = { f->reflection_max.r, f->reflection_max.g,
+                           f->reflection_max.b };
+    const double mn[3] = { f->reflection_min.r, f->reflection_min.g,
+                           f->reflection_min.b };
+    if (f->reflection_fresnel) {
+        double fr = mat_fresnel(cos_i, n);
+        double sqx = n * n + cos_i * cos_i - 1.0;
+        for (int k = 0; k < 3; k++)
+            refl[k] = sqx > 0.0 ? fr * mx[k] + (1.0 - fr) * mn[k] : mx[k];
+        *weight = fmax(refl[0], fmax(refl[1], refl[2]));
+    } else {
+        *weight = fmax(fmax(mx[0], fmax(mx[1], mx[2])),
+                       fmax(mn[0], fmax(mn[1], mn[2])));
+        double falloff = f->reflection_falloff != 0 ? f->reflection_falloff
+                                                    : 1.0;
+        double frac = fabs(falloff - 1.0) > 1e-10 ? pow(1.0 - cos_i, falloff)
+                                                  : 1.0 - cos_i;
+        for (int k = 0; k < 3; k++) {
+            if (fabs(frac) < 1e-10)
+                refl[k] = mn[k];
+            else if (fabs(frac - 1.0) < 1e-10)
+                refl[k] = mx[k];
+            else
+                refl[k] = frac * mx[k] + (1.0 - frac) * mn[k];
+        }
+    }
+    if (f->reflection_metallic != 0.0) {
+        double tint[3];
+        mat_metallic_tint(f->reflection_metallic, cos_i, &layer->pigment,
+                          tint);
+        for (int k = 0; k < 3; k++)
+            refl[k] *= tint[k];
+    }
+    for (int k = 0; k < 3; k++)
+        if (!isfinite(refl[k]))
+            refl[k] = 0.0;
+    return refl[0] != 0.0 || refl[1] != 0.0 || refl[2] != 0.0;
+}
