@@ -58,6 +58,10 @@ bool geom_is_analytic(enum iris_object_kind kind);
 struct geom_profile {
     int n_seg;
     iris_vec2 *a, *b;          /* segment i runs from a[i] to b[i] */
+    iris_vec2 *ta, *tb;        /* curve tangents at a[i] and b[i] (spline
+                                  profiles, for smooth normals), or NULL */
+    signed char *side;         /* +1: the outside is to the right of a->b */
+    int cap;                   /* allocated segments */
     int n_groups;
     int *group_first, *group_count;
     iris_vec2 *group_lo, *group_hi;
@@ -138,7 +142,16 @@ void geom_extrude_bounds(const struct geom_profile *p, int axis, vec3 *lo,
 /* Profiles from splines and fonts (profile.c, text.c). */
 struct geom_profile *geom_profile_new(int n_seg_cap);
 bool geom_profile_add(struct geom_profile *p, iris_vec2 a, iris_vec2 b);
-void geom_profile_close_group(struct geom_profile *p);
+/* Like geom_profile_add, with the curve's tangents at both ends. */
+bool geom_profile_add_curved(struct geom_profile *p, iris_vec2 a, iris_vec2 b,
+                             iris_vec2 ta, iris_vec2 tb);
+/* Ends the current group; false when out of memory. */
+bool geom_profile_close_group(struct geom_profile *p);
+/* Computes the boxes and each segment's outward side; call once at the
+** end. 'inside2d' decides the side with the even-odd rule. */
+void geom_profile_finish(struct geom_profile *p);
+/* Even-odd test of 2-D point (u, v) against the profile. */
+bool geom_profile_inside2d(const struct geom_profile *p, double u, double v);
 struct geom_profile *geom_text_profile(const iris_object *o,
                                        const char **why);
 void geom_isosurface_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,

@@ -1,0 +1,400 @@
+/* SPDX-License-Identifier: MIT */
+/*
+** profile.c: 2-D outlines for lathe, sor, prism and text.
+**
+** Spline profiles are flattened to straight segments (SEG_STEPS per spline
+** segment) with POV-Ray's segment polynomials, keeping the spline's own
+** tangent at each end so that normals stay smooth. Which side of each
+** segment is outside is decided once here with the even-odd rule, probing
+** a point just beside the segment's midpoint.
+*/
+#include "config.h"
+
+#include "geometry/geom.h"
+
+#include <math.h>
+#include <string.h>
+
+#include "util/mem.h"
+
+/* Straight pieces per spline segment: the chord of a segment of a smooth
+** spline deviates from the curve by about (1/SEG_STEPS)² / 8 of its size,
+** 5e-4 for 16 steps, below a pixel for typical framings. */
+#define SEG_STEPS 16
+
+struct geom_profile *geom_profile_new(int cap)
+{
+    struct geom_profile *p = iris_calloc(1, sizeof *p);
+    if (!p)
+        return NULL;
+    if (cap < 4)
+        cap = 4;
+    p->a = iris_calloc((size_t)cap, sizeof *p->a);
+    p->b = iris_calloc((size_t)cap, sizeof *p->b);
+    p->ta = iris_calloc((size_t)cap, sizeof *p->ta);
+    p->tb = iris_calloc((size_t)cap, sizeof *p->tb);
+    p->side = iris_calloc((size_t)cap, 1);
+    p->cap = cap;
+    if (!p->a || !p->b || !p->ta || !p->tb || !p->side) {
+        geom_profile_free(p);
+        return NULL;
+    }
+    return p;
+}
+
+void geom_profile_free(struct geom_profile *p)
+{
+    if (!p)
+        return;
+    iris_free(p->a);
+    iris_free(p->b);
+    iris_free(p->ta);
+    iris_free(p->tb);
+    iris_free(p->side);
+    iris_free(p->group_first);
+    iris_free(p->group_count);
+    iris_free(p->group_lo);
+    iris_free(p->group_hi);
+    iris_free(p);
+}
+
+static bool grow(void **ptr, size_t n, size_t size)
+{
+    void *q = iris_realloc(*ptr, n * size);
+    if (!q)
+        return false;
+    *ptr = q;
+    return true;
+}
+
+bool geom_profile_add_curved(struct geom_profile *p, iris_vec2 a, iris_vec2 b,
+                             iris_vec2 ta, iris_vec2 tb)
+{
+    if (!isfinite(a.u) || !isfinite(a.v) || !isfinite(b.u) || !isfinite(b.v))
+        return true;
+    if (a.u == b.u && a.v == b.v)
+        return true; /* a zero-length segment bounds nothing */
+    if (p->n_seg == p->cap) {
+        size_t cap = (size_t)p->cap * 2;
+        if (!grow((void **)&p->a, cap, sizeof *p->a) ||
+            !grow((void **)&p->b, cap, sizeof *p->b) ||
+            !grow((void **)&p->ta, cap, sizeof *p->ta) ||
+            !grow((void **)&p->tb, cap, sizeof *p->tb) ||
+            !grow((void **)&p->side, cap, 1))
+            return false;
+        p->cap = (int)cap;
+    }
+    p->a[p->n_seg] = a;
+    p->b[p->n_seg] = b;
+    p->ta[p->n_seg] = ta;
+    p->tb[p->n_seg] = tb;
+    p->n_seg++;
+    return true;
+}
+
+bool geom_profile_add(struct geom_profile *p, iris_vec2 a, iris_vec2 b)
+{
+    iris_vec2 t = { b.u - a.u, b.v - a.v };
+    return geom_profile_add_curved(p, a, b, t, t);
+}
+
+bool geom_profile_close_group(struct geom_profile *p)
+{
+    int first = 0;
+    if (p->n_groups > 0)
+        first = p->group_first[p->n_groups - 1] +
+                p->group_count[p->n_groups - 1];
+    if (first == p->n_seg)
+        return true;
+    size_t n = (size_t)p->n_groups + 1;
+    if (!grow((void **)&p->group_first, n, sizeof(int)) ||
+        !grow((void **)&p->group_count, n, sizeof(int)) ||
+        !grow((void **)&p->group_lo, n, sizeof(iris_vec2)) ||
+        !grow((void **)&p->group_hi, n, sizeof(iris_vec2)))
+        return false;
+    p->group_first[p->n_groups] = first;
+    p->group_count[p->n_groups] = p->n_seg - first;
+    p->n_groups++;
+    return true;
+}
+
+bool geom_profile_inside2d(const struct geom_profile *p, double u, double v)
+{
+    int parity = 0;
+    for (int g = 0; g < p->n_groups; g++) {
+        /* The +u ray from (u, v) meets no segment of a group it misses */
+        if (v < p->group_lo[g].v || v > p->group_hi[g].v ||
+            u > p->group_hi[g].u)
+            continue;
+        int end = p->group_first[g] + p->group_count[g];
+        for (int i = p->group_first[g]; i < end; i++) {
+            iris_vec2 a = p->a[i], b = p->b[i];
+            if ((a.v > v) == (b.v > v))
+                continue;
+            double x = a.u + (v - a.v) * (b.u - a.u) / (b.v - a.v);
+            parity ^= x > u;
+        }
+    }
+    return parity;
+}
+
+void geom_profile_finish(struct geom_profile *p)
+{
+    geom_profile_close_group(p);
+    for (int g = 0; g < p->n_groups; g++) {
+        int f = p->group_first[g], end = f + p->group_count[g];
+        iris_vec2 lo = p->a[f], hi = p->a[f];
+        for (int i = f; i < end; i++) {
+            lo.u = fmin(lo.u, fmin(p->a[i].u, p->b[i].u));
+            lo.v = fmin(lo.v, fmin(p->a[i].v, p->b[i].v));
+            hi.u = fmax(hi.u, fmax(p->a[i].u, p->b[i].u));
+            hi.v = fmax(hi.v, fmax(p->a[i].v, p->b[i].v));
+        }
+        p->group_lo[g] = lo;
+        p->group_hi[g] = hi;
+        if (g == 0) {
+            p->lo = lo;
+            p->hi = hi;
+        } else {
+            p->lo.u = fmin(p->lo.u, lo.u);
+            p->lo.v = fmin(p->lo.v, lo.v);
+            p->hi.u = fmax(p->hi.u, hi.u);
+            p->hi.v = fmax(p->hi.v, hi.v);
+        }
+    }
+    /* Outward side: probe beside each midpoint, 1e-7 of the segment length
+    ** away (far below any feature, far above rounding) */
+    for (int i = 0; i < p->n_seg; i++) {
+        iris_vec2 a = p->a[i], b = p->b[i];
+        double du = b.u - a.u, dv = b.v - a.v;
+        double mu = 0.5 * (a.u + b.u), mv = 0.5 * (a.v + b.v);
+        /* Right of a->b is (dv, -du) */
+        bool right_in = geom_profile_inside2d(p, mu + 1e-7 * dv,
+                                              mv - 1e-7 * du);
+        p->side[i] = right_in ? -1 : 1;
+    }
+}
+
+/* Point s in [0,1] of POV-Ray's segment polynomial A s³ + B s² + C s + D,
+** and its derivative. */
+static void seg_eval(const iris_vec2 c[4], double s, iris_vec2 *pt,
+                     iris_vec2 *tan)
+{
+    pt->u = ((c[0].u * s + c[1].u) * s + c[2].u) * s + c[3].u;
+    pt->v = ((c[0].v * s + c[1].v) * s + c[2].v) * s + c[3].v;
+    tan->u = (3 * c[0].u * s + 2 * c[1].u) * s + c[2].u;
+    tan->v = (3 * c[0].v * s + 2 * c[1].v) * s + c[2].v;
+}
+
+/* Coefficients of spline segment 'i' of 'pts' (POV-Ray's lathe.cpp). */
+static void seg_coeffs(enum iris_spline sp, const iris_vec2 *P, int i,
+                       iris_vec2 c[4])
+{
+#define LIN(k, w0, w1, w2, w3)                                              \
+    c[k].u = (w0) * P[i].u + (w1) * P[i + 1].u + (w2) * P[i + 2].u +         \
+             (w3) * P[i + 3].u;                                             \
+    c[k].v = (w0) * P[i].v + (w1) * P[i + 1].v + (w2) * P[i + 2].v +         \
+             (w3) * P[i + 3].v
+    switch (sp) {
+    case IRIS_SPLINE_QUADRATIC:
+        c[0].u = c[0].v = 0;
+        c[1].u = 0.5 * P[i].u - P[i + 1].u + 0.5 * P[i + 2].u;
+        c[1].v = 0.5 * P[i].v - P[i + 1].v + 0.5 * P[i + 2].v;
+        c[2].u = -0.5 * P[i].u + 0.5 * P[i + 2].u;
+        c[2].v = -0.5 * P[i].v + 0.5 * P[i + 2].v;
+        c[3] = P[i + 1];
+        break;
+    case IRIS_SPLINE_CUBIC:
+        LIN(0, -0.5, 1.5, -1.5, 0.5);
+        LIN(1, 1.0, -2.5, 2.0, -0.5);
+        LIN(2, -0.5, 0, 0.5, 0);
+        c[3] = P[i + 1];
+        break;
+    case IRIS_SPLINE_BEZIER:
+        LIN(0, -1, 3, -3, 1);
+        LIN(1, 3, -6, 3, 0);
+        LIN(2, -3, 3, 0, 0);
+        c[3] = P[i];
+        break;
+    default:
+        c[0].u = c[0].v = c[1].u = c[1].v = 0;
+        c[2].u = P[i + 1].u - P[i].u;
+        c[2].v = P[i + 1].v - P[i].v;
+        c[3] = P[i];
+        break;
+    }
+#undef LIN
+}
+
+/* Number of segments and the index step of spline 'sp' over 'n' points. */
+static int seg_count(enum iris_spline sp, int n, int *step)
+{
+    *step = 1;
+    switch (sp) {
+    case IRIS_SPLINE_QUADRATIC: return n - 2;
+    case IRIS_SPLINE_CUBIC: return n - 3;
+    case IRIS_SPLINE_BEZIER: *step = 4; return n / 4;
+    default: return n - 1;
+    }
+}
+
+/* Adds the flattened spline through 'pts' to 'p'. */
+static bool add_spline(struct geom_profile *p, enum iris_spline sp,
+                       const iris_vec2 *pts, int n)
+{
+    int step, ns = seg_count(sp, n, &step);
+    for (int k = 0; k < ns; k++) {
+        iris_vec2 c[4];
+        seg_coeffs(sp, pts, k * step, c);
+        int steps = sp == IRIS_SPLINE_LINEAR ? 1 : SEG_STEPS;
+        iris_vec2 a, ta;
+        seg_eval(c, 0, &a, &ta);
+        for (int j = 1; j <= steps; j++) {
+            iris_vec2 b, tb;
+            seg_eval(c, (double)j / steps, &b, &tb);
+            if (!geom_profile_add_curved(p, a, b, ta, tb))
+                return false;
+            a = b;
+            ta = tb;
+        }
+    }
+    return true;
+}
+
+/*
+** sor: r² is a cubic in y on each segment between points i+1 and i+2,
+** matching r² and its slope (from the neighbours) at both ends; the first
+** and last points only steer the slopes (POV-Ray's sor.cpp). Flattened
+** like the splines, and closed with caps unless 'open'.
+*/
+static bool add_sor(struct geom_profile *p, const iris_object *o)
+{
+    const iris_vec2 *P = o->u.lathe.points;
+    int n = o->u.lathe.n_points;
+    for (int i = 0; i + 3 < n; i++) {
+        double y1 = P[i + 1].v, y2 = P[i + 2].v;
+        if (!(y2 > y1) || !(P[i + 2].v > P[i].v) ||
+            !(P[i + 3].v > P[i + 1].v))
+            return false;
+        double k0 = P[i + 1].u * P[i + 1].u, k1 = P[i + 2].u * P[i + 2].u;
+        double s0 = 2 * P[i + 1].u * (P[i + 2].u - P[i].u) /
+                    (P[i + 2].v - P[i].v);
+        double s1 = 2 * P[i + 2].u * (P[i + 3].u - P[i + 1].u) /
+                    (P[i + 3].v - P[i + 1].v);
+        /* Hermite cubic in h = (y - y1)/(y2 - y1) */
+        double dy = y2 - y1;
+        iris_vec2 prev = { 0, 0 }, prev_t = { 0, 0 };
+        for (int j = 0; j <= SEG_STEPS; j++) {
+            double h = (double)j / SEG_STEPS;
+            double h2 = h * h, h3 = h2 * h;
+            double f = (2 * h3 - 3 * h2 + 1) * k0 + (h3 - 2 * h2 + h) * dy * s0 +
+                       (-2 * h3 + 3 * h2) * k1 + (h3 - h2) * dy * s1;
+            double df = ((6 * h2 - 6 * h) * k0 + (3 * h2 - 4 * h + 1) * dy * s0 +
+                         (-6 * h2 + 6 * h) * k1 + (3 * h2 - 2 * h) * dy * s1) /
+                        dy;
+            double r = sqrt(fmax(0, f));
+            iris_vec2 pt = { r, y1 + h * dy };
+            /* d r / d y = f' / (2 r); tangent (dr/dy, 1) */
+            iris_vec2 tn = { r > 0 ? df / (2 * r) : 0, 1 };
+            if (j > 0 && !geom_profile_add_curved(p, prev, pt, prev_t, tn))
+                return false;
+            prev = pt;
+            prev_t = tn;
+        }
+    }
+    if (!o->open && n >= 4) {
+        iris_vec2 b0 = { 0, P[1].v }, b1 = { P[1].u, P[1].v };
+        iris_vec2 c0 = { P[n - 2].u, P[n - 2].v }, c1 = { 0, P[n - 2].v };
+        if (!geom_profile_add(p, b0, b1) || !geom_profile_add(p, c0, c1))
+            return false;
+    }
+    return true;
+}
+
+/*
+** prism: sub-polygons end where a point repeats the first point of its
+** sub-polygon (linear spline). Other splines are flattened over the whole
+** point list; approximation: their sub-polygon rules are not applied.
+*/
+static bool add_prism(struct geom_profile *p, const iris_object *o)
+{
+    const iris_vec2 *P = o->u.prism.points;
+    int n = o->u.prism.n_points;
+    if (o->u.prism.spline != IRIS_SPLINE_LINEAR)
+        return add_spline(p, o->u.prism.spline, P, n) &&
+               geom_profile_close_group(p);
+    int start = 0;
+    for (int i = 1; i < n; i++) {
+        if (!geom_profile_add(p, P[i - 1], P[i]))
+            return false;
+        if (P[i].u == P[start].u && P[i].v == P[start].v) {
+            if (!geom_profile_close_group(p))
+                return false;
+            start = i + 1;
+            i++;
+        }
+    }
+    /* An unclosed last sub-polygon is closed, as POV-Ray does */
+    if (start < n - 1 && !geom_profile_add(p, P[n - 1], P[start]))
+        return false;
+    return geom_profile_close_group(p);
+}
+
+struct geom_profile *geom_prepare(const iris_object *o, const char **why)
+{
+    *why = NULL;
+    struct geom_profile *p = NULL;
+    bool ok = true;
+    switch (o->kind) {
+    case IRIS_OBJ_LATHE:
+        if (o->u.lathe.n_points < 2 || !o->u.lathe.points) {
+            *why = "lathe has fewer than 2 points";
+            return NULL;
+        }
+        p = geom_profile_new(o->u.lathe.n_points * SEG_STEPS);
+        ok = p && add_spline(p, o->u.lathe.spline, o->u.lathe.points,
+                             o->u.lathe.n_points);
+        break;
+    case IRIS_OBJ_SOR:
+        if (o->u.lathe.n_points < 4 || !o->u.lathe.points) {
+            *why = "sor has fewer than 4 points";
+            return NULL;
+        }
+        p = geom_profile_new(o->u.lathe.n_points * SEG_STEPS);
+        if (p && !add_sor(p, o)) {
+            geom_profile_free(p);
+            *why = "sor heights must increase";
+            return NULL;
+        }
+        break;
+    case IRIS_OBJ_PRISM:
+        if (o->u.prism.n_points < 3 || !o->u.prism.points) {
+            *why = "prism has fewer than 3 points";
+            return NULL;
+        }
+        p = geom_profile_new(o->u.prism.n_points * SEG_STEPS);
+        ok = p && add_prism(p, o);
+        if (p) {
+            p->h1 = fmin(o->u.prism.height1, o->u.prism.height2);
+            p->h2 = fmax(o->u.prism.height1, o->u.prism.height2);
+            p->conic = o->u.prism.sweep == 1;
+        }
+        break;
+    case IRIS_OBJ_TEXT:
+        return geom_text_profile(o, why);
+    default:
+        return NULL;
+    }
+    if (!p || !ok) {
+        geom_profile_free(p);
+        *why = "out of memory";
+        return NULL;
+    }
+    geom_profile_finish(p);
+    if (p->n_seg == 0) {
+        geom_profile_free(p);
+        *why = "the outline is empty";
+        return NULL;
+    }
+    return p;
+}

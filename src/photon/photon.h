@@ -1,0 +1,101 @@
+/* SPDX-License-Identifier: MIT */
+/*
+** photon.h: spectral caustic photon map: shooting, storage, estimate.
+**
+** photon_map_build() shoots photons from the scene's lights at its photon
+** targets as POV-Ray 3.7 does (povray-3.7-semantics.md §2: spacing/count,
+** target bounding spheres, the shooting rule, POV-Ray's power
+** normalisation), but traces each photon at ONE wavelength with physical
+** optics: exact unpolarised Fresnel with Russian roulette, n(lambda) from
+** ior_eval(), total internal reflection, spectral filter and fade. Photons
+** are stored only after at least one specular bounce (a caustic map, like
+** POV-Ray's), on objects that collect photons.
+**
+** photon_map_shade() returns the photon contribution at a surface point in
+** POV-Ray's shading model (§2.7): k nearest photons, the seed paper's cone
+** filter, the surface reflectance applied per photon wavelength.
+**
+** Depends on: util, math, spectrum, accel. Used by: render.
+** The map is immutable after the build; shade and the shadow query are
+** thread-safe.
+*/
+#ifndef IRIS_PHOTON_PHOTON_H
+#define IRIS_PHOTON_PHOTON_H
+
+#include <stdbool.h>
+#include <stdint.h>
+
+#include "iris/common.h"
+#include "iris/scene.h"
+#include "math/vec3.h"
+
+struct accel;
+struct photon_map;
+
+struct photon_options {
+    int threads;               /* worker threads (< 1: one) */
+    uint64_t seed;             /* random streams: (seed, pass, photon) */
+    int pass;                  /* progressive pass number, 0 first */
+    double radius_scale;       /* gather radius multiplier (0 = 1); the
+                                  progressive driver shrinks it per pass */
+};
+
+/* What a build did, for -v and the benchmarks. */
+struct photon_stats {
+    int64_t shot;              /* photons emitted */
+    int64_t stored;            /* photons in the map */
+    int64_t bytes;             /* memory of the stored map */
+    int n_combos;              /* light x target pairs that shot */
+    double spacing;            /* the spacing used (after 'count') */
+    double gather_radius;      /* initial gather radius (auto or given) */
+    double seconds_shoot, seconds_build;
+};
+
+/*
+** Builds the photon map of 'scene' (borrowed, like 'accel'; both must
+** outlive the map). *out is NULL when the scene asks for no photons
+** (no photons{} block, gather max 0, or no light x target pair with
+** refraction or reflection on). Returns IRIS_OK or IRIS_ENOMEM.
+*/
+IRIS_NODISCARD enum iris_status
+photon_map_build(const iris_scene *scene, const struct accel *accel,
+                 const struct photon_options *opts, struct photon_map **out,
+                 struct photon_stats *stats);
+
+/* Frees the map. NULL does nothing. */
+void photon_map_destroy(struct photon_map *m);
+
+/* A surface point to shade with photons. */
+struct photon_shade_input {
+    vec3 p;                    /* world point */
+    vec3 n_layer;              /* unit layer normal (perturbed), facing
+                                  the viewer */
+    vec3 n_raw;                /* unit raw normal, facing the viewer */
+    vec3 view_dir;             /* unit direction of the incoming eye ray */
+    double pigment_rgb[3];     /* layer pigment rgb (linear) */
+    double opacity;            /* POV-Ray's att = 1 - filter - transmit */
+    const iris_finish *finish; /* diffuse, brilliance, diffuse_back */
+    const iris_object *obj;    /* the object hit; 'collect off' gives 0
+                                  (NULL: assume it collects) */
+};
+
+/*
+** The photon (caustic) light at 'in' in linear sRGB, to be added to the
+** layer colour before POV-Ray's filter multiplication (semantics §2.7).
+** It already includes diffuse, pigment (per wavelength), brilliance and
+** opacity. 'm' NULL gives black.
+*/
+void photon_map_shade(const struct photon_map *m,
+                      const struct photon_shade_input *in, double rgb_out[3]);
+
+/*
+** POV-Ray's shadow rule for photon targets (semantics §2.5, "Shadow
+** consequence"): true when a shadow ray from 'lit' towards 'light' that
+** is blocked by 'blocker' must be fully black because the caustic photons
+** carry that light instead. False when 'm' is NULL or empty.
+*/
+bool photon_blocks_shadow(const struct photon_map *m,
+                          const iris_object *blocker, const iris_light *light,
+                          const iris_object *lit);
+
+#endif

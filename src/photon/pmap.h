@@ -1,0 +1,60 @@
+/* SPDX-License-Identifier: MIT */
+/*
+** pmap.h: internals of the photon map shared by the files of src/photon
+** and by the unit tests.
+**
+** The shooter reaches the scene only through struct pmap_world, a small
+** table of ray queries. photon_map_build() fills it from accel; the unit
+** tests fill it with an analytic test double, so the transport can be
+** checked against exact optics without the Embree build.
+*/
+#ifndef IRIS_PHOTON_PMAP_H
+#define IRIS_PHOTON_PMAP_H
+
+#include <stdbool.h>
+
+#include "accel/accel.h"
+#include "photon/photon.h"
+#include "photon/pstore.h"
+
+/* The ray queries the shooter needs (see accel.h for their meaning). */
+struct pmap_world {
+    const void *ctx;
+    bool (*intersect)(const void *ctx, const ray *r, double tmin,
+                      double tmax, unsigned skip, struct hit *h);
+    bool (*object_bounds)(const void *ctx, const iris_object *obj, vec3 *lo,
+                          vec3 *hi);
+    bool (*inside)(const void *ctx, const iris_object *obj, vec3 p);
+    double epsilon;            /* secondary-ray offset */
+};
+
+struct photon_map {
+    const iris_scene *scene;
+    struct pstore store;
+    int gather_min, gather_max;
+    double radius;             /* initial search radius */
+    double expand_tol;
+    int expand_min;
+    double cone_k;             /* cone filter constant (1) */
+};
+
+/* photon_map_build() against any world. */
+IRIS_NODISCARD enum iris_status
+pmap_build(const iris_scene *scene, const struct pmap_world *w,
+           const struct photon_options *opts, struct photon_map **out,
+           struct photon_stats *stats);
+
+/* The shooting rule of semantics §2.2b for one light and target. */
+bool pmap_shoots(const iris_light *l, const iris_object *target);
+
+/*
+** Unpolarised Fresnel reflectance for a cosine 'cos_i' in [0,1] of the
+** incidence angle and relative index eta = n_i/n_t; 1 at and past the
+** critical angle. *cos_t gets the cosine of the refraction angle.
+*/
+double pmap_fresnel(double cos_i, double eta, double *cos_t);
+
+/* The gather radius POV-Ray picks automatically (semantics §2.6). */
+double pmap_auto_radius(const struct pstore *s, int gather_max);
+
+#endif

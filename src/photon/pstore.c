@@ -1,0 +1,297 @@
+/* SPDX-License-Identifier: MIT */
+/*
+** pstore.c: packing photons, building the implicit kd-tree, k-NN search
+** (pstore.h).
+*/
+#include "config.h"
+
+#include "photon/pstore.h"
+
+#include <math.h>
+#include <string.h>
+
+#include "spectrum/spectrum.h"
+#include "util/mem.h"
+
+#define QBITS 20
+#define QMAX ((1u << QBITS) - 1u)
+#define AXIS_SHIFT 60
+
+/* ---- direction: octahedral map, 8 bits per coordinate ---- */
+
+static double sign_nz(double v)
+{
+    return v < 0.0 ? -1.0 : 1.0;
+}
+
+uint16_t pstore_encode_dir(vec3 d)
+{
+    double s = fabs(d.x) + fabs(d.y) + fabs(d.z);
+    if (!(s > 0.0))
+        return 0;
+    double u = d.x / s, v = d.y / s;
+    if (d.z < 0.0) {
+        double u2 = (1.0 - fabs(v)) * sign_nz(u);
+        v = (1.0 - fabs(u)) * sign_nz(v);
+        u = u2;
+    }
+    int qu = (int)lrint((u * 0.5 + 0.5) * 255.0);
+    int qv = (int)lrint((v * 0.5 + 0.5) * 255.0);
+    return (uint16_t)((qu & 255) | ((qv & 255) << 8));
+}
+
+vec3 pstore_decode_dir(uint16_t q)
+{
+    double u = (q & 255) / 255.0 * 2.0 - 1.0;
+    double v = ((q >> 8) & 255) / 255.0 * 2.0 - 1.0;
+    vec3 d = v3(u, v, 1.0 - fabs(u) - fabs(v));
+    if (d.z < 0.0) {
+        double x = (1.0 - fabs(d.y)) * sign_nz(d.x);
+        d.y = (1.0 - fabs(d.x)) * sign_nz(d.y);
+        d.x = x;
+    }
+    return v3_norm(d);
+}
+
+/* ---- tree build ---- */
+
+static float raw_coord(const struct pstore_raw *r, int axis)
+{
+    return r->p[axis];
+}
+
+/* Quickselect: puts the element of rank 'k' of a[lo..hi) at k along
+** 'axis', smaller ones before, larger ones after. */
+static void select_kth(struct pstore_raw *a, size_t lo, size_t hi, size_t k,
+                       int axis)
+{
+    while (hi - lo > 1) {
+        /* median of three as the pivot */
+        size_t mid = lo + (hi - lo) / 2;
+        float x = raw_coord(&a[lo], axis), y = raw_coord(&a[mid], axis);
+        float z = raw_coord(&a[hi - 1], axis);
+        float pivot = x < y ? (y < z ? y : (x < z ? z : x))
+                            : (x < z ? x : (y < z ? z : y));
+        /* three-way partition: < pivot | == pivot | > pivot */
+        size_t lt = lo, i = lo, gt = hi;
+        while (i < gt) {
+            float c = raw_coord(&a[i], axis);
+            if (c < pivot) {
+                struct pstore_raw t = a[lt];
+                a[lt++] = a[i];
+                a[i++] = t;
+            } else if (c > pivot) {
+                struct pstore_raw t = a[--gt];
+                a[gt] = a[i];
+                a[i] = t;
+            } else {
+                i++;
+            }
+        }
+        if (k < lt)
+            hi = lt;
+        else if (k >= gt)
+            lo = gt;
+        else
+            return;
+    }
+}
+
+/* Recursively arranges raw[lo..hi) into tree order, recording each
+** median's axis in 'axes'. */
+static void build_rec(struct pstore_raw *raw, uint8_t *axes, size_t lo,
+                      size_t hi)
+{
+    while (hi - lo > 1) {
+        float mn[3] = { INFINITY, INFINITY, INFINITY };
+        float mx[3] = { -INFINITY, -INFINITY, -INFINITY };
+        for (size_t i = lo; i < hi; i++)
+            for (int a = 0; a < 3; a++) {
+                mn[a] = fminf(mn[a], raw[i].p[a]);
+                mx[a] = fmaxf(mx[a], raw[i].p[a]);
+            }
+        int axis = 0;
+        for (int a = 1; a < 3; a++)
+            if (mx[a] - mn[a] > mx[axis] - mn[axis])
+                axis = a;
+        size_t mid = lo + (hi - lo) / 2;
+        select_kth(raw, lo, hi, mid, axis);
+        axes[mid] = (uint8_t)axis;
+        build_rec(raw, axes, lo, mid);
+        lo = mid + 1; /* tail call on the right half */
+    }
+}
+
+static uint64_t quantise(double x, double lo, double step)
+{
+    double q = step > 0.0 ? (x - lo) / step : 0.0;
+    if (!(q > 0.0))
+        return 0;
+    if (q > QMAX)
+        return QMAX;
+    return (uint64_t)llrint(q);
+}
+
+enum iris_status pstore_build(struct pstore *s, struct pstore_raw *raw,
+                              size_t n)
+{
+    memset(s, 0, sizeof *s);
+    if (n == 0)
+        return IRIS_OK;
+    uint8_t *axes = iris_calloc(n, 1);
+    s->ph = iris_calloc(n, sizeof *s->ph);
+    if (!axes || !s->ph) {
+        iris_free(axes);
+        iris_free(s->ph);
+        s->ph = NULL;
+        return IRIS_ENOMEM;
+    }
+    double mn[3] = { INFINITY, INFINITY, INFINITY };
+    double mx[3] = { -INFINITY, -INFINITY, -INFINITY };
+    for (size_t i = 0; i < n; i++)
+        for (int a = 0; a < 3; a++) {
+            mn[a] = fmin(mn[a], raw[i].p[a]);
+            mx[a] = fmax(mx[a], raw[i].p[a]);
+        }
+    for (int a = 0; a < 3; a++) {
+        s->lo[a] = mn[a];
+        s->step[a] = (mx[a] - mn[a]) / QMAX;
+    }
+    build_rec(raw, axes, 0, n);
+    for (size_t i = 0; i < n; i++) {
+        const struct pstore_raw *r = &raw[i];
+        uint64_t pos = quantise(r->p[0], s->lo[0], s->step[0]) |
+                       quantise(r->p[1], s->lo[1], s->step[1]) << QBITS |
+                       quantise(r->p[2], s->lo[2], s->step[2]) << (2 * QBITS) |
+                       (uint64_t)axes[i] << AXIS_SHIFT;
+        double lq = (r->lambda - SPEC_LAMBDA_MIN) / SPEC_LAMBDA_RANGE * 65535.0;
+        lq = lq < 0.0 ? 0.0 : lq > 65535.0 ? 65535.0 : lq;
+        s->ph[i].pos = pos;
+        s->ph[i].power = r->power;
+        s->ph[i].lambda_q = (uint16_t)lrint(lq);
+        s->ph[i].dir_q = pstore_encode_dir(v3(r->dir[0], r->dir[1], r->dir[2]));
+    }
+    s->n = n;
+    iris_free(axes);
+    return IRIS_OK;
+}
+
+void pstore_fini(struct pstore *s)
+{
+    iris_free(s->ph);
+    memset(s, 0, sizeof *s);
+}
+
+static inline double coord(const struct pstore *s, uint64_t pos, int a)
+{
+    return s->lo[a] + (double)((pos >> (a * QBITS)) & QMAX) * s->step[a];
+}
+
+vec3 pstore_position(const struct pstore *s, size_t i)
+{
+    uint64_t p = s->ph[i].pos;
+    return v3(coord(s, p, 0), coord(s, p, 1), coord(s, p, 2));
+}
+
+double pstore_lambda(const struct pstore *s, size_t i)
+{
+    return SPEC_LAMBDA_MIN + SPEC_LAMBDA_RANGE * s->ph[i].lambda_q / 65535.0;
+}
+
+vec3 pstore_direction(const struct pstore *s, size_t i)
+{
+    return pstore_decode_dir(s->ph[i].dir_q);
+}
+
+/* ---- k-nearest search with a bounded max-heap ---- */
+
+struct knn {
+    const struct pstore *s;
+    double q[3];
+    int k, n;
+    double max_d2;             /* current pruning radius squared */
+    struct pstore_found *heap; /* max-heap on d2 */
+};
+
+static void heap_push(struct knn *st, uint32_t idx, double d2)
+{
+    struct pstore_found *h = st->heap;
+    if (st->n < st->k) {
+        int i = st->n++;
+        while (i > 0 && h[(i - 1) / 2].d2 < d2) {
+            h[i] = h[(i - 1) / 2];
+            i = (i - 1) / 2;
+        }
+        h[i].index = idx;
+        h[i].d2 = (float)d2;
+        if (st->n == st->k)
+            st->max_d2 = h[0].d2;
+        return;
+    }
+    /* replace the root (the farthest) and sift down */
+    int i = 0;
+    for (;;) {
+        int c = 2 * i + 1;
+        if (c >= st->n)
+            break;
+        if (c + 1 < st->n && h[c + 1].d2 > h[c].d2)
+            c++;
+        if (h[c].d2 <= d2)
+            break;
+        h[i] = h[c];
+        i = c;
+    }
+    h[i].index = idx;
+    h[i].d2 = (float)d2;
+    st->max_d2 = h[0].d2;
+}
+
+static void knn_rec(struct knn *st, size_t lo, size_t hi)
+{
+    while (lo < hi) {
+        size_t mid = lo + (hi - lo) / 2;
+        uint64_t pos = st->s->ph[mid].pos;
+        double d2 = 0.0;
+        for (int a = 0; a < 3; a++) {
+            double d = st->q[a] - coord(st->s, pos, a);
+            d2 += d * d;
+        }
+        if (d2 < st->max_d2)
+            heap_push(st, (uint32_t)mid, d2);
+        if (hi - lo == 1)
+            return;
+        int axis = (int)(pos >> AXIS_SHIFT) & 3;
+        double diff = st->q[axis] - coord(st->s, pos, axis);
+        /* near side first, far side only if the plane is within reach */
+        if (diff < 0.0) {
+            knn_rec(st, lo, mid);
+            if (diff * diff < st->max_d2)
+                lo = mid + 1;
+            else
+                return;
+        } else {
+            knn_rec(st, mid + 1, hi);
+            if (diff * diff < st->max_d2)
+                hi = mid;
+            else
+                return;
+        }
+    }
+}
+
+int pstore_knn(const struct pstore *s, vec3 q, int k, double max_d2,
+               struct pstore_found *out, double *r2)
+{
+    *r2 = 0.0;
+    if (k <= 0 || s->n == 0)
+        return 0;
+    if (k > PSTORE_MAX_K)
+        k = PSTORE_MAX_K;
+    struct knn st = { s, { q.x, q.y, q.z }, k, 0, max_d2, out };
+    knn_rec(&st, 0, s->n);
+    double far = 0.0;
+    for (int i = 0; i < st.n; i++)
+        far = fmax(far, out[i].d2);
+    *r2 = far;
+    return st.n;
+}
