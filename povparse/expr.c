@@ -1,0 +1,1191 @@
+/* SPDX-License-Identifier: MIT */
+/*
+** expr.c: float, vector, colour and string expressions, and the right-hand
+** side of #declare.
+**
+** Precedence, lowest first, as POV-Ray's Parse_Express: ?:  |  &
+** comparisons (< <= = != >= >)  + -  * /  unary + - !  then factors with
+** .x/.red/... suffixes. A float meets a vector by filling every component
+** (POV-Ray's promotion); a shorter vector is padded with zeros. Inside
+** <...> a bare '>' closes the vector and is not a comparison.
+*/
+#include "config.h"
+
+#include <ctype.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "math/vec3.h"
+#include "pp.h"
+
+static pp_value expr_cond(pp_state *ps);
+
+static pp_value fval(double f)
+{
+    pp_value v;
+    memset(&v, 0, sizeof v);
+    v.kind = V_FLOAT;
+    v.dim = 1;
+    v.v[0] = f;
+    return v;
+}
+
+static pp_value vval(int dim, double a, double b, double c, double d)
+{
+    pp_value v;
+    memset(&v, 0, sizeof v);
+    v.kind = V_VECTOR;
+    v.dim = dim;
+    v.v[0] = a; v.v[1] = b; v.v[2] = c; v.v[3] = d;
+    return v;
+}
+
+static pp_value sval(const char *s)
+{
+    pp_value v;
+    memset(&v, 0, sizeof v);
+    v.kind = V_STRING;
+    v.u.str = s;
+    return v;
+}
+
+static bool numeric(const pp_value *v)
+{
+    return v->kind == V_FLOAT || v->kind == V_VECTOR || v->kind == V_COLOUR;
+}
+
+void pp_value_promote(pp_value *v, int dim)
+{
+    if (v->dim >= dim)
+        return;
+    if (v->dim == 1)
+        for (int i = 1; i < dim; i++)
+            v->v[i] = v->v[0];
+    else
+        for (int i = v->dim; i < dim; i++)
+            v->v[i] = 0;
+    v->dim = dim;
+    if (v->kind == V_FLOAT)
+        v->kind = dim == 5 ? V_COLOUR : V_VECTOR;
+}
+
+double pp_srgb_decode(double c)
+{
+    if (c <= 0.04045)
+        return c / 12.92;
+    return pow((c + 0.055) / 1.055, 2.4);
+}
+
+static void need_numeric(pp_state *ps, const pp_token *at, const pp_value *v)
+{
+    if (!numeric(v))
+        pp_error(ps, at, "expected a numeric expression, found a %s",
+                 pp_kind_name(v->kind));
+}
+
+/* Reads the next operator token, or nothing when the next token is a
+** directive (which must not run before the expression is complete). */
+static int peek_op(pp_state *ps)
+{
+    if (pp_next_is_directive(ps))
+        return T_EOF;
+    pp_next(ps);
+    int k = ps->tok.kind;
+    pp_unget(ps);
+    return k;
+}
+
+static void binop(pp_state *ps, const pp_token *at, pp_value *a,
+                  const pp_value *bb, int op)
+{
+    pp_value b = *bb;
+    need_numeric(ps, at, a);
+    need_numeric(ps, at, &b);
+    int dim = a->dim > b.dim ? a->dim : b.dim;
+    bool colour = a->kind == V_COLOUR || b.kind == V_COLOUR;
+    pp_value_promote(a, dim);
+    pp_value_promote(&b, dim);
+    for (int i = 0; i < dim; i++) {
+        double x = a->v[i], y = b.v[i], r = 0;
+        switch (op) {
+        case T_PLUS: r = x + y; break;
+        case T_MINUS: r = x - y; break;
+        case T_STAR: r = x * y; break;
+        case T_SLASH:
+            if (y == 0)
+                pp_error(ps, at, "division by zero");
+            r = x / y;
+            break;
+        }
+        a->v[i] = r;
+    }
+    a->dim = dim;
+    a->kind = dim == 1 ? V_FLOAT : colour ? V_COLOUR : V_VECTOR;
+}
+
+/* ---- built-in functions ----------------------------------------- */
+
+static void lparen(pp_state *ps) { pp_expect(ps, T_LPAREN, "'('"); }
+static void rparen(pp_state *ps) { pp_expect(ps, T_RPAREN, "')'"); }
+static void comma(pp_state *ps) { pp_expect(ps, T_COMMA, "','"); }
+
+static double arg1(pp_state *ps)
+{
+    lparen(ps);
+    double a = pp_float(ps);
+    rparen(ps);
+    return a;
+}
+
+static void arg2(pp_state *ps, double *a, double *b)
+{
+    lparen(ps);
+    *a = pp_float(ps);
+    comma(ps);
+    *b = pp_float(ps);
+    rparen(ps);
+}
+
+/* A domain check: POV-Ray stops with an error, and so do we. */
+static double checked(pp_state *ps, const pp_token *at, double r,
+                      const char *fn)
+{
+    if (!isfinite(r))
+        pp_error(ps, at, "%s: argument out of range", fn);
+    return r;
+}
+
+static uint64_t splitmix(uint64_t *s)
+{
+    uint64_t z = (*s += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return z ^ (z >> 31);
+}
+
+static const char *fmt_float(pp_state *ps, double f, int len, int prec)
+{
+    char buf[512];
+    char fmtb[32];
+    bool zero = len < 0;
+    int w = len < 0 ? -len : len;
+    if (w > 200)
+        w = 200;
+    if (prec > 100)
+        prec = 100;
+    if (prec < 0)
+        snprintf(fmtb, sizeof fmtb, zero ? "%%0%df" : "%%%df", w);
+    else
+        snprintf(fmtb, sizeof fmtb, zero ? "%%0%d.%df" : "%%%d.%df", w, prec);
+    snprintf(buf, sizeof buf, fmtb, f);
+    return pp_strdup(ps, buf, strlen(buf));
+}
+
+/* The object bounds used by min_extent/max_extent: world-space box of
+** the simple primitives, unions of CSG children; huge when unknown. */
+static void object_bounds(const iris_object *o, vec3 *lo, vec3 *hi)
+{
+    vec3 a, b;
+    switch (o->kind) {
+    case IRIS_OBJ_SPHERE:
+        a = v3_add(o->u.sphere.centre, v3(-o->u.sphere.radius,
+                   -o->u.sphere.radius, -o->u.sphere.radius));
+        b = v3_add(o->u.sphere.centre, v3(o->u.sphere.radius,
+                   o->u.sphere.radius, o->u.sphere.radius));
+        break;
+    case IRIS_OBJ_BOX:
+        a = v3_min(o->u.box.lo, o->u.box.hi);
+        b = v3_max(o->u.box.lo, o->u.box.hi);
+        break;
+    case IRIS_OBJ_CYLINDER: {
+        double r = o->u.cylinder.radius;
+        a = v3_sub(v3_min(o->u.cylinder.base, o->u.cylinder.cap), v3(r, r, r));
+        b = v3_add(v3_max(o->u.cylinder.base, o->u.cylinder.cap), v3(r, r, r));
+        break;
+    }
+    case IRIS_OBJ_CONE: {
+        double r = fmax(o->u.cone.base_radius, o->u.cone.cap_radius);
+        a = v3_sub(v3_min(o->u.cone.base, o->u.cone.cap), v3(r, r, r));
+        b = v3_add(v3_max(o->u.cone.base, o->u.cone.cap), v3(r, r, r));
+        break;
+    }
+    case IRIS_OBJ_TORUS: {
+        double R = o->u.torus.major + o->u.torus.minor, r = o->u.torus.minor;
+        a = v3(-R, -r, -R);
+        b = v3(R, r, R);
+        break;
+    }
+    case IRIS_OBJ_UNION: case IRIS_OBJ_MERGE:
+    case IRIS_OBJ_INTERSECTION: case IRIS_OBJ_DIFFERENCE: {
+        /* children already carry the full transform */
+        *lo = v3(1e30, 1e30, 1e30);
+        *hi = v3(-1e30, -1e30, -1e30);
+        int n = o->u.csg.n_children;
+        if (o->kind == IRIS_OBJ_DIFFERENCE && n > 0)
+            n = 1;
+        for (int i = 0; i < n; i++) {
+            vec3 cl, ch;
+            object_bounds(o->u.csg.children[i], &cl, &ch);
+            if (o->kind == IRIS_OBJ_INTERSECTION && i > 0) {
+                *lo = v3_max(*lo, cl);
+                *hi = v3_min(*hi, ch);
+            } else {
+                *lo = v3_min(*lo, cl);
+                *hi = v3_max(*hi, ch);
+            }
+        }
+        return;
+    }
+    default:
+        *lo = v3(-1e10, -1e10, -1e10);
+        *hi = v3(1e10, 1e10, 1e10);
+        return;
+    }
+    /* Transform the 8 corners. */
+    *lo = v3(1e30, 1e30, 1e30);
+    *hi = v3(-1e30, -1e30, -1e30);
+    for (int i = 0; i < 8; i++) {
+        vec3 p = v3(i & 1 ? b.x : a.x, i & 2 ? b.y : a.y, i & 4 ? b.z : a.z);
+        if (o->has_transform)
+            p = xf_point(&o->transform, p);
+        *lo = v3_min(*lo, p);
+        *hi = v3_max(*hi, p);
+    }
+}
+
+static const iris_object *object_arg(pp_state *ps)
+{
+    lparen(ps);
+    pp_next(ps);
+    const iris_object *o = NULL;
+    if (ps->tok.kind == T_IDENT && ps->tok.val.kind == V_OBJECT) {
+        o = ps->tok.val.u.obj;
+    } else {
+        pp_unget(ps);
+        o = pp_object(ps);
+        if (!o)
+            pp_error(ps, &ps->tok, "expected an object");
+    }
+    rparen(ps);
+    return o;
+}
+
+/* Evaluates a spline at 't' (linear between keys; cubic splines use the
+** Catmull-Rom form through the keys). */
+static pp_value spline_eval(const pp_spline *s, double t)
+{
+    pp_value v;
+    memset(&v, 0, sizeof v);
+    v.kind = s->dim == 1 ? V_FLOAT : V_VECTOR;
+    v.dim = s->dim;
+    if (s->n == 0)
+        return v;
+    int i = 0;
+    if (t <= s->t[0] || s->n == 1) {
+        memcpy(v.v, s->p[0], sizeof v.v);
+        return v;
+    }
+    if (t >= s->t[s->n - 1]) {
+        memcpy(v.v, s->p[s->n - 1], sizeof v.v);
+        return v;
+    }
+    while (i + 1 < s->n && s->t[i + 1] < t)
+        i++;
+    double t0 = s->t[i], t1 = s->t[i + 1];
+    double u = t1 > t0 ? (t - t0) / (t1 - t0) : 0;
+    for (int k = 0; k < 5; k++) {
+        double p1 = s->p[i][k], p2 = s->p[i + 1][k];
+        if (s->type >= 1 && s->n >= 3) {
+            double p0 = i > 0 ? s->p[i - 1][k] : 2 * p1 - p2;
+            double p3 = i + 2 < s->n ? s->p[i + 2][k] : 2 * p2 - p1;
+            double u2 = u * u, u3 = u2 * u;
+            v.v[k] = 0.5 * ((2 * p1) + (-p0 + p2) * u +
+                            (2 * p0 - 5 * p1 + 4 * p2 - p3) * u2 +
+                            (-p0 + 3 * p1 - 3 * p2 + p3) * u3);
+        } else {
+            v.v[k] = p1 + (p2 - p1) * u;
+        }
+    }
+    return v;
+}
+
+/* Parses the components after a colour keyword, POV-Ray's Parse_Colour:
+** rgb/rgbf/rgbt/rgbft/srgb... once, then red/green/blue/filter/transmit
+** and colour identifiers. The current token is the first keyword. */
+static pp_value colour_body(pp_state *ps)
+{
+    pp_value c;
+    memset(&c, 0, sizeof c);
+    c.kind = V_COLOUR;
+    c.dim = 5;
+    bool started = false;
+    for (;;) {
+        int k = ps->tok.kind;
+        pp_token at = ps->tok;
+        int terms = 0;
+        bool srgb = false;
+        switch (k) {
+        case T_COLOR:
+            break;
+        case T_RED: c.v[0] = pp_float(ps); started = true; break;
+        case T_GREEN: c.v[1] = pp_float(ps); started = true; break;
+        case T_BLUE: c.v[2] = pp_float(ps); started = true; break;
+        case T_FILTER: c.v[3] = pp_float(ps); started = true; break;
+        case T_TRANSMIT: c.v[4] = pp_float(ps); started = true; break;
+        case T_SRGB: srgb = true; terms = 3; break;
+        case T_SRGBF: srgb = true; terms = 4; break;
+        case T_SRGBT: srgb = true; terms = -4; break;
+        case T_SRGBFT: srgb = true; terms = 5; break;
+        case T_RGB: terms = 3; break;
+        case T_RGBF: terms = 4; break;
+        case T_RGBT: terms = -4; break;
+        case T_RGBFT: terms = 5; break;
+        default:
+            if (started || !pp_starts_expr(ps)) {
+                pp_unget(ps);
+                return c;
+            }
+            pp_unget(ps);
+            {
+                pp_value e = expr_cond(ps);
+                need_numeric(ps, &at, &e);
+                if (e.dim == 1) {
+                    c.v[0] = c.v[1] = c.v[2] = e.v[0];
+                } else {
+                    for (int i = 0; i < e.dim && i < 5; i++)
+                        c.v[i] = e.v[i];
+                }
+            }
+            started = true;
+            break;
+        }
+        if (terms != 0) {
+            if (started) {
+                pp_unget(ps);
+                return c;
+            }
+            pp_value e = expr_cond(ps);
+            need_numeric(ps, &at, &e);
+            int n = terms < 0 ? -terms : terms;
+            if (e.dim == 1) {
+                for (int i = 0; i < n; i++)
+                    c.v[i] = e.v[0];
+            } else {
+                for (int i = 0; i < n && i < e.dim; i++)
+                    c.v[i] = e.v[i];
+            }
+            if (terms == -4) {
+                c.v[4] = c.v[3];
+                c.v[3] = 0;
+            }
+            if (srgb)
+                for (int i = 0; i < 3; i++)
+                    c.v[i] = pp_srgb_decode(c.v[i]);
+            started = true;
+        }
+        if (pp_next_is_directive(ps))
+            return c;
+        pp_next(ps);
+    }
+}
+
+static bool is_colour_kw(int k)
+{
+    return k == T_COLOR || k == T_RGB || k == T_RGBF || k == T_RGBT ||
+           k == T_RGBFT || k == T_SRGB || k == T_SRGBF || k == T_SRGBT ||
+           k == T_SRGBFT || k == T_RED || k == T_GREEN || k == T_BLUE ||
+           k == T_FILTER || k == T_TRANSMIT;
+}
+
+bool pp_starts_expr(pp_state *ps)
+{
+    int k = ps->tok.kind;
+    switch (k) {
+    case T_NUMBER: case T_LPAREN: case T_LT: case T_MINUS: case T_PLUS:
+    case T_BANG: case T_STRING:
+        return true;
+    case T_IDENT:
+        return numeric(&ps->tok.val) || ps->tok.val.kind == V_STRING ||
+               ps->tok.val.kind == V_FUNCTION || ps->tok.val.kind == V_SPLINE ||
+               ps->tok.val.kind == V_ARRAY;
+    case T_X: case T_Y: case T_Z: case T_T: case T_U: case T_V: case T_PI:
+    case T_TAU: case T_TRUE: case T_FALSE: case T_YES: case T_NO: case T_ON:
+    case T_OFF: case T_CLOCK: case T_CLOCK_DELTA: case T_CLOCK_ON:
+    case T_FRAME_NUMBER: case T_INITIAL_FRAME: case T_FINAL_FRAME:
+    case T_INITIAL_CLOCK: case T_FINAL_CLOCK: case T_IMAGE_WIDTH:
+    case T_IMAGE_HEIGHT: case T_VERSION:
+    case T_ABS: case T_ACOS: case T_ACOSH: case T_ASIN: case T_ASINH:
+    case T_ATAN: case T_ATANH: case T_ATAN2: case T_CEIL: case T_COS:
+    case T_COSH: case T_DEGREES: case T_RADIANS: case T_DIV: case T_EXP:
+    case T_FLOOR: case T_INT: case T_LN: case T_LOG: case T_MAX: case T_MIN:
+    case T_MOD: case T_POW: case T_SQRT: case T_SQR: case T_TAN: case T_TANH:
+    case T_SIN: case T_SINH: case T_SELECT: case T_VLENGTH: case T_VDOT:
+    case T_VNORMALIZE: case T_VCROSS: case T_VROTATE: case T_VAXIS_ROTATE:
+    case T_VTURBULENCE: case T_RAND: case T_SEED: case T_DEFINED:
+    case T_DIMENSIONS: case T_DIMENSION_SIZE: case T_STRLEN: case T_VAL:
+    case T_ASC: case T_STRCMP: case T_FILE_EXISTS: case T_MIN_EXTENT:
+    case T_MAX_EXTENT: case T_BITWISE_AND: case T_BITWISE_OR:
+    case T_BITWISE_XOR: case T_STR: case T_CONCAT: case T_CHR:
+    case T_SUBSTR: case T_STRUPR: case T_STRLWR: case T_VSTR: case T_INSIDE:
+    case T_TRACE: case T_DATETIME: case T_NOW:
+        return true;
+    default:
+        return is_colour_kw(k);
+    }
+}
+
+/* Reads the indices of an array reference; the '[' is next. */
+static pp_value array_elem(pp_state *ps, const pp_token *at, pp_array *arr)
+{
+    long idx = 0;
+    for (int d = 0; d < arr->ndim; d++) {
+        pp_expect(ps, T_LBRACKET, "'['");
+        pp_token it = ps->tok;
+        double f = pp_float(ps);
+        pp_expect(ps, T_RBRACKET, "']'");
+        long i = (long)f;
+        if (!(f >= 0) || i >= arr->dims[d])
+            pp_error(ps, &it, "array index %g out of range [0, %d]", f,
+                     arr->dims[d] - 1);
+        idx = idx * arr->dims[d] + i;
+    }
+    pp_value v = arr->items[idx];
+    if (v.kind == V_NONE)
+        pp_error(ps, at, "array element used before it was given a value");
+    return v;
+}
+
+/* Calls function 'fn' with '(' args ')' at the next tokens. */
+static pp_value call_fn(pp_state *ps, const iris_fn *fn)
+{
+    double args[64];
+    int n = 0;
+    lparen(ps);
+    if (!pp_accept(ps, T_RPAREN)) {
+        do {
+            double a = pp_float(ps);
+            if (n < 64)
+                args[n++] = a;
+        } while (pp_accept(ps, T_COMMA));
+        rparen(ps);
+    }
+    if (fn->n_results > 1) {
+        pp_value v;
+        memset(&v, 0, sizeof v);
+        v.kind = fn->n_results == 5 ? V_COLOUR : V_VECTOR;
+        v.dim = fn->n_results;
+        return v;
+    }
+    return fval(iris_fn_eval(fn, args, n));
+}
+
+/* A string expression factor: literal, identifier or string function. */
+static pp_value factor(pp_state *ps)
+{
+    pp_next(ps);
+    pp_token at = ps->tok;
+    int k = at.kind;
+    double a, b;
+    switch (k) {
+    case T_NUMBER: return fval(at.num);
+    case T_STRING: return sval(at.str);
+    case T_LPAREN: {
+        bool iv = ps->in_vector;
+        ps->in_vector = false;
+        pp_value v = expr_cond(ps);
+        ps->in_vector = iv;
+        rparen(ps);
+        return v;
+    }
+    case T_LT: {
+        bool iv = ps->in_vector;
+        ps->in_vector = true;
+        pp_value v;
+        memset(&v, 0, sizeof v);
+        int n = 0;
+        do {
+            pp_value c = expr_cond(ps);
+            if (c.kind != V_FLOAT)
+                pp_error(ps, &at, "vector components must be floats");
+            if (n >= 5)
+                pp_error(ps, &at, "a vector has at most 5 components");
+            v.v[n++] = c.v[0];
+        } while (pp_accept(ps, T_COMMA));
+        ps->in_vector = iv;
+        pp_expect(ps, T_GT, "'>' to close the vector");
+        if (n < 2)
+            pp_error(ps, &at, "a vector needs at least 2 components");
+        v.kind = V_VECTOR;
+        v.dim = n;
+        return v;
+    }
+    case T_IDENT: {
+        pp_value v = at.val;
+        switch (v.kind) {
+        case V_NONE:
+            pp_error(ps, &at, "undeclared identifier '%.*s'", (int)at.len,
+                     pp_tok_text(ps, &at));
+        case V_FLOAT: case V_VECTOR: case V_COLOUR: case V_STRING:
+            return v;
+        case V_ARRAY:
+            if (!pp_accept(ps, T_LBRACKET))
+                pp_error(ps, &at, "array '%.*s' used without an index",
+                         (int)at.len, pp_tok_text(ps, &at));
+            pp_unget(ps);
+            return array_elem(ps, &at, v.u.arr);
+        case V_FUNCTION:
+            return call_fn(ps, v.u.fn);
+        case V_SPLINE: {
+            lparen(ps);
+            double t = pp_float(ps);
+            rparen(ps);
+            return spline_eval(v.u.spline, t);
+        }
+        default:
+            pp_error(ps, &at, "expected a numeric expression, but '%.*s' is "
+                     "a %s", (int)at.len, pp_tok_text(ps, &at),
+                     pp_kind_name(v.kind));
+        }
+    }
+    case T_X: return vval(3, 1, 0, 0, 0);
+    case T_Y: return vval(3, 0, 1, 0, 0);
+    case T_Z: return vval(3, 0, 0, 1, 0);
+    case T_T: return vval(4, 0, 0, 0, 1);
+    case T_U: return vval(2, 1, 0, 0, 0);
+    case T_V: return vval(2, 0, 1, 0, 0);
+    case T_PI: return fval(M_PI);
+    case T_TAU: return fval(2 * M_PI);
+    case T_TRUE: case T_YES: case T_ON: return fval(1);
+    case T_FALSE: case T_NO: case T_OFF: return fval(0);
+    case T_CLOCK: return fval(ps->opt.clock);
+    case T_CLOCK_DELTA: return fval(0);
+    case T_CLOCK_ON: return fval(0);
+    case T_FRAME_NUMBER: return fval(ps->opt.frame_number);
+    case T_INITIAL_FRAME: case T_FINAL_FRAME: return fval(ps->opt.frame_number);
+    case T_INITIAL_CLOCK: return fval(0);
+    case T_FINAL_CLOCK: return fval(1);
+    case T_IMAGE_WIDTH: return fval(ps->opt.image_width);
+    case T_IMAGE_HEIGHT: return fval(ps->opt.image_height);
+    case T_VERSION: return fval(ps->version);
+    case T_NOW: return fval(0);
+    case T_ABS: return fval(fabs(arg1(ps)));
+    case T_ACOS: return fval(checked(ps, &at, acos(arg1(ps)), "acos"));
+    case T_ACOSH: return fval(checked(ps, &at, acosh(arg1(ps)), "acosh"));
+    case T_ASIN: return fval(checked(ps, &at, asin(arg1(ps)), "asin"));
+    case T_ASINH: return fval(asinh(arg1(ps)));
+    case T_ATAN: return fval(atan(arg1(ps)));
+    case T_ATANH: return fval(checked(ps, &at, atanh(arg1(ps)), "atanh"));
+    case T_ATAN2:
+        arg2(ps, &a, &b);
+        return fval(a == 0 && b == 0 ? 0 : atan2(a, b));
+    case T_CEIL: return fval(ceil(arg1(ps)));
+    case T_COS: return fval(cos(arg1(ps)));
+    case T_COSH: return fval(cosh(arg1(ps)));
+    case T_DEGREES: return fval(arg1(ps) * 180 / M_PI);
+    case T_RADIANS: return fval(arg1(ps) * M_PI / 180);
+    case T_DIV:
+        arg2(ps, &a, &b);
+        if (b == 0)
+            pp_error(ps, &at, "div: division by zero");
+        return fval(trunc(a / b));
+    case T_MOD:
+        arg2(ps, &a, &b);
+        if (b == 0)
+            pp_error(ps, &at, "mod: division by zero");
+        return fval(fmod(a, b));
+    case T_EXP: return fval(checked(ps, &at, exp(arg1(ps)), "exp"));
+    case T_FLOOR: return fval(floor(arg1(ps)));
+    case T_INT: return fval(trunc(arg1(ps)));
+    case T_LN: return fval(checked(ps, &at, log(arg1(ps)), "ln"));
+    case T_LOG: return fval(checked(ps, &at, log10(arg1(ps)), "log"));
+    case T_SQRT: return fval(checked(ps, &at, sqrt(arg1(ps)), "sqrt"));
+    case T_SQR: a = arg1(ps); return fval(a * a);
+    case T_SIN: return fval(sin(arg1(ps)));
+    case T_SINH: return fval(sinh(arg1(ps)));
+    case T_TAN: return fval(tan(arg1(ps)));
+    case T_TANH: return fval(tanh(arg1(ps)));
+    case T_POW:
+        arg2(ps, &a, &b);
+        return fval(checked(ps, &at, pow(a, b), "pow"));
+    case T_BITWISE_AND: case T_BITWISE_OR: case T_BITWISE_XOR: {
+        lparen(ps);
+        long r = (long)pp_float(ps);
+        while (pp_accept(ps, T_COMMA)) {
+            long x = (long)pp_float(ps);
+            r = k == T_BITWISE_AND ? (r & x) : k == T_BITWISE_OR ? (r | x)
+                                                                 : (r ^ x);
+        }
+        rparen(ps);
+        return fval((double)r);
+    }
+    case T_MAX: case T_MIN: {
+        lparen(ps);
+        double r = pp_float(ps);
+        while (pp_accept(ps, T_COMMA)) {
+            double x = pp_float(ps);
+            r = k == T_MAX ? fmax(r, x) : fmin(r, x);
+        }
+        rparen(ps);
+        return fval(r);
+    }
+    case T_SELECT: {
+        lparen(ps);
+        double s = pp_float(ps);
+        comma(ps);
+        pp_value x = expr_cond(ps);
+        comma(ps);
+        pp_value y = expr_cond(ps);
+        pp_value z = y;
+        bool four = pp_accept(ps, T_COMMA);
+        if (four)
+            z = expr_cond(ps);
+        rparen(ps);
+        if (s < 0)
+            return x;
+        if (four && s == 0)
+            return y;
+        return four ? z : y;
+    }
+    case T_VLENGTH: {
+        lparen(ps);
+        iris_vec3 p = pp_vector(ps);
+        rparen(ps);
+        return fval(v3_len(p));
+    }
+    case T_VDOT: {
+        lparen(ps);
+        iris_vec3 p = pp_vector(ps);
+        comma(ps);
+        iris_vec3 q = pp_vector(ps);
+        rparen(ps);
+        return fval(v3_dot(p, q));
+    }
+    case T_VNORMALIZE: {
+        lparen(ps);
+        iris_vec3 p = pp_vector(ps);
+        rparen(ps);
+        if (v3_len(p) == 0)
+            pp_error(ps, &at, "vnormalize: zero-length vector");
+        p = v3_norm(p);
+        return vval(3, p.x, p.y, p.z, 0);
+    }
+    case T_VCROSS: {
+        lparen(ps);
+        iris_vec3 p = pp_vector(ps);
+        comma(ps);
+        iris_vec3 q = pp_vector(ps);
+        rparen(ps);
+        p = v3_cross(p, q);
+        return vval(3, p.x, p.y, p.z, 0);
+    }
+    case T_VROTATE: {
+        lparen(ps);
+        iris_vec3 p = pp_vector(ps);
+        comma(ps);
+        iris_vec3 r = pp_vector(ps);
+        rparen(ps);
+        iris_transform xf;
+        xf_rotate(&xf, r);
+        p = xf_point(&xf, p);
+        return vval(3, p.x, p.y, p.z, 0);
+    }
+    case T_VAXIS_ROTATE: {
+        lparen(ps);
+        iris_vec3 p = pp_vector(ps);
+        comma(ps);
+        iris_vec3 ax = pp_vector(ps);
+        comma(ps);
+        double ang = pp_float(ps);
+        rparen(ps);
+        if (v3_len(ax) == 0)
+            pp_error(ps, &at, "vaxis_rotate: zero-length axis");
+        iris_transform xf;
+        xf_axis_rotate(&xf, ax, ang);
+        p = xf_point(&xf, p);
+        return vval(3, p.x, p.y, p.z, 0);
+    }
+    case T_VTURBULENCE: {
+        lparen(ps);
+        pp_float(ps);
+        comma(ps);
+        pp_float(ps);
+        comma(ps);
+        pp_float(ps);
+        comma(ps);
+        pp_vector(ps);
+        rparen(ps);
+        pp_warn_once(ps, &at, T_VTURBULENCE, "vturbulence (returns <0,0,0>)");
+        return vval(3, 0, 0, 0, 0);
+    }
+    case T_SEED: {
+        double s = arg1(ps);
+        if (ps->n_rng == ps->cap_rng) {
+            int cap = ps->cap_rng ? ps->cap_rng * 2 : 8;
+            uint64_t *r = pp_salloc(ps, (size_t)cap * sizeof *r);
+            if (ps->n_rng)
+                memcpy(r, ps->rng, (size_t)ps->n_rng * sizeof *r);
+            ps->rng = r;
+            ps->cap_rng = cap;
+        }
+        ps->rng[ps->n_rng] = (uint64_t)(int64_t)s * 0x2545F4914F6CDD1Dull + 1;
+        return fval(ps->n_rng++);
+    }
+    case T_RAND: {
+        double s = arg1(ps);
+        int i = (int)s;
+        if (i < 0 || i >= ps->n_rng)
+            pp_error(ps, &at, "rand: %g is not a stream made by seed()", s);
+        return fval((double)(splitmix(&ps->rng[i]) >> 11) * 0x1.0p-53);
+    }
+    case T_DEFINED: {
+        lparen(ps);
+        ps->no_expand++;
+        pp_next(ps);
+        ps->no_expand--;
+        bool d = ps->tok.kind > T_KW_FIRST ||
+                 (ps->tok.kind == T_IDENT && ps->tok.val.kind != V_NONE);
+        rparen(ps);
+        return fval(d);
+    }
+    case T_DIMENSIONS: case T_DIMENSION_SIZE: {
+        lparen(ps);
+        pp_next(ps);
+        if (ps->tok.kind != T_IDENT || ps->tok.val.kind != V_ARRAY)
+            pp_error(ps, &ps->tok, "expected an array identifier");
+        pp_array *arr = ps->tok.val.u.arr;
+        double r = arr->ndim;
+        if (k == T_DIMENSION_SIZE) {
+            comma(ps);
+            pp_token dt = ps->tok;
+            int d = (int)pp_float(ps);
+            if (d < 1 || d > arr->ndim)
+                pp_error(ps, &dt, "dimension %d out of range [1, %d]", d,
+                         arr->ndim);
+            r = arr->dims[d - 1];
+        }
+        rparen(ps);
+        return fval(r);
+    }
+    case T_STRLEN: {
+        lparen(ps);
+        const char *s = pp_string(ps);
+        rparen(ps);
+        return fval((double)strlen(s));
+    }
+    case T_VAL: {
+        lparen(ps);
+        const char *s = pp_string(ps);
+        rparen(ps);
+        return fval(strtod(s, NULL));
+    }
+    case T_ASC: {
+        lparen(ps);
+        const char *s = pp_string(ps);
+        rparen(ps);
+        return fval((unsigned char)s[0]);
+    }
+    case T_STRCMP: {
+        lparen(ps);
+        const char *s = pp_string(ps);
+        comma(ps);
+        const char *t = pp_string(ps);
+        rparen(ps);
+        int c = strcmp(s, t);
+        return fval(c < 0 ? -1 : c > 0);
+    }
+    case T_FILE_EXISTS: {
+        lparen(ps);
+        const char *s = pp_string(ps);
+        rparen(ps);
+        struct stat st;
+        char full[4096];
+        if (s[0] != '/')
+            snprintf(full, sizeof full, "%s/%s", ps->files[at.file].dir, s);
+        else
+            snprintf(full, sizeof full, "%s", s);
+        return fval(stat(full, &st) == 0);
+    }
+    case T_MIN_EXTENT: case T_MAX_EXTENT: {
+        const iris_object *o = object_arg(ps);
+        vec3 lo, hi;
+        object_bounds(o, &lo, &hi);
+        vec3 r = k == T_MIN_EXTENT ? lo : hi;
+        return vval(3, r.x, r.y, r.z, 0);
+    }
+    case T_INSIDE: case T_TRACE:
+        pp_error(ps, &at, "%s() is not supported (it needs the renderer's "
+                 "intersection code)", k == T_INSIDE ? "inside" : "trace");
+    case T_STR: {
+        lparen(ps);
+        double f = pp_float(ps);
+        comma(ps);
+        int len = (int)pp_float(ps);
+        comma(ps);
+        int prec = (int)pp_float(ps);
+        rparen(ps);
+        return sval(fmt_float(ps, f, len, prec));
+    }
+    case T_VSTR: {
+        lparen(ps);
+        int n = (int)pp_float(ps);
+        comma(ps);
+        pp_value v = expr_cond(ps);
+        comma(ps);
+        const char *sep = pp_string(ps);
+        comma(ps);
+        int len = (int)pp_float(ps);
+        comma(ps);
+        int prec = (int)pp_float(ps);
+        rparen(ps);
+        need_numeric(ps, &at, &v);
+        if (n < 1)
+            n = 1;
+        if (n > 5)
+            n = 5;
+        pp_value_promote(&v, n);
+        char buf[2048] = "";
+        size_t used = 0;
+        for (int i = 0; i < n; i++) {
+            const char *s = fmt_float(ps, v.v[i], len, prec);
+            used += (size_t)snprintf(buf + used, sizeof buf - used, "%s%s",
+                                     i ? sep : "", s);
+            if (used >= sizeof buf)
+                break;
+        }
+        return sval(pp_strdup(ps, buf, strlen(buf)));
+    }
+    case T_CONCAT: {
+        lparen(ps);
+        size_t cap = 256, len = 0;
+        char *buf = pp_salloc(ps, cap);
+        do {
+            const char *s = pp_string(ps);
+            size_t n = strlen(s);
+            if (len + n + 1 > cap) {
+                while (len + n + 1 > cap)
+                    cap *= 2;
+                if (cap > (1u << 24))
+                    pp_error(ps, &at, "string longer than 16 MiB");
+                char *nb = pp_salloc(ps, cap);
+                memcpy(nb, buf, len);
+                buf = nb;
+            }
+            memcpy(buf + len, s, n);
+            len += n;
+            buf[len] = 0;
+        } while (pp_accept(ps, T_COMMA));
+        rparen(ps);
+        return sval(buf);
+    }
+    case T_CHR: {
+        int c = (int)arg1(ps);
+        char b[2] = { (char)(c > 0 && c < 256 ? c : ' '), 0 };
+        return sval(pp_strdup(ps, b, 1));
+    }
+    case T_SUBSTR: {
+        lparen(ps);
+        const char *s = pp_string(ps);
+        comma(ps);
+        int p = (int)pp_float(ps);
+        comma(ps);
+        int n = (int)pp_float(ps);
+        rparen(ps);
+        int len = (int)strlen(s);
+        if (p < 1 || n < 0 || p - 1 + n > len)
+            pp_error(ps, &at, "substr: position %d, length %d outside the "
+                     "string of length %d", p, n, len);
+        return sval(pp_strdup(ps, s + p - 1, (size_t)n));
+    }
+    case T_STRUPR: case T_STRLWR: {
+        lparen(ps);
+        const char *s = pp_string(ps);
+        rparen(ps);
+        char *r = pp_strdup(ps, s, strlen(s));
+        for (char *p = r; *p; p++)
+            *p = (char)(k == T_STRUPR ? toupper((unsigned char)*p)
+                                      : tolower((unsigned char)*p));
+        return sval(r);
+    }
+    case T_DATETIME:
+        lparen(ps);
+        pp_float(ps);
+        if (pp_accept(ps, T_COMMA))
+            pp_string(ps);
+        rparen(ps);
+        return sval("");
+    default:
+        if (is_colour_kw(k))
+            return colour_body(ps);
+        {
+            char buf[80];
+            pp_error(ps, &at, "expected a numeric expression, found %s",
+                     pp_tok_name(ps, &at, buf, sizeof buf));
+        }
+    }
+}
+
+/* factor { '.' component } */
+static pp_value postfix(pp_state *ps)
+{
+    pp_value v = factor(ps);
+    while (peek_op(ps) == T_DOT) {
+        pp_next(ps);
+        pp_token dot = ps->tok;
+        pp_next(ps);
+        int i;
+        switch (ps->tok.kind) {
+        case T_X: case T_U: case T_RED: i = 0; break;
+        case T_Y: case T_V: case T_GREEN: i = 1; break;
+        case T_Z: case T_BLUE: i = 2; break;
+        case T_T: case T_FILTER: i = 3; break;
+        case T_TRANSMIT: i = 4; break;
+        case T_GRAY: {
+            need_numeric(ps, &dot, &v);
+            pp_value_promote(&v, 3);
+            v = fval(0.297 * v.v[0] + 0.589 * v.v[1] + 0.114 * v.v[2]);
+            continue;
+        }
+        default:
+            pp_error(ps, &ps->tok, "expected x, y, z, t, u, v or a colour "
+                     "component after '.'");
+        }
+        need_numeric(ps, &dot, &v);
+        if (i >= v.dim && v.dim > 1)
+            pp_error(ps, &dot, "bad operand for '.': the value has %d "
+                     "components", v.dim);
+        v = fval(v.dim == 1 ? v.v[0] : v.v[i]);
+    }
+    return v;
+}
+
+static pp_value unary(pp_state *ps)
+{
+    pp_next(ps);
+    int k = ps->tok.kind;
+    pp_token at = ps->tok;
+    if (k == T_MINUS || k == T_PLUS || k == T_BANG) {
+        pp_value v = unary(ps);
+        need_numeric(ps, &at, &v);
+        for (int i = 0; i < v.dim; i++) {
+            if (k == T_MINUS)
+                v.v[i] = -v.v[i];
+            else if (k == T_BANG)
+                v.v[i] = v.v[i] == 0;
+        }
+        return v;
+    }
+    pp_unget(ps);
+    return postfix(ps);
+}
+
+static pp_value expr_mul(pp_state *ps)
+{
+    pp_value a = unary(ps);
+    for (;;) {
+        int op = peek_op(ps);
+        if (op != T_STAR && op != T_SLASH)
+            return a;
+        pp_next(ps);
+        pp_token at = ps->tok;
+        pp_value b = unary(ps);
+        binop(ps, &at, &a, &b, op);
+    }
+}
+
+static pp_value expr_add(pp_state *ps)
+{
+    pp_value a = expr_mul(ps);
+    for (;;) {
+        int op = peek_op(ps);
+        if (op != T_PLUS && op != T_MINUS)
+            return a;
+        pp_next(ps);
+        pp_token at = ps->tok;
+        pp_value b = expr_mul(ps);
+        binop(ps, &at, &a, &b, op);
+    }
+}
+
+static pp_value expr_cmp(pp_state *ps)
+{
+    pp_value a = expr_add(ps);
+    for (;;) {
+        int op = peek_op(ps);
+        if (op != T_LT && op != T_LE && op != T_EQUALS && op != T_NE &&
+            op != T_GE && !(op == T_GT && !ps->in_vector))
+            return a;
+        pp_next(ps);
+        pp_token at = ps->tok;
+        pp_value b = expr_add(ps);
+        need_numeric(ps, &at, &a);
+        need_numeric(ps, &at, &b);
+        double x = a.v[0], y = b.v[0];
+        bool r;
+        switch (op) {
+        case T_LT: r = x < y; break;
+        case T_LE: r = x <= y; break;
+        case T_EQUALS: r = fabs(x - y) <= 1e-10 * fmax(1.0, fabs(x)) ||
+                           x == y; break;
+        case T_NE: r = !(fabs(x - y) <= 1e-10 * fmax(1.0, fabs(x))); break;
+        case T_GE: r = x >= y; break;
+        default: r = x > y; break;
+        }
+        a = fval(r);
+    }
+}
+
+static pp_value expr_and(pp_state *ps)
+{
+    pp_value a = expr_cmp(ps);
+    while (peek_op(ps) == T_AMP) {
+        pp_next(ps);
+        pp_token at = ps->tok;
+        pp_value b = expr_cmp(ps);
+        need_numeric(ps, &at, &a);
+        need_numeric(ps, &at, &b);
+        a = fval(a.v[0] != 0 && b.v[0] != 0);
+    }
+    return a;
+}
+
+static pp_value expr_or(pp_state *ps)
+{
+    pp_value a = expr_and(ps);
+    while (peek_op(ps) == T_BAR) {
+        pp_next(ps);
+        pp_token at = ps->tok;
+        pp_value b = expr_and(ps);
+        need_numeric(ps, &at, &a);
+        need_numeric(ps, &at, &b);
+        a = fval(a.v[0] != 0 || b.v[0] != 0);
+    }
+    return a;
+}
+
+static pp_value expr_cond(pp_state *ps)
+{
+    pp_value c = expr_or(ps);
+    if (peek_op(ps) != T_QUESTION)
+        return c;
+    pp_next(ps);
+    pp_token at = ps->tok;
+    need_numeric(ps, &at, &c);
+    pp_value a = expr_cond(ps);
+    pp_expect(ps, T_COLON, "':'");
+    pp_value b = expr_cond(ps);
+    return c.v[0] != 0 ? a : b;
+}
+
+pp_value pp_expr(pp_state *ps)
+{
+    return expr_cond(ps);
+}
+
+double pp_float(pp_state *ps)
+{
+    pp_next(ps);
+    pp_token at = ps->tok;
+    pp_unget(ps);
+    pp_value v = expr_cond(ps);
+    need_numeric(ps, &at, &v);
+    if (v.dim != 1)
+        pp_error(ps, &at, "expected a float, found a %d-component vector",
+                 v.dim);
+    return v.v[0];
+}
+
+iris_vec3 pp_vector(pp_state *ps)
+{
+    pp_next(ps);
+    pp_token at = ps->tok;
+    pp_unget(ps);
+    pp_value v = expr_cond(ps);
+    need_numeric(ps, &at, &v);
+    pp_value_promote(&v, 3);
+    iris_vec3 r = { v.v[0], v.v[1], v.v[2] };
+    return r;
+}
+
+iris_vec2 pp_vector2(pp_state *ps)
+{
+    pp_next(ps);
+    pp_token at = ps->tok;
+    pp_unget(ps);
+    pp_value v = expr_cond(ps);
+    need_numeric(ps, &at, &v);
+    pp_value_promote(&v, 2);
+    iris_vec2 r = { v.v[0], v.v[1] };
+    return r;
+}
+
+void pp_vector4(pp_state *ps, double out[4])
+{
+    pp_next(ps);
+    pp_token at = ps->tok;
+    pp_unget(ps);
+    pp_value v = expr_cond(ps);
+    need_numeric(ps, &at, &v);
+    pp_value_promote(&v, 4);
+    for (int i = 0; i < 4; i++)
+        out[i] = v.v[i];
+}
+
+iris_colour pp_value_colour(const pp_value *v)
+{
+    iris_colour c = { 0, 0, 0, 0, 0 };
+    if (v->dim == 1) {
+        c.r = c.g = c.b = v->v[0];
+        return c;
+    }
+    c.r = v->v[0];
+    c.g = v->v[1];
+    c.b = v->dim > 2 ? v->v[2] : 0;
+    c.f = v->dim > 3 ? v->v[3] : 0;
+    c.t = v->dim > 4 ? v->v[4] : 0;
+    return c;
+}
+
+iris_colour pp_colour(pp_state *ps)
+{
+    pp_next(ps);
+    pp_token at = ps->tok;
+    if (!is_colour_kw(at.kind) && !pp_starts_expr(ps)) {
+        char buf[80];
+        pp_error(ps, &at, "expected a colour, found %s",
+                 pp_tok_name(ps, &at, buf, sizeof buf));
+    }
+    pp_value v = colour_body(ps);
+    need_numeric(ps, &at, &v);
+    return pp_value_colour(&v);
+}
+
+const char *pp_string(pp_state *ps)
+{
+    pp_next(ps);
+    pp_token at = ps->tok;
+    pp_unget(ps);
+    pp_value v = expr_cond(ps);
+    if (v.kind != V_STRING)
+        pp_error(ps, &at, "expected a string, found a %s",
+                 pp_kind_name(v.kind));
+    return v.u.str;
+}
+
+bool pp_bool_opt(pp_state *ps)
+{
+    if (pp_next_is_directive(ps))
+        return true;
+    pp_next(ps);
+    bool isbool = ps->tok.kind == T_NUMBER || ps->tok.kind == T_TRUE ||
+                  ps->tok.kind == T_FALSE || ps->tok.kind == T_ON ||
+                  ps->tok.kind == T_OFF || ps->tok.kind == T_YES ||
+                  ps->tok.kind == T_NO || ps->tok.kind == T_LPAREN ||
+                  ps->tok.kind == T_BANG ||
+                  (ps->tok.kind == T_IDENT && ps->tok.val.kind == V_FLOAT);
+    pp_unget(ps);
+    if (!isbool)
+        return true;
+    return pp_float(ps) != 0;
+}

@@ -1,0 +1,207 @@
+/* SPDX-License-Identifier: MIT */
+/*
+** text.c: the glyph outlines of a text object, through FreeType.
+**
+** Each glyph's outline (in font units, scaled so that one em is 1 unit as
+** POV-Ray scales it) is flattened to segments, one group per contour, and
+** placed along the baseline by the glyph advance, kerning and the
+** object's 'offset'. sweep.c extrudes the result from z = 0 to z =
+** thickness, so text is an exact prism of the flattened outline rather
+** than a triangle mesh.
+*/
+#include "config.h"
+
+#include "geometry/geom.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include <ft2build.h>
+#include FT_FREETYPE_H
+#include FT_OUTLINE_H
+
+/* Straight pieces per quadratic or cubic outline arc: the chord error is
+** about 1/(8·64) of the arc's bulge, invisible at text sizes. */
+#define ARC_STEPS 8
+
+/* Where POV-Ray's own fonts live on Debian (povray-includes). */
+#define POV_FONT_DIR "/usr/share/povray-3.7/include/"
+
+struct outline_ctx {
+    struct geom_profile *p;
+    double scale, dx, dy;
+    iris_vec2 cur, first;
+    bool open, ok;
+};
+
+static iris_vec2 pt(const struct outline_ctx *c, const FT_Vector *v)
+{
+    iris_vec2 r = { c->dx + v->x * c->scale, c->dy + v->y * c->scale };
+    return r;
+}
+
+static void line(struct outline_ctx *c, iris_vec2 b)
+{
+    if (c->ok && !geom_profile_add(c->p, c->cur, b))
+        c->ok = false;
+    c->cur = b;
+}
+
+static void close_contour(struct outline_ctx *c)
+{
+    if (c->open) {
+        line(c, c->first);
+        if (c->ok && !geom_profile_close_group(c->p))
+            c->ok = false;
+    }
+    c->open = false;
+}
+
+static int move_to(const FT_Vector *to, void *user)
+{
+    struct outline_ctx *c = user;
+    close_contour(c);
+    c->cur = c->first = pt(c, to);
+    c->open = true;
+    return 0;
+}
+
+static int line_to(const FT_Vector *to, void *user)
+{
+    struct outline_ctx *c = user;
+    line(c, pt(c, to));
+    return 0;
+}
+
+static int conic_to(const FT_Vector *ctl, const FT_Vector *to, void *user)
+{
+    struct outline_ctx *c = user;
+    iris_vec2 a = c->cur, b = pt(c, ctl), e = pt(c, to);
+    for (int i = 1; i <= ARC_STEPS; i++) {
+        double s = (double)i / ARC_STEPS, r = 1 - s;
+        iris_vec2 q = { r * r * a.u + 2 * r * s * b.u + s * s * e.u,
+                        r * r * a.v + 2 * r * s * b.v + s * s * e.v };
+        line(c, q);
+    }
+    return 0;
+}
+
+static int cubic_to(const FT_Vector *c1, const FT_Vector *c2,
+                    const FT_Vector *to, void *user)
+{
+    struct outline_ctx *c = user;
+    iris_vec2 a = c->cur, b = pt(c, c1), d = pt(c, c2), e = pt(c, to);
+    for (int i = 1; i <= ARC_STEPS; i++) {
+        double s = (double)i / ARC_STEPS, r = 1 - s;
+        double w0 = r * r * r, w1 = 3 * r * r * s, w2 = 3 * r * s * s;
+        double w3 = s * s * s;
+        iris_vec2 q = { w0 * a.u + w1 * b.u + w2 * d.u + w3 * e.u,
+                        w0 * a.v + w1 * b.v + w2 * d.v + w3 * e.v };
+        line(c, q);
+    }
+    return 0;
+}
+
+/* Next code point of UTF-8 string '*s' (invalid bytes read as Latin-1). */
+static unsigned long utf8_next(const unsigned char **s)
+{
+    const unsigned char *p = *s;
+    unsigned long c = *p++;
+    int extra = c >= 0xf0 ? 3 : c >= 0xe0 ? 2 : c >= 0xc0 ? 1 : 0;
+    unsigned long v = extra == 3 ? c & 7 : extra == 2 ? c & 15 : c & 31;
+    if (extra == 0) {
+        *s = p;
+        return c;
+    }
+    for (int i = 0; i < extra; i++) {
+        if ((p[i] & 0xc0) != 0x80) {
+            *s = *s + 1;
+            return c;
+        }
+        v = (v << 6) | (p[i] & 0x3f);
+    }
+    *s = p + extra;
+    return v;
+}
+
+/* Opens the font file, trying POV-Ray's font directory for bare names. */
+static FT_Error open_face(FT_Library lib, const char *path, FT_Face *face)
+{
+    FT_Error e = FT_New_Face(lib, path, 0, face);
+    if (!e)
+        return 0;
+    const char *base = strrchr(path, '/');
+    base = base ? base + 1 : path;
+    char buf[1024];
+    snprintf(buf, sizeof buf, "%s%s", POV_FONT_DIR, base);
+    return FT_New_Face(lib, buf, 0, face);
+}
+
+struct geom_profile *geom_text_profile(const iris_object *o, const char **why)
+{
+    *why = NULL;
+    if (!o->u.text.font || !o->u.text.string) {
+        *why = "text has no font or string";
+        return NULL;
+    }
+    FT_Library lib;
+    if (FT_Init_FreeType(&lib)) {
+        *why = "FreeType cannot start";
+        return NULL;
+    }
+    FT_Face face;
+    if (open_face(lib, o->u.text.font, &face)) {
+        FT_Done_FreeType(lib);
+        *why = "cannot open the font file";
+        return NULL;
+    }
+    struct geom_profile *p = geom_profile_new(256);
+    struct outline_ctx c = { .p = p, .ok = p != NULL };
+    c.scale = face->units_per_EM > 0 ? 1.0 / face->units_per_EM : 1.0 / 2048;
+    FT_Outline_Funcs fns = { move_to, line_to, conic_to, cubic_to, 0, 0 };
+
+    double x = 0, y = 0;
+    FT_UInt prev = 0;
+    const unsigned char *s = (const unsigned char *)o->u.text.string;
+    while (*s && c.ok) {
+        unsigned long ch = utf8_next(&s);
+        FT_UInt gi = FT_Get_Char_Index(face, ch);
+        if (prev && gi && FT_HAS_KERNING(face)) {
+            FT_Vector k;
+            if (!FT_Get_Kerning(face, prev, gi, FT_KERNING_UNSCALED, &k))
+                x += k.x * c.scale;
+        }
+        if (FT_Load_Glyph(face, gi, FT_LOAD_NO_SCALE | FT_LOAD_NO_HINTING))
+            continue;
+        if (face->glyph->format == FT_GLYPH_FORMAT_OUTLINE) {
+            c.dx = x;
+            c.dy = y;
+            c.open = false;
+            FT_Outline_Decompose(&face->glyph->outline, &fns, &c);
+            close_contour(&c);
+        }
+        x += face->glyph->advance.x * c.scale + o->u.text.offset.x;
+        y += o->u.text.offset.y;
+        prev = gi;
+    }
+    FT_Done_Face(face);
+    FT_Done_FreeType(lib);
+    if (!c.ok) {
+        geom_profile_free(p);
+        *why = "out of memory";
+        return NULL;
+    }
+    geom_profile_finish(p);
+    if (p->n_seg == 0) {
+        geom_profile_free(p);
+        *why = "the text has no visible glyphs";
+        return NULL;
+    }
+    double th = o->u.text.thickness;
+    p->h1 = fmin(0, th);
+    p->h2 = fmax(0, th);
+    if (p->h1 == p->h2)
+        p->h2 = 1e-6; /* a zero thickness still shows the face */
+    return p;
+}

@@ -1,0 +1,42 @@
+/* SPDX-License-Identifier: MIT */
+/*
+** trace.h: the transport of one photon at one wavelength (trace.c).
+*/
+#ifndef IRIS_PHOTON_TRACE_H
+#define IRIS_PHOTON_TRACE_H
+
+#include <stdbool.h>
+
+#include "photon/pmap.h"
+#include "util/rng.h"
+
+#define PTRACE_MAX_STACK 16
+
+/* What stays fixed for all photons of one light x target pair. */
+struct ptrace_combo {
+    const iris_light *light;
+    const iris_object *target;
+    bool parallel;             /* no D^2 in the stored power */
+    double fade_distance, fade_power; /* the light's fade */
+    int max_level;             /* photon max_trace_level */
+    int n_stack;               /* interiors containing the light */
+    const iris_object *stack[PTRACE_MAX_STACK];
+};
+
+/* A growable buffer of raw photons (one per batch). */
+struct ptrace_out {
+    struct pstore_raw *ph;
+    size_t n, cap;
+    bool failed;               /* an allocation failed */
+};
+
+/*
+** Traces one photon from 'o' along unit 'd' at 'lambda' with power
+** 'power' (before the D^2 factor), depositing into 'out'. 'r' supplies
+** the Russian-roulette numbers.
+*/
+void ptrace_photon(const struct pmap_world *w, const struct ptrace_combo *c,
+                   vec3 o, vec3 d, double lambda, double power, rng *r,
+                   struct ptrace_out *out);
+
+#endif

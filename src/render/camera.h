@@ -1,0 +1,28 @@
+/* SPDX-License-Identifier: MIT */
+/*
+** camera.h: primary rays from the resolved camera (semantics §3.8).
+**
+** Pixel coordinates are POV-Ray's: (x, y) with x to the right and y down,
+** the centre of pixel (i, j) at (i, j); AA samples use fractional values.
+** The perspective ray through (x, y) of a W x H image has direction
+** D + x0 R + y0 U with x0 = (x + 0.5)/W - 0.5, y0 = 0.5 - (y + 0.5)/H.
+**
+** Depends on: math. Used by: render.
+*/
+#ifndef IRIS_RENDER_CAMERA_H
+#define IRIS_RENDER_CAMERA_H
+
+#include <stdbool.h>
+
+#include "accel/accel.h"
+#include "iris/scene.h"
+
+/*
+** Sets '*r' to the camera ray through image point (x, y). Returns false
+** where the camera has no ray (outside a fisheye's circle): the sample
+** is then background-free black, as POV-Ray leaves it.
+*/
+bool camera_ray(const iris_camera *cam, int width, int height, double x,
+                double y, ray *r);
+
+#endif
