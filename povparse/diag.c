@@ -187,7 +187,8 @@ _Noreturn void pp_error_at(pp_state *ps, uint32_t file, uint32_t off,
     fill_diag(ps, &d, IRIS_SEV_ERROR, file, off, len, fmt, ap);
     va_end(ap);
     push_diag(ps, &d);
-    ps->fail_status = IRIS_EPARSE;
+    if (!ps->fail_status)
+        ps->fail_status = IRIS_EPARSE;
     longjmp(ps->jb, 1);
 }
 
@@ -203,7 +204,8 @@ _Noreturn void pp_error(pp_state *ps, const pp_token *at, const char *fmt,
         fill_diag(ps, &d, IRIS_SEV_ERROR, UINT32_MAX, 0, 0, fmt, ap);
     va_end(ap);
     push_diag(ps, &d);
-    ps->fail_status = IRIS_EPARSE;
+    if (!ps->fail_status)
+        ps->fail_status = IRIS_EPARSE;
     longjmp(ps->jb, 1);
 }
 
@@ -224,7 +226,7 @@ void pp_warning(pp_state *ps, const pp_token *at, const char *fmt, ...)
 
 void pp_warn_once(pp_state *ps, const pp_token *at, int kw, const char *what)
 {
-    if (kw < 0 || kw >= T_COUNT || ps->warned[kw])
+    if (kw < 0 || kw >= T_NUM_TOKENS || ps->warned[kw])
         return;
     ps->warned[kw] = 1;
     pp_warning(ps, at, "%s is parsed but not rendered", what);
@@ -276,4 +278,19 @@ const char *pp_tok_name(pp_state *ps, const pp_token *t, char *buf, size_t n)
         return buf;
     }
     return "token";
+}
+
+_Noreturn void pp_unexpected(pp_state *ps, const pp_token *at,
+                             const char *where)
+{
+    char buf[80];
+    if (at->kind == T_IDENT && at->val.kind == V_NONE)
+        pp_error(ps, at, "undeclared identifier '%.*s' in %s", (int)at->len,
+                 pp_tok_text(ps, at), where);
+    if (at->kind == T_IDENT)
+        pp_error(ps, at, "unexpected %s identifier '%.*s' in %s",
+                 pp_kind_name(at->val.kind), (int)at->len,
+                 pp_tok_text(ps, at), where);
+    pp_error(ps, at, "unexpected %s in %s",
+             pp_tok_name(ps, at, buf, sizeof buf), where);
 }

@@ -36,7 +36,7 @@ static void ident(pp_state *ps, const char *what)
 /* Parses '(' float ')' as the condition of #if/#while/#case. */
 static double cond_value(pp_state *ps)
 {
-    return pp_float(ps);
+    return pp_full_float(ps);
 }
 
 /* Assigns 'v' to array element [..] of 'arr'; reads the indices. */
@@ -60,6 +60,16 @@ static pp_value *array_slot(pp_state *ps, pp_array *arr)
 /* #declare / #local Name [index...] = rvalue [;] */
 static void do_declare(pp_state *ps, bool local)
 {
+    /* #declare deprecated [once] "message" Name = ... */
+    ps->no_expand++;
+    pp_next(ps);
+    ps->no_expand--;
+    if (ps->tok.kind == T_DEPRECATED) {
+        pp_accept(ps, T_ONCE);
+        pp_string(ps);
+    } else {
+        pp_unget(ps);
+    }
     ident(ps, "declared");
     pp_token name = ps->tok;
     const char *text = pp_tok_text(ps, &name);
@@ -290,8 +300,8 @@ void pp_call_macro(pp_state *ps, const pp_macro *m, const pp_token *call)
             if (ps->tok.kind == T_IDENT && ps->tok.val.kind != V_MACRO) {
                 pp_token id = ps->tok;
                 pp_next(ps);
-                if ((ps->tok.kind == T_COMMA || ps->tok.kind == T_RPAREN) &&
-                    id.sym) {
+                if (ps->tok.kind == T_COMMA || ps->tok.kind == T_RPAREN) {
+                    /* an undeclared identifier arrives undefined */
                     refs[n] = id.sym;
                     vals[n] = id.val;
                     n++;
@@ -561,7 +571,7 @@ static void do_message(pp_state *ps, int kind, const pp_token *at)
 }
 
 /* #default { texture | pigment | finish | normal } */
-static void do_default(pp_state *ps)
+void pp_default_block(pp_state *ps)
 {
     pp_expect(ps, T_LBRACE, "'{'");
     for (;;) {
@@ -695,11 +705,11 @@ void pp_directive(pp_state *ps, const pp_token *hash)
         double v = pp_float(ps);
         ps->version = v;
         ps->scene->version = v;
-        if (!pp_next_is_directive(ps) && !pp_accept(ps, T_SEMI))
-            ;
+        if (!pp_next_is_directive(ps))
+            pp_accept(ps, T_SEMI);
         return;
     }
-    case T_DEFAULT: do_default(ps); return;
+    case T_DEFAULT: pp_default_block(ps); return;
     case T_DEBUG: case T_WARNING: case T_ERROR: case T_RENDER:
     case T_STATISTICS:
         do_message(ps, kw.kind, &at);
@@ -717,6 +727,13 @@ void pp_directive(pp_state *ps, const pp_token *hash)
     case T_WRITE: do_write(ps); return;
     default: {
         char buf[80];
+        if (kw.kind < T_KW_FIRST && kw.kind != T_IDENT && kw.kind != T_EOF &&
+            kw.file == ps->frames[ps->n_frames - 1].file) {
+            /* POV-Ray ignores a '#' before punctuation; read it again */
+            pp_warning(ps, hash, "stray '#' ignored");
+            ps->frames[ps->n_frames - 1].pos = kw.off;
+            return;
+        }
         pp_error(ps, &at, "unknown directive #%s",
                  pp_tok_name(ps, &kw, buf, sizeof buf));
     }

@@ -21,6 +21,7 @@
 #include "pp.h"
 
 static pp_value expr_cond(pp_state *ps);
+static pp_value expr_add(pp_state *ps);
 
 static pp_value fval(double f)
 {
@@ -168,7 +169,6 @@ static uint64_t splitmix(uint64_t *s)
 static const char *fmt_float(pp_state *ps, double f, int len, int prec)
 {
     char buf[512];
-    char fmtb[32];
     bool zero = len < 0;
     int w = len < 0 ? -len : len;
     if (w > 200)
@@ -176,10 +176,11 @@ static const char *fmt_float(pp_state *ps, double f, int len, int prec)
     if (prec > 100)
         prec = 100;
     if (prec < 0)
-        snprintf(fmtb, sizeof fmtb, zero ? "%%0%df" : "%%%df", w);
+        prec = 6;
+    if (zero)
+        snprintf(buf, sizeof buf, "%0*.*f", w, prec, f);
     else
-        snprintf(fmtb, sizeof fmtb, zero ? "%%0%d.%df" : "%%%d.%df", w, prec);
-    snprintf(buf, sizeof buf, fmtb, f);
+        snprintf(buf, sizeof buf, "%*.*f", w, prec, f);
     return pp_strdup(ps, buf, strlen(buf));
 }
 
@@ -500,21 +501,26 @@ static pp_value factor(pp_state *ps)
         return v;
     }
     case T_LT: {
-        bool iv = ps->in_vector;
-        ps->in_vector = true;
+        /* POV-Ray reads each component as a float (no comparisons) and
+        ** the commas between them are optional */
         pp_value v;
         memset(&v, 0, sizeof v);
         int n = 0;
-        do {
-            pp_value c = expr_cond(ps);
+        for (;;) {
+            pp_token ct = ps->tok;
+            pp_value c = expr_add(ps);
             if (c.kind != V_FLOAT)
-                pp_error(ps, &at, "vector components must be floats");
+                pp_error(ps, &ct, "vector components must be floats");
             if (n >= 5)
                 pp_error(ps, &at, "a vector has at most 5 components");
             v.v[n++] = c.v[0];
-        } while (pp_accept(ps, T_COMMA));
-        ps->in_vector = iv;
-        pp_expect(ps, T_GT, "'>' to close the vector");
+            pp_next(ps);
+            if (ps->tok.kind == T_COMMA)
+                pp_next(ps);
+            if (ps->tok.kind == T_GT)
+                break;
+            pp_unget(ps);
+        }
         if (n < 2)
             pp_error(ps, &at, "a vector needs at least 2 components");
         v.kind = V_VECTOR;
@@ -881,8 +887,8 @@ static pp_value factor(pp_state *ps)
     }
     case T_CHR: {
         int c = (int)arg1(ps);
-        char b[2] = { (char)(c > 0 && c < 256 ? c : ' '), 0 };
-        return sval(pp_strdup(ps, b, 1));
+        char ch[2] = { (char)(c > 0 && c < 256 ? c : ' '), 0 };
+        return sval(pp_strdup(ps, ch, 1));
     }
     case T_SUBSTR: {
         lparen(ps);
@@ -1088,7 +1094,7 @@ double pp_float(pp_state *ps)
     pp_next(ps);
     pp_token at = ps->tok;
     pp_unget(ps);
-    pp_value v = expr_cond(ps);
+    pp_value v = expr_add(ps);
     need_numeric(ps, &at, &v);
     if (v.dim != 1)
         pp_error(ps, &at, "expected a float, found a %d-component vector",
@@ -1101,7 +1107,7 @@ iris_vec3 pp_vector(pp_state *ps)
     pp_next(ps);
     pp_token at = ps->tok;
     pp_unget(ps);
-    pp_value v = expr_cond(ps);
+    pp_value v = expr_add(ps);
     need_numeric(ps, &at, &v);
     pp_value_promote(&v, 3);
     iris_vec3 r = { v.v[0], v.v[1], v.v[2] };
@@ -1113,7 +1119,7 @@ iris_vec2 pp_vector2(pp_state *ps)
     pp_next(ps);
     pp_token at = ps->tok;
     pp_unget(ps);
-    pp_value v = expr_cond(ps);
+    pp_value v = expr_add(ps);
     need_numeric(ps, &at, &v);
     pp_value_promote(&v, 2);
     iris_vec2 r = { v.v[0], v.v[1] };
@@ -1125,7 +1131,7 @@ void pp_vector4(pp_state *ps, double out[4])
     pp_next(ps);
     pp_token at = ps->tok;
     pp_unget(ps);
-    pp_value v = expr_cond(ps);
+    pp_value v = expr_add(ps);
     need_numeric(ps, &at, &v);
     pp_value_promote(&v, 4);
     for (int i = 0; i < 4; i++)
@@ -1166,7 +1172,7 @@ const char *pp_string(pp_state *ps)
     pp_next(ps);
     pp_token at = ps->tok;
     pp_unget(ps);
-    pp_value v = expr_cond(ps);
+    pp_value v = expr_add(ps);
     if (v.kind != V_STRING)
         pp_error(ps, &at, "expected a string, found a %s",
                  pp_kind_name(v.kind));
@@ -1188,4 +1194,14 @@ bool pp_bool_opt(pp_state *ps)
     if (!isbool)
         return true;
     return pp_float(ps) != 0;
+}
+
+double pp_full_float(pp_state *ps)
+{
+    pp_next(ps);
+    pp_token at = ps->tok;
+    pp_unget(ps);
+    pp_value v = expr_cond(ps);
+    need_numeric(ps, &at, &v);
+    return v.v[0];
 }

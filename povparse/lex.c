@@ -16,7 +16,7 @@
 
 #include "pp.h"
 
-static const char *const kw_names[T_COUNT] = {
+static const char *const kw_names[T_NUM_TOKENS] = {
 #define TOK(name, word) [T_##name] = word,
 #define ALIAS(name, word)
 #include "tokens.def"
@@ -56,7 +56,7 @@ void lex_init_keywords(pp_state *ps)
     ps->kw_mask = size - 1;
     ps->kw_hash = pp_salloc(ps, size * sizeof *ps->kw_hash);
     ps->kw_name = pp_salloc(ps, size * sizeof *ps->kw_name);
-    for (int k = T_KW_FIRST + 1; k < T_COUNT; k++)
+    for (int k = T_KW_FIRST + 1; k < T_NUM_TOKENS; k++)
         kw_insert(ps, kw_names[k], k);
     for (size_t i = 0; i < sizeof kw_aliases / sizeof kw_aliases[0]; i++)
         kw_insert(ps, kw_aliases[i].word, kw_aliases[i].kind);
@@ -64,7 +64,7 @@ void lex_init_keywords(pp_state *ps)
 
 const char *lex_keyword_name(int kind)
 {
-    if (kind > T_KW_FIRST && kind < T_COUNT)
+    if (kind > T_KW_FIRST && kind < T_NUM_TOKENS)
         return kw_names[kind];
     return NULL;
 }

@@ -10,7 +10,7 @@
 ** Every error goes through pp_error(), which longjmps to the single setjmp
 ** in parse.c; all memory is in arenas or in tables parse.c frees.
 **
-** Depends on: include/iris/*.h, src/util, src/math. Nothing else.
+** Depends on: the public headers in include/iris, src/util and src/math.
 */
 #ifndef IRIS_POVPARSE_PP_H
 #define IRIS_POVPARSE_PP_H
@@ -40,7 +40,7 @@ enum pp_tok {
 #include "tokens.def"
 #undef TOK
 #undef ALIAS
-    T_COUNT
+    T_NUM_TOKENS
 };
 
 
@@ -293,6 +293,9 @@ void pp_warning(pp_state *ps, const pp_token *at, const char *fmt, ...)
 /* Warns once per token kind 'kw' that a feature is parsed but ignored. */
 void pp_warn_once(pp_state *ps, const pp_token *at, int kw, const char *what);
 _Noreturn void pp_nomem(pp_state *ps);
+/* "unexpected X in 'where'", or "undeclared identifier". */
+_Noreturn void pp_unexpected(pp_state *ps, const pp_token *at,
+                             const char *where);
 iris_loc pp_loc(pp_state *ps, const pp_token *t);
 void pp_line_col(pp_state *ps, uint32_t file, uint32_t off,
                  unsigned *line, unsigned *col);
@@ -332,6 +335,7 @@ void pp_raw(pp_state *ps, pp_token *t);
 /* Runs the directive whose keyword follows '#' (directive.c). */
 void pp_directive(pp_state *ps, const pp_token *hash);
 void pp_call_macro(pp_state *ps, const pp_macro *m, const pp_token *call);
+void pp_default_block(pp_state *ps);   /* after #default or default */
 
 /* ---- symtab.c ----------------------------------------------------- */
 void sym_push_scope(pp_state *ps);
@@ -346,7 +350,8 @@ const char *pp_tok_text(pp_state *ps, const pp_token *t);
 
 /* ---- expr.c ------------------------------------------------------- */
 pp_value pp_expr(pp_state *ps);       /* numeric or string expression */
-double pp_float(pp_state *ps);
+double pp_float(pp_state *ps);        /* POV-Ray's Parse_Float: no <, = */
+double pp_full_float(pp_state *ps);         /* a full expression as a float */
 iris_vec3 pp_vector(pp_state *ps);
 iris_vec2 pp_vector2(pp_state *ps);
 void pp_vector4(pp_state *ps, double out[4]);

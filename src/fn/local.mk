@@ -1,1 +1,2 @@
 ## src/fn: the evaluator of compiled SDL functions.
+libiris_core_la_SOURCES += %reldir%/fn.c

@@ -337,6 +337,7 @@ const char *geom_validate(const iris_object *o)
     case IRIS_OBJ_ISOSURFACE:
         if (!o->u.isosurface.fn)
             return "isosurface has no function";
+
         return NULL;
     default:
         return NULL;

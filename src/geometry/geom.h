@@ -158,6 +158,7 @@ void geom_isosurface_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
                           double t1, struct isect_list *out);
 bool geom_isosurface_inside(const iris_object *o, vec3 p);
 
+
 /* Whether the box lo..hi is hit by o + t·d for some t in [t0, t1];
 ** narrows [t0, t1] to the part inside the box. */
 bool geom_clip_box(vec3 lo, vec3 hi, vec3 o, vec3 d, double *t0, double *t1);

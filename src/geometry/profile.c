@@ -311,32 +311,90 @@ static bool add_sor(struct geom_profile *p, const iris_object *o)
     return true;
 }
 
+/* Whether two profile points coincide (POV-Ray's EPSILON, 1e-10). */
+static bool same_point(iris_vec2 a, iris_vec2 b)
+{
+    return fabs(a.u - b.u) < 1e-10 && fabs(a.v - b.v) < 1e-10;
+}
+
+/* Adds spline segment 'i' of 'P' flattened, as add_spline does. */
+static bool add_segment(struct geom_profile *p, enum iris_spline sp,
+                        const iris_vec2 *P, int i)
+{
+    iris_vec2 c[4], a, ta;
+    seg_coeffs(sp, P, i, c);
+    int steps = sp == IRIS_SPLINE_LINEAR ? 1 : SEG_STEPS;
+    seg_eval(c, 0, &a, &ta);
+    for (int j = 1; j <= steps; j++) {
+        iris_vec2 b, tb;
+        seg_eval(c, (double)j / steps, &b, &tb);
+        if (!geom_profile_add_curved(p, a, b, ta, tb))
+            return false;
+        a = b;
+        ta = tb;
+    }
+    return true;
+}
+
 /*
-** prism: sub-polygons end where a point repeats the first point of its
-** sub-polygon (linear spline). Other splines are flattened over the whole
-** point list; approximation: their sub-polygon rules are not applied.
+** prism: POV-Ray's walk over the points (prism.cpp Compute_Prism). A
+** sub-polygon ends when a segment reaches its first point (P[0] of the
+** linear spline, the first non-control point P[1] of the quadratic and
+** cubic ones); the points that follow start the next one, after skipping
+** the closing control points. Bezier segments take four points each.
 */
 static bool add_prism(struct geom_profile *p, const iris_object *o)
 {
     const iris_vec2 *P = o->u.prism.points;
     int n = o->u.prism.n_points;
-    if (o->u.prism.spline != IRIS_SPLINE_LINEAR)
-        return add_spline(p, o->u.prism.spline, P, n) &&
-               geom_profile_close_group(p);
-    int start = 0;
-    for (int i = 1; i < n; i++) {
-        if (!geom_profile_add(p, P[i - 1], P[i]))
+    enum iris_spline sp = o->u.prism.spline;
+    /* Points a segment needs beyond its first index */
+    int need = sp == IRIS_SPLINE_LINEAR ? 1 : sp == IRIS_SPLINE_QUADRATIC ? 2
+                                                                          : 3;
+    iris_vec2 first = sp == IRIS_SPLINE_LINEAR || sp == IRIS_SPLINE_BEZIER
+                          ? P[0] : P[1];
+    bool closed = false;
+    for (int i = 0; i < n - 1 && i + need < n; i++) {
+        if (!add_segment(p, sp, P, i))
             return false;
-        if (P[i].u == P[start].u && P[i].v == P[start].v) {
-            if (!geom_profile_close_group(p))
-                return false;
-            start = i + 1;
-            i++;
+        closed = false;
+        switch (sp) {
+        case IRIS_SPLINE_LINEAR:
+            if (same_point(P[i + 1], first)) {
+                i++;
+                if (i + 1 < n)
+                    first = P[i + 1];
+                closed = true;
+            }
+            break;
+        case IRIS_SPLINE_QUADRATIC:
+        case IRIS_SPLINE_CUBIC:
+            if (same_point(P[i + 2], first)) {
+                i += sp == IRIS_SPLINE_QUADRATIC ? 2 : 3;
+                if (i + 2 < n)
+                    first = P[i + 2];
+                closed = true;
+            }
+            break;
+        case IRIS_SPLINE_BEZIER:
+            i += 3;
+            closed = true;
+            break;
         }
+        if (closed && sp != IRIS_SPLINE_BEZIER &&
+            !geom_profile_close_group(p))
+            return false;
     }
-    /* An unclosed last sub-polygon is closed, as POV-Ray does */
-    if (start < n - 1 && !geom_profile_add(p, P[n - 1], P[start]))
-        return false;
+    /* POV-Ray closes an open linear prism with a last segment */
+    if (!closed && sp == IRIS_SPLINE_LINEAR) {
+        int g_first = 0;
+        if (p->n_groups > 0)
+            g_first = p->group_first[p->n_groups - 1] +
+                      p->group_count[p->n_groups - 1];
+        if (g_first < p->n_seg &&
+            !geom_profile_add(p, p->b[p->n_seg - 1], p->a[g_first]))
+            return false;
+    }
     return geom_profile_close_group(p);
 }
 

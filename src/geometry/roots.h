@@ -8,6 +8,8 @@
 ** safeguarded Newton/bisection refines each bracket to full precision.
 ** It never loses a simple root the way closed-form quartic formulas can
 ** when coefficients cancel, which matters for thin tori seen edge-on.
+** POV-Ray's 'sturm' keyword asks for exactly this robustness, so it needs
+** no separate path: every object gets it.
 */
 #ifndef IRIS_GEOMETRY_ROOTS_H
 #define IRIS_GEOMETRY_ROOTS_H

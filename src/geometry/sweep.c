@@ -80,7 +80,8 @@ void geom_lathe_hits(const struct geom_profile *p, vec3 ro, vec3 rd,
                 double y = o.y + ts[j] * d.y;
                 double r = A0 + k * y;
                 double s = (y - y0) / (y1 - y0);
-                if (s < 0 || s > 1 || (r0 >= 0 && r1 >= 0 && r < 0))
+                /* Half-open, so a crossing at a shared end counts once */
+                if (s < 0 || s >= 1 || (r0 >= 0 && r1 >= 0 && r < 0))
                     ts[j] = NAN;
             }
         }
@@ -241,7 +242,8 @@ void geom_extrude_hits(const struct geom_profile *p, int axis, vec3 ro,
                 double pu = (ou + t * du) / h - A.u, pv = (ov + t * dv) / h - A.v;
                 s = (pu * eu + pv * ev) / (eu * eu + ev * ev);
             }
-            if (!(t > ta && t < tb) || s < 0 || s > 1)
+            /* Half-open, so a crossing at a shared corner counts once */
+            if (!(t > ta && t < tb) || s < 0 || s >= 1)
                 continue;
             iris_vec2 n2 = seg_normal(p, i, s);
             vec3 n = join(n2.u, n2.v, 0, axis);

@@ -32,7 +32,10 @@ void geom_torus_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
     double h2 = rb * rb - v3_len2(p);
     if (h2 <= 0)
         return;
-    double h = sqrt(h2);
+    /* Widen by 1e-9 so that roots on the sphere itself (a ray through the
+    ** equator meets the outer rim exactly at distance R + r) stay inside
+    ** the open interval the solver searches */
+    double h = sqrt(h2) + 1e-9 * rb;
     double lo = fmax(-h, t0 * dl - s), hi = fmin(h, t1 * dl - s);
     if (!(lo < hi))
         return;

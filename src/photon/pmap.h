@@ -12,6 +12,7 @@
 #define IRIS_PHOTON_PMAP_H
 
 #include <stdbool.h>
+#include <stdio.h> /* accel.h uses FILE */
 
 #include "accel/accel.h"
 #include "photon/photon.h"

@@ -94,8 +94,8 @@ void spec_rgb_to_xyz(const double rgb[3], double xyz[3])
 
 double spec_reflectance(const double rgb[3], double lambda)
 {
-    int i;
-    double t;
+    int i = 0;
+    double t = 0.0;
     if (lambda < SPEC_LAMBDA_MIN)
         lambda = SPEC_LAMBDA_MIN;
     if (lambda > SPEC_LAMBDA_MAX || lambda != lambda)

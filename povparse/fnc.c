@@ -1,0 +1,413 @@
+/* SPDX-License-Identifier: MIT */
+/*
+** fnc.c: the compiler of 'function { ... }' bodies into the stack code of
+** fn.h.
+**
+** The body grammar is the float expression grammar of expr.c; names are
+** resolved at compile time: parameters become PARAM, declared floats are
+** folded to constants (POV-Ray does the same: a function captures values,
+** not variables), other functions become CALL, and internal(N) becomes
+** INTERNAL, which passes the caller's arguments through.
+*/
+#include "config.h"
+
+#include <math.h>
+#include <string.h>
+
+#include "pp.h"
+
+#define MAX_CODE 65536
+
+typedef struct fnc {
+    pp_state *ps;
+    iris_fn_insn *code;
+    int n, cap;
+    int depth, max_depth;
+    int n_params;
+    const char *params[32];
+    bool default_params;
+} fnc;
+
+static void emit(fnc *c, enum iris_fn_op op, int arg, int nargs, double value,
+                 int stack_delta)
+{
+    if (c->n == c->cap) {
+        if (c->cap >= MAX_CODE)
+            pp_error(c->ps, &c->ps->tok, "function body too long");
+        int nc = c->cap ? c->cap * 2 : 64;
+        iris_fn_insn *code = pp_salloc(c->ps, (size_t)nc * sizeof *code);
+        if (c->n)
+            memcpy(code, c->code, (size_t)c->n * sizeof *code);
+        c->code = code;
+        c->cap = nc;
+    }
+    iris_fn_insn *i = &c->code[c->n++];
+    memset(i, 0, sizeof *i);
+    i->op = op;
+    i->arg = arg;
+    i->nargs = nargs;
+    i->value = value;
+    c->depth += stack_delta;
+    if (c->depth > c->max_depth)
+        c->max_depth = c->depth;
+}
+
+static void cexpr(fnc *c);
+
+/* The index of parameter named by token 't', or -1. */
+static int param_index(fnc *c, const pp_token *t)
+{
+    pp_state *ps = c->ps;
+    if (c->default_params) {
+        switch (t->kind) {
+        case T_X: case T_U: return 0;
+        case T_Y: case T_V: return 1;
+        case T_Z: return 2;
+        default: return -1;
+        }
+    }
+    if (t->kind != T_IDENT && t->kind < T_KW_FIRST)
+        return -1;
+    const char *s = pp_tok_text(ps, t);
+    for (int i = 0; i < c->n_params; i++)
+        if (strlen(c->params[i]) == t->len &&
+            memcmp(c->params[i], s, t->len) == 0)
+            return i;
+    return -1;
+}
+
+static int args(fnc *c)
+{
+    pp_state *ps = c->ps;
+    int n = 0;
+    pp_expect(ps, T_LPAREN, "'('");
+    if (pp_accept(ps, T_RPAREN))
+        return 0;
+    do {
+        cexpr(c);
+        n++;
+    } while (pp_accept(ps, T_COMMA));
+    pp_expect(ps, T_RPAREN, "')'");
+    return n;
+}
+
+static int builtin_of(int k, int *arity)
+{
+    *arity = 1;
+    switch (k) {
+    case T_ABS: return IRIS_FB_ABS;
+    case T_ACOS: return IRIS_FB_ACOS;
+    case T_ACOSH: return IRIS_FB_ACOSH;
+    case T_ASIN: return IRIS_FB_ASIN;
+    case T_ASINH: return IRIS_FB_ASINH;
+    case T_ATAN: return IRIS_FB_ATAN;
+    case T_ATANH: return IRIS_FB_ATANH;
+    case T_CEIL: return IRIS_FB_CEIL;
+    case T_COS: return IRIS_FB_COS;
+    case T_COSH: return IRIS_FB_COSH;
+    case T_DEGREES: return IRIS_FB_DEGREES;
+    case T_EXP: return IRIS_FB_EXP;
+    case T_FLOOR: return IRIS_FB_FLOOR;
+    case T_INT: return IRIS_FB_INT;
+    case T_LN: return IRIS_FB_LN;
+    case T_LOG: return IRIS_FB_LOG;
+    case T_RADIANS: return IRIS_FB_RADIANS;
+    case T_SIN: return IRIS_FB_SIN;
+    case T_SINH: return IRIS_FB_SINH;
+    case T_SQRT: return IRIS_FB_SQRT;
+    case T_SQR: return IRIS_FB_SQR;
+    case T_TAN: return IRIS_FB_TAN;
+    case T_TANH: return IRIS_FB_TANH;
+    case T_ATAN2: *arity = 2; return IRIS_FB_ATAN2;
+    case T_DIV: *arity = 2; return IRIS_FB_DIV;
+    case T_MOD: *arity = 2; return IRIS_FB_MOD;
+    case T_POW: *arity = 2; return IRIS_FB_POW;
+    case T_MAX: *arity = -1; return IRIS_FB_MAX;
+    case T_MIN: *arity = -1; return IRIS_FB_MIN;
+    case T_BITWISE_AND: *arity = -1; return IRIS_FB_BITWISE_AND;
+    case T_BITWISE_OR: *arity = -1; return IRIS_FB_BITWISE_OR;
+    case T_BITWISE_XOR: *arity = -1; return IRIS_FB_BITWISE_XOR;
+    default: return -1;
+    }
+}
+
+static void cfactor(fnc *c)
+{
+    pp_state *ps = c->ps;
+    pp_next(ps);
+    pp_token at = ps->tok;
+    int k = at.kind;
+    int pi = param_index(c, &at);
+    if (pi >= 0) {
+        emit(c, IRIS_FN_PARAM, pi, 0, 0, 1);
+        return;
+    }
+    int arity;
+    int b = builtin_of(k, &arity);
+    if (b >= 0) {
+        int n = args(c);
+        if (arity > 0 && n != arity)
+            pp_error(ps, &at, "%s takes %d argument%s", lex_keyword_name(k),
+                     arity, arity > 1 ? "s" : "");
+        if (arity < 0 && n < 1)
+            pp_error(ps, &at, "%s needs arguments", lex_keyword_name(k));
+        emit(c, IRIS_FN_BUILTIN, b, n, 0, 1 - n);
+        return;
+    }
+    switch (k) {
+    case T_NUMBER: emit(c, IRIS_FN_CONST, 0, 0, at.num, 1); return;
+    case T_PI: emit(c, IRIS_FN_CONST, 0, 0, M_PI, 1); return;
+    case T_TAU: emit(c, IRIS_FN_CONST, 0, 0, 2 * M_PI, 1); return;
+    case T_TRUE: case T_YES: case T_ON: emit(c, IRIS_FN_CONST, 0, 0, 1, 1); return;
+    case T_FALSE: case T_NO: case T_OFF: emit(c, IRIS_FN_CONST, 0, 0, 0, 1); return;
+    case T_CLOCK: emit(c, IRIS_FN_CONST, 0, 0, ps->opt.clock, 1); return;
+    case T_LPAREN:
+        cexpr(c);
+        pp_expect(ps, T_RPAREN, "')'");
+        return;
+    case T_SELECT: {
+        int n = args(c);
+        if (n != 3 && n != 4)
+            pp_error(ps, &at, "select takes 3 or 4 arguments");
+        emit(c, n == 3 ? IRIS_FN_SELECT3 : IRIS_FN_SELECT4, 0, n, 0, 1 - n);
+        return;
+    }
+    case T_INTERNAL: {
+        pp_expect(ps, T_LPAREN, "'('");
+        double n = pp_float(ps);
+        pp_expect(ps, T_RPAREN, "')'");
+        emit(c, IRIS_FN_INTERNAL, (int)n, 0, 0, 1);
+        return;
+    }
+    case T_PROD: case T_SUM:
+        pp_error(ps, &at, "%s() in functions is not supported",
+                 lex_keyword_name(k));
+    case T_IDENT: {
+        pp_value v = at.val;
+        if (v.kind == V_FUNCTION) {
+            int n = args(c);
+            emit(c, IRIS_FN_CALL, 0, n, 0, 1 - n);
+            c->code[c->n - 1].callee = v.u.fn;
+            return;
+        }
+        if (v.kind == V_FLOAT || v.kind == V_VECTOR || v.kind == V_COLOUR ||
+            v.kind == V_ARRAY) {
+            /* a captured value; vectors need .x etc. */
+            pp_unget(ps);
+            pp_value e = pp_expr(ps);
+            if (e.kind != V_FLOAT)
+                pp_error(ps, &at, "a function body needs float values, "
+                         "'%.*s' is a vector (use .x, .y, .z)", (int)at.len,
+                         pp_tok_text(ps, &at));
+            emit(c, IRIS_FN_CONST, 0, 0, e.v[0], 1);
+            return;
+        }
+        if (v.kind == V_NONE)
+            pp_error(ps, &at, "undeclared identifier '%.*s' in function",
+                     (int)at.len, pp_tok_text(ps, &at));
+        pp_error(ps, &at, "a %s cannot be used in a function",
+                 pp_kind_name(v.kind));
+    }
+    default: {
+        pp_unexpected(ps, &at, "function");
+    }
+    }
+}
+
+static bool op_next(fnc *c, int a, int b, int *got)
+{
+    pp_state *ps = c->ps;
+    if (pp_next_is_directive(ps))
+        return false;
+    pp_next(ps);
+    int k = ps->tok.kind;
+    if (k == a || k == b) {
+        *got = k;
+        return true;
+    }
+    pp_unget(ps);
+    return false;
+}
+
+static void cunary(fnc *c)
+{
+    pp_state *ps = c->ps;
+    pp_next(ps);
+    int k = ps->tok.kind;
+    if (k == T_MINUS) {
+        cunary(c);
+        emit(c, IRIS_FN_NEG, 0, 0, 0, 0);
+        return;
+    }
+    if (k == T_PLUS) {
+        cunary(c);
+        return;
+    }
+    if (k == T_BANG) {
+        cunary(c);
+        emit(c, IRIS_FN_NOT, 0, 0, 0, 0);
+        return;
+    }
+    pp_unget(ps);
+    cfactor(c);
+}
+
+static void cmul(fnc *c)
+{
+    int op;
+    cunary(c);
+    while (op_next(c, T_STAR, T_SLASH, &op)) {
+        cunary(c);
+        emit(c, op == T_STAR ? IRIS_FN_MUL : IRIS_FN_DIV, 0, 0, 0, -1);
+    }
+}
+
+static void cadd(fnc *c)
+{
+    int op;
+    cmul(c);
+    while (op_next(c, T_PLUS, T_MINUS, &op)) {
+        cmul(c);
+        emit(c, op == T_PLUS ? IRIS_FN_ADD : IRIS_FN_SUB, 0, 0, 0, -1);
+    }
+}
+
+static void ccmp(fnc *c)
+{
+    pp_state *ps = c->ps;
+    cadd(c);
+    for (;;) {
+        if (pp_next_is_directive(ps))
+            return;
+        pp_next(ps);
+        enum iris_fn_op op;
+        switch (ps->tok.kind) {
+        case T_LT: op = IRIS_FN_LT; break;
+        case T_LE: op = IRIS_FN_LE; break;
+        case T_GT: op = IRIS_FN_GT; break;
+        case T_GE: op = IRIS_FN_GE; break;
+        case T_EQUALS: op = IRIS_FN_EQ; break;
+        case T_NE: op = IRIS_FN_NE; break;
+        default:
+            pp_unget(ps);
+            return;
+        }
+        cadd(c);
+        emit(c, op, 0, 0, 0, -1);
+    }
+}
+
+static void cand(fnc *c)
+{
+    int op;
+    ccmp(c);
+    while (op_next(c, T_AMP, T_AMP, &op)) {
+        ccmp(c);
+        emit(c, IRIS_FN_AND, 0, 0, 0, -1);
+    }
+}
+
+static void cor(fnc *c)
+{
+    int op;
+    cand(c);
+    while (op_next(c, T_BAR, T_BAR, &op)) {
+        cand(c);
+        emit(c, IRIS_FN_OR, 0, 0, 0, -1);
+    }
+}
+
+static void cexpr(fnc *c)
+{
+    int op;
+    cor(c);
+    if (op_next(c, T_QUESTION, T_QUESTION, &op)) {
+        cexpr(c);
+        pp_expect(c->ps, T_COLON, "':'");
+        cexpr(c);
+        emit(c, IRIS_FN_COND, 0, 3, 0, -2);
+    }
+}
+
+static iris_fn *finish_fn(fnc *c, int n_results)
+{
+    pp_state *ps = c->ps;
+    iris_fn *fn = pp_alloc(ps, sizeof *fn);
+    fn->n_params = c->n_params;
+    fn->param_names = pp_alloc(ps, (size_t)(c->n_params + 1) * sizeof(char *));
+    for (int i = 0; i < c->n_params; i++)
+        fn->param_names[i] = pp_strdup(ps, c->params[i], strlen(c->params[i]));
+    fn->n_code = c->n;
+    fn->code = pp_alloc(ps, (size_t)(c->n ? c->n : 1) * sizeof *fn->code);
+    if (c->n)
+        memcpy(fn->code, c->code, (size_t)c->n * sizeof *fn->code);
+    fn->max_stack = c->max_depth;
+    fn->n_results = n_results;
+    return fn;
+}
+
+/* function [ '(' params ')' ] '{' body '}' ; the current token is
+** 'function'. */
+iris_fn *pp_function(pp_state *ps)
+{
+    fnc c;
+    memset(&c, 0, sizeof c);
+    c.ps = ps;
+    pp_token at = ps->tok;
+    if (pp_accept(ps, T_LPAREN)) {
+        ps->no_expand++;
+        for (;;) {
+            pp_next(ps);
+            if (ps->tok.kind == T_RPAREN)
+                break;
+            if (ps->tok.kind == T_COMMA)
+                continue;
+            if (ps->tok.kind != T_IDENT && ps->tok.kind < T_KW_FIRST) {
+                ps->no_expand--;
+                pp_error(ps, &ps->tok, "expected a parameter name");
+            }
+            if (c.n_params >= 32) {
+                ps->no_expand--;
+                pp_error(ps, &ps->tok, "too many function parameters");
+            }
+            c.params[c.n_params++] = pp_strdup(ps, pp_tok_text(ps, &ps->tok),
+                                               ps->tok.len);
+        }
+        ps->no_expand--;
+    } else {
+        c.default_params = true;
+        c.n_params = 3;
+        c.params[0] = "x";
+        c.params[1] = "y";
+        c.params[2] = "z";
+    }
+    pp_expect(ps, T_LBRACE, "'{' after function");
+    pp_next(ps);
+    int k = ps->tok.kind;
+    if (k == T_PATTERN || k == T_PIGMENT) {
+        /* pattern and pigment functions: evaluated by the renderer's
+        ** pattern code; the evaluator here returns 0 for them */
+        iris_pigment *pg = pp_pigment(ps, NULL);
+        iris_pattern *pat = pp_alloc(ps, sizeof *pat);
+        *pat = pg->pattern;
+        emit(&c, IRIS_FN_PATTERN, 0, 0, 0, 1);
+        c.code[c.n - 1].pattern = pat;
+        pp_expect(ps, T_RBRACE, "'}'");
+        return finish_fn(&c, k == T_PIGMENT ? 5 : 1);
+    }
+    if (k == T_TRANSFORM || k == T_SPLINE) {
+        pp_error(ps, &ps->tok, "%s functions are not supported",
+                 lex_keyword_name(k));
+    }
+    pp_unget(ps);
+    cexpr(&c);
+    pp_expect(ps, T_RBRACE, "'}' to end the function body");
+    (void)at;
+    return finish_fn(&c, 1);
+}
+
+double pp_call_function(pp_state *ps, const iris_fn *fn)
+{
+    (void)ps;
+    return iris_fn_eval(fn, NULL, 0);
+}

@@ -1,0 +1,1665 @@
+/* SPDX-License-Identifier: MIT */
+/*
+** mat.c: textures: pigment, normal, finish, texture (layers and maps),
+** interior with the iris IOR extensions, material, patterns and their
+** modifiers, colour/pigment/normal/texture/slope maps, transforms.
+**
+** Nodes read from identifiers are shared and never changed: a transform
+** applied to a pigment, normal or texture makes a copy with the transform
+** composed into every pattern it holds (pp_tex_transform and friends),
+** which is how POV-Ray's Transform_Textures behaves.
+*/
+#include "config.h"
+
+#include <math.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "math/vec3.h"
+#include "pp.h"
+
+/* ---- transforms -------------------------------------------------- */
+
+bool pp_transform_item(pp_state *ps, iris_transform *out)
+{
+    pp_token at = ps->tok;
+    switch (at.kind) {
+    case T_TRANSLATE:
+        xf_translate(out, pp_vector(ps));
+        return true;
+    case T_ROTATE:
+        xf_rotate(out, pp_vector(ps));
+        return true;
+    case T_SCALE: {
+        iris_vec3 s = pp_vector(ps);
+        if (s.x == 0 || s.y == 0 || s.z == 0)
+            pp_warning(ps, &at, "illegal scale by 0, changed to 1 for that "
+                       "axis (as POV-Ray does)");
+        xf_scale(out, s);
+        return true;
+    }
+    case T_MATRIX: {
+        pp_expect(ps, T_LT, "'<' and 12 matrix values");
+        double v[12];
+        for (int i = 0; i < 12; i++) {
+            if (i)
+                pp_expect(ps, T_COMMA, "',' (matrix takes 12 values)");
+            bool iv = ps->in_vector;
+            ps->in_vector = true;
+            v[i] = pp_float(ps);
+            ps->in_vector = iv;
+        }
+        pp_expect(ps, T_GT, "'>'");
+        if (!xf_matrix(out, v))
+            pp_error(ps, &at, "singular matrix");
+        return true;
+    }
+    case T_TRANSFORM: {
+        iris_transform *t = pp_transform_block(ps);
+        *out = *t;
+        return true;
+    }
+    default:
+        return false;
+    }
+}
+
+/* transform { [TRANSFORM_ID] [inverse] transforms... } or transform ID */
+iris_transform *pp_transform_block(pp_state *ps)
+{
+    iris_transform *t = pp_alloc(ps, sizeof *t);
+    xf_identity(t);
+    pp_next(ps);
+    if (ps->tok.kind == T_IDENT && ps->tok.val.kind == V_TRANSFORM) {
+        *t = *ps->tok.val.u.xf;
+        return t;
+    }
+    if (ps->tok.kind != T_LBRACE)
+        pp_error(ps, &ps->tok, "expected '{' or a transform identifier");
+    pp_token open = ps->tok;
+    for (;;) {
+        pp_next(ps);
+        iris_transform x;
+        if (ps->tok.kind == T_RBRACE)
+            return t;
+        if (ps->tok.kind == T_INVERSE) {
+            xf_inverse(t, t);
+            continue;
+        }
+        if (ps->tok.kind == T_IDENT && ps->tok.val.kind == V_TRANSFORM) {
+            xf_compose(t, t, ps->tok.val.u.xf);
+            continue;
+        }
+        if (!pp_transform_item(ps, &x)) {
+            char buf[80];
+            pp_error(ps, &ps->tok, "expected a transform in the transform "
+                     "block opened at line %u, found %s",
+                     (pp_loc(ps, &open)).line,
+                     pp_tok_name(ps, &ps->tok, buf, sizeof buf));
+        }
+        xf_compose(t, t, &x);
+    }
+}
+
+/* ---- patterns ---------------------------------------------------- */
+
+void pp_pattern_init(iris_pattern *p)
+{
+    memset(p, 0, sizeof *p);
+    xf_identity(&p->transform);
+    p->frequency = 1;
+    p->brick_size = v3(8, 3, 4.5);
+    p->mortar = 0.5;
+    p->noise_generator = 0; /* 0 = the global setting */
+    p->iterations = 0;
+}
+
+static iris_warp *add_warp(pp_state *ps, iris_pattern *p, int kind)
+{
+    iris_warp *w = pp_alloc(ps, (size_t)(p->n_warps + 1) * sizeof *w);
+    if (p->n_warps)
+        memcpy(w, p->warps, (size_t)p->n_warps * sizeof *w);
+    p->warps = w;
+    iris_warp *n = &w[p->n_warps++];
+    memset(n, 0, sizeof *n);
+    n->kind = kind;
+    n->octaves = 6;
+    n->omega = 0.5;
+    n->lambda = 2;
+    xf_identity(&n->transform);
+    return n;
+}
+
+/* The classic turbulence of a pattern: the last warp if it is one that
+** has no other warp after it, else a new one. */
+static iris_warp *classic_turb(pp_state *ps, iris_pattern *p)
+{
+    if (p->n_warps && p->warps[p->n_warps - 1].kind == IRIS_WARP_TURBULENCE)
+        return &p->warps[p->n_warps - 1];
+    return add_warp(ps, p, IRIS_WARP_TURBULENCE);
+}
+
+/* warp { turbulence | repeat | black_hole | planar | spherical | ... } */
+static void warp_block(pp_state *ps, iris_pattern *p)
+{
+    pp_expect(ps, T_LBRACE, "'{'");
+    iris_warp *w = NULL;
+    for (;;) {
+        pp_next(ps);
+        pp_token at = ps->tok;
+        switch (at.kind) {
+        case T_RBRACE:
+            return;
+        case T_TURBULENCE:
+            w = add_warp(ps, p, IRIS_WARP_TURBULENCE);
+            w->turbulence = pp_vector(ps);
+            break;
+        case T_REPEAT:
+            w = add_warp(ps, p, IRIS_WARP_REPEAT);
+            w->repeat = pp_vector(ps);
+            break;
+        case T_BLACK_HOLE:
+            w = add_warp(ps, p, IRIS_WARP_BLACK_HOLE);
+            w->centre = pp_vector(ps);
+            pp_expect(ps, T_COMMA, "','");
+            w->radius = pp_float(ps);
+            w->strength = 1;
+            w->falloff = 2;
+            break;
+        case T_PLANAR: case T_SPHERICAL: case T_CYLINDRICAL: case T_TOROIDAL:
+            w = add_warp(ps, p, at.kind == T_PLANAR ? IRIS_WARP_PLANAR :
+                                at.kind == T_SPHERICAL ? IRIS_WARP_SPHERICAL :
+                                at.kind == T_CYLINDRICAL ? IRIS_WARP_CYLINDRICAL
+                                                         : IRIS_WARP_TOROIDAL);
+            w->orientation = v3(0, 0, 1);
+            w->dist_exp = 0;
+            if (at.kind == T_PLANAR) {
+                pp_next(ps);
+                pp_unget(ps);
+                if (pp_starts_expr(ps)) {
+                    w->orientation = pp_vector(ps);
+                    pp_expect(ps, T_COMMA, "','");
+                    w->offset.x = pp_float(ps);
+                }
+            }
+            break;
+        case T_OCTAVES: if (w) w->octaves = (int)pp_float(ps); else pp_float(ps); break;
+        case T_OMEGA: if (w) w->omega = pp_float(ps); else pp_float(ps); break;
+        case T_LAMBDA: if (w) w->lambda = pp_float(ps); else pp_float(ps); break;
+        case T_OFFSET: if (w) w->offset = pp_vector(ps); else pp_vector(ps); break;
+        case T_FLIP: if (w) w->flip = pp_vector(ps); else pp_vector(ps); break;
+        case T_STRENGTH: if (w) w->strength = pp_float(ps); else pp_float(ps); break;
+        case T_FALLOFF: if (w) w->falloff = pp_float(ps); else pp_float(ps); break;
+        case T_INVERSE: if (w) w->inverse = 1; break;
+        case T_ORIENTATION: if (w) w->orientation = pp_vector(ps); else pp_vector(ps); break;
+        case T_DIST_EXP: if (w) w->dist_exp = pp_float(ps); else pp_float(ps); break;
+        case T_MAJOR_RADIUS: if (w) w->major_radius = pp_float(ps); else pp_float(ps); break;
+        case T_TURB_DEPTH: case T_TYPE: pp_float(ps); break;
+        default: {
+            iris_transform x;
+            if (pp_transform_item(ps, &x)) {
+                w = add_warp(ps, p, IRIS_WARP_TRANSFORM);
+                w->transform = x;
+                break;
+            }
+            pp_unexpected(ps, &at, "warp");
+        }
+        }
+    }
+}
+
+/* Resolves an image file as POV-Ray does: relative to the scene and the
+** include path. Keeps the name as written when it cannot be found. */
+static const char *image_path(pp_state *ps, const pp_token *at, const char *name)
+{
+    char buf[4096];
+    struct stat st;
+    if (name[0] == '/')
+        return name;
+    const char *dirs[66];
+    int nd = 0;
+    dirs[nd++] = ps->files[at->file].dir;
+    dirs[nd++] = ps->files[0].dir;
+    for (int i = 0; i < ps->opt.n_include_paths && nd < 64; i++)
+        dirs[nd++] = ps->opt.include_paths[i];
+#ifdef POVRAY_INCLUDE_DIR
+    if (!ps->opt.no_system_includes && POVRAY_INCLUDE_DIR[0])
+        dirs[nd++] = POVRAY_INCLUDE_DIR;
+#endif
+    for (int i = 0; i < nd; i++) {
+        int n = snprintf(buf, sizeof buf, "%s/%s", dirs[i], name);
+        if (n > 0 && (size_t)n < sizeof buf && stat(buf, &st) == 0)
+            return pp_strdup(ps, buf, (size_t)n);
+    }
+    pp_warning(ps, at, "image file \"%s\" not found", name);
+    return name;
+}
+
+static bool is_image_type(int k)
+{
+    return k == T_GIF || k == T_TGA || k == T_IFF || k == T_PPM ||
+           k == T_PGM || k == T_PNG || k == T_JPEG || k == T_TIFF ||
+           k == T_SYS || k == T_EXR || k == T_HDR || k == T_BMP;
+}
+
+/* Reads [type] "file" of an image_map/bump_map/height_field. */
+static iris_image_ref *image_file(pp_state *ps)
+{
+    iris_image_ref *img = pp_alloc(ps, sizeof *img);
+    pp_next(ps);
+    if (is_image_type(ps->tok.kind))
+        pp_next(ps);
+    if (ps->tok.kind == T_FUNCTION)
+        pp_error(ps, &ps->tok, "image from a function is not supported");
+    pp_unget(ps);
+    pp_token at = ps->tok;
+    const char *name = pp_string(ps);
+    img->path = image_path(ps, &at, name);
+    return img;
+}
+
+/* image_map { [type] "file" [map_type n] [once] [interpolate n]
+**             [filter all f|n f] [transmit all f|n f] [use_alpha] ... } */
+static iris_image_ref *image_block(pp_state *ps, double *bump_size)
+{
+    pp_expect(ps, T_LBRACE, "'{'");
+    iris_image_ref *img = image_file(ps);
+    for (;;) {
+        pp_next(ps);
+        pp_token at = ps->tok;
+        switch (at.kind) {
+        case T_RBRACE: return img;
+        case T_MAP_TYPE: img->map_type = (int)pp_float(ps); break;
+        case T_ONCE: img->once = true; break;
+        case T_INTERPOLATE: img->interpolate = (int)pp_float(ps); break;
+        case T_USE_ALPHA: img->use_alpha = true; break;
+        case T_USE_COLOR: case T_USE_INDEX: break;
+        case T_GAMMA: img->gamma = pp_float(ps); break;
+        case T_PREMULTIPLIED: pp_bool_opt(ps); break;
+        case T_BUMP_SIZE: {
+            double b = pp_float(ps);
+            if (bump_size)
+                *bump_size = b;
+            break;
+        }
+        case T_FILTER: case T_TRANSMIT: {
+            double *all = at.kind == T_FILTER ? &img->filter_all
+                                              : &img->transmit_all;
+            if (pp_accept(ps, T_ALL)) {
+                *all = pp_float(ps);
+            } else {
+                pp_float(ps);
+                pp_accept(ps, T_COMMA);
+                pp_float(ps);
+                pp_warn_once(ps, &at, at.kind, "per-index filter/transmit "
+                             "of palette images");
+            }
+            break;
+        }
+        default: {
+            pp_unexpected(ps, &at, "image block");
+        }
+        }
+    }
+}
+
+static bool list_pattern(int kind)
+{
+    return kind == IRIS_PAT_CHECKER || kind == IRIS_PAT_HEXAGON ||
+           kind == IRIS_PAT_BRICK || kind == IRIS_PAT_OBJECT ||
+           kind == IRIS_PAT_SQUARE || kind == IRIS_PAT_TRIANGULAR;
+}
+
+/* Parses a pattern keyword and its own parameters into 'p'; false when
+** the current token is no pattern. */
+static bool pattern_kind(pp_state *ps, iris_pattern *p)
+{
+    pp_token at = ps->tok;
+    int k = at.kind;
+    switch (k) {
+    case T_AGATE: p->kind = IRIS_PAT_AGATE; p->params[0] = 1.0; break;
+    case T_AVERAGE: p->kind = IRIS_PAT_AVERAGE; break;
+    case T_BOXED: p->kind = IRIS_PAT_BOXED; break;
+    case T_BOZO: p->kind = IRIS_PAT_BOZO; break;
+    case T_BRICK: p->kind = IRIS_PAT_BRICK; break;
+    case T_BUMPS: p->kind = IRIS_PAT_BUMPS; break;
+    case T_CELLS: p->kind = IRIS_PAT_CELLS; break;
+    case T_CHECKER: p->kind = IRIS_PAT_CHECKER; break;
+    case T_CRACKLE:
+        p->kind = IRIS_PAT_CRACKLE;
+        p->params[0] = -1; p->params[1] = 1; p->params[2] = 0; /* form */
+        p->params[3] = 2;  /* metric */
+        p->params[4] = 0;  /* offset */
+        p->params[5] = 0;  /* solid */
+        break;
+    case T_CYLINDRICAL: p->kind = IRIS_PAT_CYLINDRICAL; break;
+    case T_DENTS: p->kind = IRIS_PAT_DENTS; break;
+    case T_FACETS: p->kind = IRIS_PAT_FACETS; break;
+    case T_GRADIENT: p->kind = IRIS_PAT_GRADIENT; p->vector = pp_vector(ps); break;
+    case T_GRANITE: p->kind = IRIS_PAT_GRANITE; break;
+    case T_HEXAGON: p->kind = IRIS_PAT_HEXAGON; break;
+    case T_JULIA:
+        p->kind = IRIS_PAT_JULIA;
+        p->complex_c = pp_vector2(ps);
+        pp_expect(ps, T_COMMA, "','");
+        p->iterations = (int)pp_float(ps);
+        break;
+    case T_LEOPARD: p->kind = IRIS_PAT_LEOPARD; break;
+    case T_MANDEL: p->kind = IRIS_PAT_MANDEL; p->iterations = (int)pp_float(ps); break;
+    case T_MARBLE: p->kind = IRIS_PAT_MARBLE; p->wave = IRIS_WAVE_TRIANGLE; break;
+    case T_ONION: p->kind = IRIS_PAT_ONION; break;
+    case T_PLANAR: p->kind = IRIS_PAT_PLANAR; break;
+    case T_QUILTED: p->kind = IRIS_PAT_QUILTED; p->params[0] = 1; p->params[1] = 1; break;
+    case T_RADIAL: p->kind = IRIS_PAT_RADIAL; break;
+    case T_RIPPLES: p->kind = IRIS_PAT_RIPPLES; break;
+    case T_SPHERICAL: p->kind = IRIS_PAT_SPHERICAL; break;
+    case T_SPIRAL1: p->kind = IRIS_PAT_SPIRAL1; p->params[0] = pp_float(ps); break;
+    case T_SPIRAL2: p->kind = IRIS_PAT_SPIRAL2; p->params[0] = pp_float(ps); break;
+    case T_SPOTTED: p->kind = IRIS_PAT_SPOTTED; break;
+    case T_WAVES: p->kind = IRIS_PAT_WAVES; break;
+    case T_WOOD: p->kind = IRIS_PAT_WOOD; p->wave = IRIS_WAVE_TRIANGLE; break;
+    case T_WRINKLES: p->kind = IRIS_PAT_WRINKLES; break;
+    case T_SQUARE: p->kind = IRIS_PAT_SQUARE; break;
+    case T_TRIANGULAR: p->kind = IRIS_PAT_TRIANGULAR; break;
+    case T_TILING: p->kind = IRIS_PAT_TILING; p->params[0] = pp_float(ps); break;
+    case T_PAVEMENT: p->kind = IRIS_PAT_PAVEMENT; p->params[0] = 3; p->params[1] = 1; break;
+    case T_SLOPE: {
+        p->kind = IRIS_PAT_SLOPE;
+        bool brace = pp_accept(ps, T_LBRACE);
+        p->vector = pp_vector(ps);
+        if (pp_accept(ps, T_COMMA)) {
+            p->params[0] = pp_float(ps);
+            pp_expect(ps, T_COMMA, "','");
+            p->params[1] = pp_float(ps);
+        }
+        if (brace) {
+            if (pp_accept(ps, T_ALTITUDE)) {
+                p->params[2] = 1;
+                pp_vector(ps);
+                if (pp_accept(ps, T_COMMA)) {
+                    pp_float(ps);
+                    pp_expect(ps, T_COMMA, "','");
+                    pp_float(ps);
+                }
+            }
+            pp_expect(ps, T_RBRACE, "'}'");
+        }
+        break;
+    }
+    case T_FUNCTION:
+        p->kind = IRIS_PAT_FUNCTION;
+        p->fn = pp_function(ps);
+        break;
+    case T_IDENT:
+        if (at.val.kind != V_FUNCTION)
+            return false;
+        /* pattern given by a function identifier: 'pigment { F ... }'
+        ** is not valid; only 'function { F(x,y,z) }' is */
+        return false;
+    case T_IMAGE_MAP:
+        p->kind = IRIS_PAT_IMAGE_MAP;
+        p->image = image_block(ps, NULL);
+        break;
+    case T_IMAGE_PATTERN:
+        p->kind = IRIS_PAT_IMAGE_PATTERN;
+        p->image = image_block(ps, NULL);
+        break;
+    case T_OBJECT: {
+        p->kind = IRIS_PAT_OBJECT;
+        pp_expect(ps, T_LBRACE, "'{'");
+        pp_next(ps);
+        if (ps->tok.kind == T_IDENT && ps->tok.val.kind == V_OBJECT) {
+            p->object = ps->tok.val.u.obj;
+        } else {
+            pp_unget(ps);
+            p->object = pp_object(ps);
+            if (!p->object)
+                pp_error(ps, &ps->tok, "expected an object");
+        }
+        pp_expect(ps, T_RBRACE, "'}'");
+        break;
+    }
+    case T_PIGMENT_PATTERN: {
+        /* A pigment used as a pattern: keep the pigment's pattern. */
+        iris_pigment *pg = pp_pigment(ps, NULL);
+        pp_warn_once(ps, &at, T_PIGMENT_PATTERN, "pigment_pattern (uses the "
+                     "inner pigment's pattern)");
+        *p = pg->pattern;
+        break;
+    }
+    case T_DENSITY_FILE:
+        pp_error(ps, &at, "density_file patterns are not supported");
+    default:
+        return false;
+    }
+    return true;
+}
+
+/* Pattern modifiers common to pigments, normals and textures. */
+static bool pattern_mod(pp_state *ps, iris_pattern *p)
+{
+    pp_token at = ps->tok;
+    switch (at.kind) {
+    case T_TURBULENCE: classic_turb(ps, p)->turbulence = pp_vector(ps); return true;
+    case T_OCTAVES: classic_turb(ps, p)->octaves = (int)pp_float(ps); return true;
+    case T_OMEGA: classic_turb(ps, p)->omega = pp_float(ps); return true;
+    case T_LAMBDA: classic_turb(ps, p)->lambda = pp_float(ps); return true;
+    case T_WARP: warp_block(ps, p); return true;
+    case T_FREQUENCY: p->frequency = pp_float(ps); return true;
+    case T_PHASE: p->phase = pp_float(ps); return true;
+    case T_RAMP_WAVE: p->wave = IRIS_WAVE_RAMP; return true;
+    case T_SINE_WAVE: p->wave = IRIS_WAVE_SINE; return true;
+    case T_TRIANGLE_WAVE: p->wave = IRIS_WAVE_TRIANGLE; return true;
+    case T_SCALLOP_WAVE: p->wave = IRIS_WAVE_SCALLOP; return true;
+    case T_CUBIC_WAVE: p->wave = IRIS_WAVE_CUBIC; return true;
+    case T_POLY_WAVE:
+        p->wave = IRIS_WAVE_POLY;
+        p->wave_exponent = 1;
+        pp_next(ps);
+        pp_unget(ps);
+        if (pp_starts_expr(ps) && ps->tok.kind != T_LT)
+            p->wave_exponent = pp_float(ps);
+        return true;
+    case T_NOISE_GENERATOR: p->noise_generator = (int)pp_float(ps); return true;
+    case T_AGATE_TURB: p->params[0] = pp_float(ps); return true;
+    case T_BRICK_SIZE: p->brick_size = pp_vector(ps); return true;
+    case T_MORTAR: p->mortar = pp_float(ps); return true;
+    case T_FORM: {
+        iris_vec3 f = pp_vector(ps);
+        if (p->kind == IRIS_PAT_PAVEMENT) {
+            p->params[3] = f.x;
+        } else {
+            p->params[0] = f.x; p->params[1] = f.y; p->params[2] = f.z;
+        }
+        return true;
+    }
+    case T_METRIC: p->params[3] = pp_float(ps); return true;
+    case T_OFFSET: p->params[4] = pp_float(ps); return true;
+    case T_SOLID: p->params[5] = 1; return true;
+    case T_CONTROL0: p->params[0] = pp_float(ps); return true;
+    case T_CONTROL1: p->params[1] = pp_float(ps); return true;
+    case T_EXPONENT: p->params[6] = pp_float(ps); return true;
+    case T_EXTERIOR: case T_INTERIOR:
+        if (p->kind != IRIS_PAT_MANDEL && p->kind != IRIS_PAT_JULIA &&
+            p->kind != IRIS_PAT_PAVEMENT)
+            return false;
+        pp_float(ps);
+        if (pp_accept(ps, T_COMMA))
+            pp_float(ps);
+        return true;
+    case T_COORDS: p->params[1] = pp_float(ps); return true;
+    case T_SIZE: p->params[0] = pp_float(ps); return true;
+    case T_NUMBER_OF_SIDES: p->params[0] = pp_float(ps); return true;
+    case T_NUMBER_OF_TILES: p->params[1] = pp_float(ps); return true;
+    case T_PATTERN: p->params[2] = pp_float(ps); return true;
+    case T_ORIENTATION: p->vector = pp_vector(ps); return true;
+    case T_DIST_EXP: p->params[6] = pp_float(ps); return true;
+    case T_UV_MAPPING:
+        return true;
+    case T_MAGNET: case T_PRECOMPUTE:
+        pp_warn_once(ps, &at, at.kind, lex_keyword_name(at.kind));
+        pp_float(ps);
+        return true;
+    default: {
+        iris_transform x;
+        if (pp_transform_item(ps, &x)) {
+            xf_compose(&p->transform, &p->transform, &x);
+            p->has_transform = true;
+            return true;
+        }
+        return false;
+    }
+    }
+}
+
+/* ---- maps -------------------------------------------------------- */
+
+static int cmp_entry(const void *a, const void *b)
+{
+    double x = ((const iris_map_entry *)a)->value;
+    double y = ((const iris_map_entry *)b)->value;
+    return x < y ? -1 : x > y;
+}
+
+static iris_pigment *pigment_body(pp_state *ps, const iris_pigment *base,
+                                  int end);
+static iris_normal *normal_body(pp_state *ps, const iris_normal *base,
+                                int end);
+static iris_texture *texture_body(pp_state *ps, int end);
+
+/* x_map { [value item] ... } or x_map { MAP_ID }. The current token is
+** the map keyword. */
+pp_map *pp_map_block(pp_state *ps, int kind)
+{
+    pp_expect(ps, T_LBRACE, "'{'");
+    pp_map *m = pp_salloc(ps, sizeof *m);
+    m->kind = kind;
+    int cap = 0;
+    iris_map_entry *e = NULL;
+    for (;;) {
+        pp_next(ps);
+        pp_token at = ps->tok;
+        if (at.kind == T_RBRACE)
+            break;
+        if (at.kind == T_IDENT && at.val.kind == kind) {
+            *m = *at.val.u.map;
+            cap = m->n;
+            e = m->e;
+            continue;
+        }
+        if (at.kind != T_LBRACKET) {
+            char buf[80];
+            pp_error(ps, &at, "expected '[' or a map identifier in %s, found "
+                     "%s", pp_kind_name(kind),
+                     pp_tok_name(ps, &at, buf, sizeof buf));
+        }
+        if (m->n + 2 > cap) {
+            int nc = cap ? cap * 2 : 8;
+            if (nc > 256)
+                nc = cap + 2 > 256 ? cap + 2 : 256;
+            iris_map_entry *ne = pp_alloc(ps, (size_t)nc * sizeof *ne);
+            if (m->n)
+                memcpy(ne, e, (size_t)m->n * sizeof *ne);
+            e = ne;
+            cap = nc;
+        }
+        if (m->n >= 256)
+            pp_error(ps, &at, "a map has at most 256 entries");
+        iris_map_entry *en = &e[m->n];
+        memset(en, 0, sizeof *en);
+        en->value = pp_float(ps);
+        switch (kind) {
+        case V_COLOUR_MAP: {
+            /* [v color C] or the old [v1, v2 color C1 color C2]; the comma
+            ** after the value is optional */
+            pp_accept(ps, T_COMMA);
+            pp_next(ps);
+            bool second = ps->tok.kind == T_NUMBER ||
+                          (ps->tok.kind == T_IDENT &&
+                           ps->tok.val.kind == V_FLOAT);
+            pp_unget(ps);
+            if (second) {
+                double v2 = pp_float(ps);
+                en->colour = pp_colour(ps);
+                iris_map_entry *e2 = &e[m->n + 1];
+                memset(e2, 0, sizeof *e2);
+                e2->value = v2;
+                pp_accept(ps, T_COMMA);
+                e2->colour = pp_colour(ps);
+                m->n++;
+            } else {
+                en->colour = pp_colour(ps);
+            }
+            pp_expect(ps, T_RBRACKET, "']'");
+            break;
+        }
+        case V_PIGMENT_MAP:
+            pp_accept(ps, T_COMMA);
+            en->pigment = pigment_body(ps, NULL, T_RBRACKET);
+            break;
+        case V_NORMAL_MAP:
+            pp_accept(ps, T_COMMA);
+            en->normal = normal_body(ps, NULL, T_RBRACKET);
+            break;
+        case V_TEXTURE_MAP:
+            pp_accept(ps, T_COMMA);
+            en->texture = texture_body(ps, T_RBRACKET);
+            break;
+        case V_SLOPE_MAP: {
+            pp_accept(ps, T_COMMA);
+            double v[4];
+            pp_vector4(ps, v);
+            en->slope = v[0] == 0 && v[1] == 0 ? 0 : v[0];
+            en->height = v[0];
+            en->slope = v[1];
+            pp_expect(ps, T_RBRACKET, "']'");
+            break;
+        }
+        default:
+            pp_skip_block(ps);
+            break;
+        }
+        m->n++;
+    }
+    m->e = e;
+    if (m->n > 1) {
+        /* stable insertion sort: equal values keep their order */
+        for (int i = 1; i < m->n; i++) {
+            iris_map_entry x = e[i];
+            int j = i;
+            while (j > 0 && cmp_entry(&e[j - 1], &x) > 0) {
+                e[j] = e[j - 1];
+                j--;
+            }
+            e[j] = x;
+        }
+    }
+    return m;
+}
+
+/* ---- copies with transforms ------------------------------------- */
+
+static void pattern_xf(iris_pattern *p, const iris_transform *xf)
+{
+    xf_compose(&p->transform, &p->transform, xf);
+    p->has_transform = true;
+}
+
+iris_pigment *pp_pig_transform(pp_state *ps, const iris_pigment *p,
+                               const iris_transform *xf)
+{
+    if (!p)
+        return NULL;
+    iris_pigment *n = pp_alloc(ps, sizeof *n);
+    *n = *p;
+    pattern_xf(&n->pattern, xf);
+    if (n->n_entries && n->is_pigment_map) {
+        n->entries = pp_alloc(ps, (size_t)n->n_entries * sizeof *n->entries);
+        memcpy(n->entries, p->entries, (size_t)n->n_entries * sizeof *n->entries);
+        for (int i = 0; i < n->n_entries; i++)
+            n->entries[i].pigment = pp_pig_transform(ps, n->entries[i].pigment, xf);
+    }
+    return n;
+}
+
+iris_normal *pp_nor_transform(pp_state *ps, const iris_normal *p,
+                              const iris_transform *xf)
+{
+    if (!p)
+        return NULL;
+    iris_normal *n = pp_alloc(ps, sizeof *n);
+    *n = *p;
+    pattern_xf(&n->pattern, xf);
+    if (n->n_entries && !n->is_slope_map) {
+        n->entries = pp_alloc(ps, (size_t)n->n_entries * sizeof *n->entries);
+        memcpy(n->entries, p->entries, (size_t)n->n_entries * sizeof *n->entries);
+        for (int i = 0; i < n->n_entries; i++)
+            n->entries[i].normal = pp_nor_transform(ps, n->entries[i].normal, xf);
+    }
+    return n;
+}
+
+iris_texture *pp_tex_transform(pp_state *ps, const iris_texture *t,
+                               const iris_transform *xf)
+{
+    if (!t)
+        return NULL;
+    iris_texture *n = pp_alloc(ps, sizeof *n);
+    *n = *t;
+    n->pigment = pp_pig_transform(ps, t->pigment, xf);
+    n->normal = pp_nor_transform(ps, t->normal, xf);
+    if (t->n_entries) {
+        pattern_xf(&n->map_pattern, xf);
+        n->entries = pp_alloc(ps, (size_t)n->n_entries * sizeof *n->entries);
+        memcpy(n->entries, t->entries, (size_t)n->n_entries * sizeof *n->entries);
+        for (int i = 0; i < n->n_entries; i++)
+            n->entries[i].texture = pp_tex_transform(ps, t->entries[i].texture, xf);
+    }
+    n->next = pp_tex_transform(ps, t->next, xf);
+    return n;
+}
+
+/* ---- pigments ---------------------------------------------------- */
+
+iris_pigment *pp_pigment_new(pp_state *ps, const pp_token *at)
+{
+    iris_pigment *p = pp_alloc(ps, sizeof *p);
+    p->loc = pp_loc(ps, at);
+    pp_pattern_init(&p->pattern);
+    return p;
+}
+
+/* Copies 'm' into the entries of a pigment. */
+static void set_pigment_map(pp_state *ps, iris_pigment *p, const pp_map *m,
+                            const pp_token *at)
+{
+    if (m->kind != V_COLOUR_MAP && m->kind != V_PIGMENT_MAP)
+        pp_error(ps, at, "a pigment takes a colour_map or pigment_map, not "
+                 "a %s", pp_kind_name(m->kind));
+    p->n_entries = m->n;
+    p->entries = m->e;
+    p->is_pigment_map = m->kind == V_PIGMENT_MAP;
+}
+
+/* The items after a list pattern (checker A B, hexagon A B C, ...). */
+static void pigment_list(pp_state *ps, iris_pigment *p, int max)
+{
+    iris_map_entry *e = pp_alloc(ps, (size_t)max * sizeof *e);
+    int n = 0;
+    bool pigments = false;
+    while (n < max) {
+        if (pp_next_is_directive(ps))
+            break;
+        pp_next(ps);
+        pp_token at = ps->tok;
+        if (at.kind == T_COMMA && n > 0) {
+            pp_next(ps);
+            at = ps->tok;
+        }
+        if (at.kind == T_PIGMENT) {
+            e[n].pigment = pp_pigment(ps, NULL);
+            e[n].value = n;
+            pigments = true;
+            n++;
+        } else if (at.kind == T_IDENT && at.val.kind == V_PIGMENT) {
+            e[n].pigment = at.val.u.pig;
+            e[n].value = n;
+            pigments = true;
+            n++;
+        } else if (at.kind == T_COLOR || at.kind == T_RGB ||
+                   at.kind == T_RGBF || at.kind == T_RGBT ||
+                   at.kind == T_RGBFT || at.kind == T_SRGB ||
+                   at.kind == T_SRGBF || at.kind == T_SRGBT ||
+                   at.kind == T_SRGBFT ||
+                   (at.kind == T_IDENT && (at.val.kind == V_COLOUR ||
+                                           at.val.kind == V_VECTOR ||
+                                           at.val.kind == V_FLOAT))) {
+            pp_unget(ps);
+            e[n].colour = pp_colour(ps);
+            e[n].value = n;
+            n++;
+        } else {
+            pp_unget(ps);
+            break;
+        }
+    }
+    if (n == 0)
+        return;
+    if (pigments) {
+        /* mixed lists: wrap colours as solid pigments */
+        for (int i = 0; i < n; i++)
+            if (!e[i].pigment) {
+                e[i].pigment = pp_pigment_new(ps, &ps->tok);
+                e[i].pigment->colour = e[i].colour;
+            }
+    }
+    p->n_entries = n;
+    p->entries = e;
+    p->is_pigment_map = pigments;
+}
+
+static iris_pigment *pigment_body(pp_state *ps, const iris_pigment *base,
+                                  int end)
+{
+    pp_next(ps);
+    pp_token open = ps->tok;
+    pp_unget(ps);
+    iris_pigment *p = pp_alloc(ps, sizeof *p);
+    if (base)
+        *p = *base;
+    else
+        *p = *pp_pigment_new(ps, &open);
+    p->loc = pp_loc(ps, &open);
+    for (;;) {
+        pp_next(ps);
+        pp_token at = ps->tok;
+        int k = at.kind;
+        if (k == end)
+            return p;
+        if (k == T_EOF)
+            pp_error(ps, &open, "pigment without its closing '%s'",
+                     end == T_RBRACE ? "}" : "]");
+        if (k == T_IDENT && at.val.kind == V_PIGMENT) {
+            *p = *at.val.u.pig;
+            continue;
+        }
+        if (k == T_IDENT && (at.val.kind == V_COLOUR_MAP ||
+                             at.val.kind == V_PIGMENT_MAP)) {
+            set_pigment_map(ps, p, at.val.u.map, &at);
+            continue;
+        }
+        if (k == T_COLOR_MAP || k == T_PIGMENT_MAP) {
+            pp_map *m = pp_map_block(ps, k == T_COLOR_MAP ? V_COLOUR_MAP
+                                                          : V_PIGMENT_MAP);
+            set_pigment_map(ps, p, m, &at);
+            continue;
+        }
+        if (k == T_QUICK_COLOR) {
+            p->quick_colour = pp_colour(ps);
+            continue;
+        }
+        if (k == T_IDENT && at.val.kind == V_FUNCTION) {
+            pp_error(ps, &at, "a function pattern is written 'function { "
+                     "F(x,y,z) }'");
+        }
+        if (pp_starts_expr(ps) || k == T_COLOR || k == T_RGB ||
+            k == T_RGBF || k == T_RGBT || k == T_RGBFT || k == T_SRGB ||
+            k == T_SRGBF || k == T_SRGBT || k == T_SRGBFT) {
+            pp_unget(ps);
+            p->pattern.kind = IRIS_PAT_NONE;
+            p->n_entries = 0;
+            p->colour = pp_colour(ps);
+            continue;
+        }
+        if (k == T_TRANSFORM || k == T_TRANSLATE || k == T_ROTATE ||
+            k == T_SCALE || k == T_MATRIX) {
+            iris_transform x;
+            pp_transform_item(ps, &x);
+            p = pp_pig_transform(ps, p, &x);
+            continue;
+        }
+        int old_kind = p->pattern.kind;
+        iris_pattern np = p->pattern;
+        if (pattern_kind(ps, &np)) {
+            /* a new pattern keeps the transforms and turbulence given so
+            ** far only when the pigment was an identifier; POV-Ray resets
+            ** the pattern type and keeps the modifiers */
+            p->pattern.kind = np.kind;
+            p->pattern.vector = np.vector;
+            p->pattern.fn = np.fn;
+            p->pattern.image = np.image;
+            p->pattern.object = np.object;
+            p->pattern.complex_c = np.complex_c;
+            p->pattern.iterations = np.iterations;
+            p->pattern.wave = np.wave;
+            memcpy(p->pattern.params, np.params, sizeof np.params);
+            if (k == T_PIGMENT_PATTERN)
+                p->pattern = np;
+            (void)old_kind;
+            if (list_pattern(p->pattern.kind)) {
+                int max = p->pattern.kind == IRIS_PAT_HEXAGON ? 3 :
+                          p->pattern.kind == IRIS_PAT_SQUARE ? 4 :
+                          p->pattern.kind == IRIS_PAT_TRIANGULAR ? 6 : 2;
+                pigment_list(ps, p, max);
+            }
+            continue;
+        }
+        if (pattern_mod(ps, &p->pattern))
+            continue;
+        {
+            pp_unexpected(ps, &at, "pigment");
+        }
+    }
+}
+
+iris_pigment *pp_pigment(pp_state *ps, const iris_pigment *base)
+{
+    pp_expect(ps, T_LBRACE, "'{' after pigment");
+    return pigment_body(ps, base, T_RBRACE);
+}
+
+/* ---- normals ----------------------------------------------------- */
+
+static bool normal_pattern_takes_amount(int kind)
+{
+    return kind != IRIS_PAT_NONE;
+}
+
+static iris_normal *normal_body(pp_state *ps, const iris_normal *base,
+                                int end)
+{
+    pp_next(ps);
+    pp_token open = ps->tok;
+    pp_unget(ps);
+    iris_normal *n = pp_alloc(ps, sizeof *n);
+    if (base) {
+        *n = *base;
+    } else {
+        pp_pattern_init(&n->pattern);
+        n->amount = 0.5;
+        n->accuracy = 0.02;
+    }
+    n->loc = pp_loc(ps, &open);
+    for (;;) {
+        pp_next(ps);
+        pp_token at = ps->tok;
+        int k = at.kind;
+        if (k == end)
+            return n;
+        if (k == T_EOF)
+            pp_error(ps, &open, "normal without its closing bracket");
+        if (k == T_IDENT && at.val.kind == V_NORMAL) {
+            *n = *at.val.u.nor;
+            continue;
+        }
+        if (k == T_IDENT && (at.val.kind == V_NORMAL_MAP ||
+                             at.val.kind == V_SLOPE_MAP)) {
+            n->n_entries = at.val.u.map->n;
+            n->entries = at.val.u.map->e;
+            n->is_slope_map = at.val.kind == V_SLOPE_MAP;
+            continue;
+        }
+        if (k == T_NORMAL_MAP || k == T_SLOPE_MAP) {
+            pp_map *m = pp_map_block(ps, k == T_NORMAL_MAP ? V_NORMAL_MAP
+                                                           : V_SLOPE_MAP);
+            n->n_entries = m->n;
+            n->entries = m->e;
+            n->is_slope_map = k == T_SLOPE_MAP;
+            continue;
+        }
+        if (k == T_BUMP_SIZE) {
+            n->amount = pp_float(ps);
+            continue;
+        }
+        if (k == T_ACCURACY) {
+            n->accuracy = pp_float(ps);
+            continue;
+        }
+        if (k == T_NO_BUMP_SCALE) {
+            pp_bool_opt(ps);
+            continue;
+        }
+        if (k == T_BUMP_MAP) {
+            n->pattern.kind = IRIS_PAT_IMAGE_MAP;
+            n->bump_map = image_block(ps, &n->amount);
+            continue;
+        }
+        if (k == T_TRANSFORM || k == T_TRANSLATE || k == T_ROTATE ||
+            k == T_SCALE || k == T_MATRIX) {
+            iris_transform x;
+            pp_transform_item(ps, &x);
+            n = pp_nor_transform(ps, n, &x);
+            continue;
+        }
+        iris_pattern np = n->pattern;
+        if (pattern_kind(ps, &np)) {
+            iris_pattern keep = n->pattern;
+            n->pattern = np;
+            n->pattern.transform = keep.transform;
+            n->pattern.has_transform = keep.has_transform;
+            n->pattern.n_warps = keep.n_warps;
+            n->pattern.warps = keep.warps;
+            if (list_pattern(np.kind)) {
+                /* checker 0.5 or checker normal{..}, normal{..} */
+                int max = np.kind == IRIS_PAT_HEXAGON ? 3 : 2;
+                iris_map_entry *e = pp_alloc(ps, (size_t)max * sizeof *e);
+                int cnt = 0;
+                while (cnt < max && !pp_next_is_directive(ps)) {
+                    pp_next(ps);
+                    if (ps->tok.kind == T_COMMA && cnt > 0)
+                        pp_next(ps);
+                    if (ps->tok.kind == T_NORMAL) {
+                        e[cnt].normal = pp_normal(ps, NULL);
+                    } else if (ps->tok.kind == T_IDENT &&
+                               ps->tok.val.kind == V_NORMAL) {
+                        e[cnt].normal = ps->tok.val.u.nor;
+                    } else {
+                        pp_unget(ps);
+                        break;
+                    }
+                    e[cnt].value = cnt;
+                    cnt++;
+                }
+                if (cnt) {
+                    n->n_entries = cnt;
+                    n->entries = e;
+                    continue;
+                }
+            }
+            if (normal_pattern_takes_amount(np.kind) &&
+                !pp_next_is_directive(ps)) {
+                pp_accept(ps, T_COMMA);
+                pp_next(ps);
+                bool amt = pp_starts_expr(ps) && ps->tok.kind != T_IDENT;
+                amt = amt || (ps->tok.kind == T_IDENT &&
+                              ps->tok.val.kind == V_FLOAT);
+                pp_unget(ps);
+                if (amt)
+                    n->amount = pp_float(ps);
+            }
+            continue;
+        }
+        if (pattern_mod(ps, &n->pattern))
+            continue;
+        {
+            pp_unexpected(ps, &at, "normal");
+        }
+    }
+}
+
+iris_normal *pp_normal(pp_state *ps, const iris_normal *base)
+{
+    pp_expect(ps, T_LBRACE, "'{' after normal");
+    return normal_body(ps, base, T_RBRACE);
+}
+
+/* ---- finish ------------------------------------------------------ */
+
+/* reflection { [min,] max [fresnel] [falloff f] [exponent f] [metallic f] } */
+static void reflection_block(pp_state *ps, iris_finish *f)
+{
+    iris_colour c1 = pp_colour(ps);
+    f->reflection_min = f->reflection_max = c1;
+    bool two = false;
+    bool comma = pp_accept(ps, T_COMMA);
+    pp_next(ps);
+    bool more = pp_starts_expr(ps) || ps->tok.kind == T_COLOR ||
+                ps->tok.kind == T_RGB || ps->tok.kind == T_SRGB;
+    pp_unget(ps);
+    if (comma || more) {
+        f->reflection_max = pp_colour(ps);
+        two = true;
+    }
+    for (;;) {
+        pp_next(ps);
+        pp_token at = ps->tok;
+        switch (at.kind) {
+        case T_RBRACE:
+            if (f->reflection_fresnel && !two)
+                memset(&f->reflection_min, 0, sizeof f->reflection_min);
+            return;
+        case T_FRESNEL: f->reflection_fresnel = pp_bool_opt(ps); break;
+        case T_FALLOFF: f->reflection_falloff = pp_float(ps); break;
+        case T_EXPONENT: f->reflection_exponent = pp_float(ps); break;
+        case T_METALLIC: {
+            f->reflection_metallic = 1;
+            pp_next(ps);
+            pp_unget(ps);
+            if (pp_starts_expr(ps))
+                f->reflection_metallic = pp_float(ps);
+            break;
+        }
+        default: {
+            pp_unexpected(ps, &at, "reflection");
+        }
+        }
+    }
+}
+
+/* An optional float after a keyword (metallic [f]). */
+static bool opt_float(pp_state *ps, double *out)
+{
+    if (pp_next_is_directive(ps))
+        return false;
+    pp_next(ps);
+    bool yes = pp_starts_expr(ps) && ps->tok.kind != T_LT;
+    pp_unget(ps);
+    if (yes)
+        *out = pp_float(ps);
+    return yes;
+}
+
+iris_finish *pp_finish(pp_state *ps, const iris_finish *base)
+{
+    pp_token open = ps->tok;
+    pp_expect(ps, T_LBRACE, "'{' after finish");
+    iris_finish *f = pp_alloc(ps, sizeof *f);
+    if (base)
+        *f = *base;
+    else
+        iris_finish_defaults(f);
+    f->loc = pp_loc(ps, &open);
+    bool diffuse_albedo = false, phong_albedo = false, spec_albedo = false;
+    for (;;) {
+        pp_next(ps);
+        pp_token at = ps->tok;
+        switch (at.kind) {
+        case T_RBRACE:
+            /* albedo forms, from the final brilliance/phong_size/roughness */
+            if (diffuse_albedo)
+                f->diffuse *= (f->brilliance + 1) / 2;
+            if (phong_albedo)
+                f->phong *= (f->phong_size + 1) / 2;
+            if (spec_albedo && f->roughness > 0) {
+                double r = 1 / f->roughness;
+                f->specular *= (r + 2) / (4 * (2 - pow(2, -r / 2)));
+            }
+            return f;
+        case T_IDENT:
+            if (at.val.kind == V_FINISH) {
+                *f = *at.val.u.fin;
+                break;
+            }
+            goto bad;
+        case T_AMBIENT: f->ambient = pp_colour(ps); break;
+        case T_EMISSION: f->emission = pp_colour(ps); break;
+        case T_DIFFUSE:
+            diffuse_albedo = pp_accept(ps, T_ALBEDO);
+            f->diffuse = pp_float(ps);
+            if (pp_accept(ps, T_COMMA))
+                f->diffuse_back = pp_float(ps);
+            break;
+        case T_BRILLIANCE: f->brilliance = pp_float(ps); break;
+        case T_PHONG:
+            phong_albedo = pp_accept(ps, T_ALBEDO);
+            f->phong = pp_float(ps);
+            break;
+        case T_PHONG_SIZE: f->phong_size = pp_float(ps); break;
+        case T_SPECULAR:
+            spec_albedo = pp_accept(ps, T_ALBEDO);
+            f->specular = pp_float(ps);
+            break;
+        case T_ROUGHNESS: {
+            double r = pp_float(ps);
+            if (r <= 0)
+                pp_error(ps, &at, "roughness must be > 0");
+            f->roughness = r;
+            break;
+        }
+        case T_METALLIC:
+            f->metallic = 1;
+            opt_float(ps, &f->metallic);
+            break;
+        case T_REFLECTION:
+            if (pp_accept(ps, T_LBRACE)) {
+                reflection_block(ps, f);
+            } else {
+                /* the old form: reflection C sets min = max = C */
+                f->reflection_min = f->reflection_max = pp_colour(ps);
+            }
+            break;
+        case T_REFLECTION_EXPONENT: f->reflection_exponent = pp_float(ps); break;
+        case T_CONSERVE_ENERGY: f->conserve_energy = pp_bool_opt(ps); break;
+        case T_CRAND: f->crand = pp_float(ps); break;
+        case T_IRID:
+            pp_expect(ps, T_LBRACE, "'{'");
+            f->irid = pp_float(ps);
+            for (;;) {
+                pp_next(ps);
+                if (ps->tok.kind == T_RBRACE)
+                    break;
+                if (ps->tok.kind == T_THICKNESS)
+                    f->irid_thickness = pp_float(ps);
+                else if (ps->tok.kind == T_TURBULENCE)
+                    f->irid_turbulence = pp_vector(ps);
+                else if (ps->tok.kind != T_COMMA)
+                    pp_error(ps, &ps->tok, "expected thickness or turbulence "
+                             "in irid");
+            }
+            break;
+        case T_IOR: f->legacy_ior = pp_float(ps); break;
+        case T_REFRACTION: f->legacy_refraction = pp_float(ps); break;
+        case T_CAUSTICS: case T_FADE_DISTANCE: case T_FADE_POWER:
+            pp_float(ps);
+            break;
+        case T_SUBSURFACE:
+            pp_warn_once(ps, &at, T_SUBSURFACE, "subsurface");
+            pp_expect(ps, T_LBRACE, "'{'");
+            pp_skip_block(ps);
+            break;
+        default:
+        bad: {
+            pp_unexpected(ps, &at, "finish");
+        }
+        }
+    }
+}
+
+/* ---- textures ---------------------------------------------------- */
+
+iris_texture *pp_default_texture(pp_state *ps)
+{
+    return ps->default_tex;
+}
+
+iris_texture *pp_texture_new(pp_state *ps, const pp_token *at)
+{
+    iris_texture *t = pp_alloc(ps, sizeof *t);
+    const iris_texture *d = pp_default_texture(ps);
+    *t = *d;
+    t->next = NULL;
+    t->loc = pp_loc(ps, at);
+    pp_pattern_init(&t->map_pattern);
+    t->n_entries = 0;
+    t->entries = NULL;
+    return t;
+}
+
+/* The items of a texture up to 'end'. */
+static iris_texture *texture_body(pp_state *ps, int end)
+{
+    pp_next(ps);
+    pp_token open = ps->tok;
+    pp_unget(ps);
+    iris_texture *t = pp_texture_new(ps, &open);
+    for (;;) {
+        pp_next(ps);
+        pp_token at = ps->tok;
+        int k = at.kind;
+        if (k == end)
+            return t;
+        switch (k) {
+        case T_EOF:
+            pp_error(ps, &open, "texture without its closing bracket");
+        case T_IDENT:
+            if (at.val.kind == V_TEXTURE) {
+                iris_texture *n = pp_alloc(ps, sizeof *n);
+                *n = *at.val.u.tex;
+                t = n;
+                continue;
+            }
+            if (at.val.kind == V_TEXTURE_MAP) {
+                t->n_entries = at.val.u.map->n;
+                t->entries = at.val.u.map->e;
+                continue;
+            }
+            break;
+        case T_PIGMENT:
+            t->pigment = pp_pigment(ps, t->pigment);
+            continue;
+        case T_NORMAL:
+            t->normal = pp_normal(ps, t->normal);
+            continue;
+        case T_FINISH:
+            t->finish = pp_finish(ps, t->finish);
+            continue;
+        case T_TEXTURE_MAP: {
+            pp_map *m = pp_map_block(ps, V_TEXTURE_MAP);
+            t->n_entries = m->n;
+            t->entries = m->e;
+            continue;
+        }
+        case T_TILES: {
+            /* the old tiles { texture{} tile2 texture{} }: a checker */
+            pp_expect(ps, T_LBRACE, "'{'");
+            iris_map_entry *e = pp_alloc(ps, 2 * sizeof *e);
+            int cnt = 0;
+            for (;;) {
+                pp_next(ps);
+                if (ps->tok.kind == T_RBRACE)
+                    break;
+                if (ps->tok.kind == T_TILE2) {
+                    cnt = 1;
+                    continue;
+                }
+                if (ps->tok.kind != T_TEXTURE)
+                    pp_unexpected(ps, &ps->tok, "tiles");
+                iris_texture *tt = pp_texture(ps);
+                tt->next = e[cnt].texture;
+                e[cnt].texture = tt;
+                e[cnt].value = cnt;
+            }
+            pp_pattern_init(&t->map_pattern);
+            t->map_pattern.kind = IRIS_PAT_CHECKER;
+            t->n_entries = 2;
+            t->entries = e;
+            continue;
+        }
+        case T_UV_MAPPING:
+            continue;
+        case T_MATERIAL_MAP:
+            pp_warn_once(ps, &at, T_MATERIAL_MAP, "material_map");
+            pp_expect(ps, T_LBRACE, "'{'");
+            pp_skip_block(ps);
+            continue;
+        case T_TRANSFORM: case T_TRANSLATE: case T_ROTATE: case T_SCALE:
+        case T_MATRIX: {
+            iris_transform x;
+            pp_transform_item(ps, &x);
+            t = pp_tex_transform(ps, t, &x);
+            continue;
+        }
+        default:
+            break;
+        }
+        iris_pattern np = t->map_pattern;
+        if (pattern_kind(ps, &np)) {
+            t->map_pattern.kind = np.kind;
+            t->map_pattern.vector = np.vector;
+            t->map_pattern.fn = np.fn;
+            t->map_pattern.image = np.image;
+            t->map_pattern.object = np.object;
+            t->map_pattern.wave = np.wave;
+            t->map_pattern.iterations = np.iterations;
+            t->map_pattern.complex_c = np.complex_c;
+            memcpy(t->map_pattern.params, np.params, sizeof np.params);
+            if (list_pattern(np.kind)) {
+                int max = np.kind == IRIS_PAT_HEXAGON ? 3 :
+                          np.kind == IRIS_PAT_SQUARE ? 4 :
+                          np.kind == IRIS_PAT_TRIANGULAR ? 6 : 2;
+                iris_map_entry *e = pp_alloc(ps, (size_t)max * sizeof *e);
+                int cnt = 0;
+                while (cnt < max && !pp_next_is_directive(ps)) {
+                    pp_next(ps);
+                    if (ps->tok.kind == T_COMMA && cnt > 0)
+                        pp_next(ps);
+                    if (ps->tok.kind == T_TEXTURE) {
+                        e[cnt].texture = pp_texture(ps);
+                    } else if (ps->tok.kind == T_IDENT &&
+                               ps->tok.val.kind == V_TEXTURE) {
+                        e[cnt].texture = ps->tok.val.u.tex;
+                    } else {
+                        pp_unget(ps);
+                        break;
+                    }
+                    e[cnt].value = cnt;
+                    cnt++;
+                }
+                t->n_entries = cnt;
+                t->entries = e;
+            }
+            continue;
+        }
+        if (t->map_pattern.kind != IRIS_PAT_NONE &&
+            pattern_mod(ps, &t->map_pattern))
+            continue;
+        if (k == T_TURBULENCE || k == T_OCTAVES || k == T_OMEGA ||
+            k == T_LAMBDA || k == T_WARP) {
+            /* texture-level turbulence applies to its pigment */
+            if (t->pigment) {
+                iris_pigment *p = pp_alloc(ps, sizeof *p);
+                *p = *t->pigment;
+                pattern_mod(ps, &p->pattern);
+                t->pigment = p;
+                continue;
+            }
+        }
+        {
+            pp_unexpected(ps, &at, "texture");
+        }
+    }
+}
+
+iris_texture *pp_texture(pp_state *ps)
+{
+    pp_expect(ps, T_LBRACE, "'{' after texture");
+    return texture_body(ps, T_RBRACE);
+}
+
+/* ---- interior ---------------------------------------------------- */
+
+/* Sellmeier coefficients of the built-in glass catalogue, from
+** ../shared/data/glass_sellmeier.csv (SCHOTT catalogue 2017 and
+** refractiveindex.info; see that file for each row's source). */
+static const struct glass {
+    const char *name;
+    double b[4], c[4];
+} glasses[] = {
+    { "N-BK7", { 1.03961212, 0.231792344, 1.01046945, 0 },
+      { 0.00600069867, 0.0200179144, 103.560653, 0 } },
+    { "N-BAK1", { 1.12365662, 0.309276848, 0.881511957, 0 },
+      { 0.00644742752, 0.0222284402, 107.297751, 0 } },
+    { "N-FK51A", { 0.971247817, 0.216901417, 0.904651666, 0 },
+      { 0.00472301995, 0.0153575612, 168.68133, 0 } },
+    { "N-BAF10", { 1.5851495, 0.143559385, 1.08521269, 0 },
+      { 0.00926681282, 0.0424489805, 105.613573, 0 } },
+    { "F2", { 1.34533359, 0.209073176, 0.937357162, 0 },
+      { 0.00997743871, 0.0470450767, 111.886764, 0 } },
+    { "N-SF5", { 1.52481889, 0.187085527, 1.42729015, 0 },
+      { 0.011254756, 0.0588995392, 129.141675, 0 } },
+    { "N-SF10", { 1.62153902, 0.256287842, 1.64447552, 0 },
+      { 0.0122241457, 0.0595736775, 147.468793, 0 } },
+    { "N-SF11", { 1.73759695, 0.313747346, 1.89878101, 0 },
+      { 0.013188707, 0.0623068142, 155.23629, 0 } },
+    { "N-LASF9", { 2.00029547, 0.298926886, 1.80691843, 0 },
+      { 0.0121426017, 0.0538736236, 156.530829, 0 } },
+    { "fused_silica", { 0.6961663, 0.4079426, 0.8974794, 0 },
+      { 0.004679148258, 0.01351206307, 97.93400254, 0 } },
+    { "sapphire_o", { 1.4313493, 0.65054713, 5.3414021, 0 },
+      { 0.005279926102, 0.01423826471, 325.0178341, 0 } },
+    { "sapphire_e", { 1.5039759, 0.55069141, 6.5927379, 0 },
+      { 0.005480263229, 0.01479942808, 402.8951398, 0 } },
+    { "diamond", { 0.3306, 4.3356, 0, 0 }, { 0.030625, 0.011236, 0, 0 } },
+    { "water_20C", { 0.5684027565, 0.1726177391, 0.02086189578, 0.1130748688 },
+      { 0.005101829712, 0.01821153936, 0.02620722293, 10.69792721 } },
+};
+
+static bool ident_is(pp_state *ps, const pp_token *t, const char *word)
+{
+    size_t n = strlen(word);
+    return t->kind == T_IDENT && t->len == n &&
+           memcmp(pp_tok_text(ps, t), word, n) == 0;
+}
+
+/* The iris IOR extensions; false when 'at' is none of them. */
+static bool ior_extension(pp_state *ps, iris_interior *in, const pp_token *at)
+{
+    iris_ior_spec *s = pp_alloc(ps, sizeof *s);
+    s->loc = pp_loc(ps, at);
+    if (ident_is(ps, at, "glass")) {
+        pp_token nt;
+        pp_next(ps);
+        nt = ps->tok;
+        pp_unget(ps);
+        const char *name = pp_string(ps);
+        size_t i;
+        for (i = 0; i < sizeof glasses / sizeof glasses[0]; i++)
+            if (strcmp(glasses[i].name, name) == 0)
+                break;
+        if (i == sizeof glasses / sizeof glasses[0])
+            pp_error(ps, &nt, "unknown glass \"%s\" (the catalogue has "
+                     "N-BK7, N-BAK1, N-FK51A, N-BAF10, F2, N-SF5, N-SF10, "
+                     "N-SF11, N-LASF9, fused_silica, sapphire_o, sapphire_e, "
+                     "diamond, water_20C)", name);
+        s->model = IRIS_IOR_SELLMEIER;
+        s->glass_name = glasses[i].name;
+        memcpy(s->b, glasses[i].b, sizeof s->b);
+        memcpy(s->c, glasses[i].c, sizeof s->c);
+    } else if (ident_is(ps, at, "sellmeier")) {
+        iris_vec3 b = pp_vector(ps);
+        pp_expect(ps, T_COMMA, "','");
+        iris_vec3 c = pp_vector(ps);
+        s->model = IRIS_IOR_SELLMEIER;
+        s->b[0] = b.x; s->b[1] = b.y; s->b[2] = b.z;
+        s->c[0] = c.x; s->c[1] = c.y; s->c[2] = c.z;
+        if (b.x < 0 || b.y < 0 || b.z < 0 || c.x < 0 || c.y < 0 || c.z < 0)
+            pp_error(ps, at, "sellmeier coefficients must be >= 0");
+    } else if (ident_is(ps, at, "cauchy")) {
+        s->model = IRIS_IOR_CAUCHY;
+        s->cauchy_a = pp_float(ps);
+        pp_expect(ps, T_COMMA, "','");
+        s->cauchy_b = pp_float(ps);
+        if (s->cauchy_a < 1)
+            pp_error(ps, at, "cauchy A must be >= 1 (it is the index at long "
+                     "wavelengths)");
+    } else if (ident_is(ps, at, "abbe")) {
+        s->model = IRIS_IOR_ABBE;
+        s->abbe_nd = pp_float(ps);
+        pp_expect(ps, T_COMMA, "','");
+        s->abbe_vd = pp_float(ps);
+        if (s->abbe_nd < 1 || s->abbe_vd <= 0)
+            pp_error(ps, at, "abbe needs n_d >= 1 and V_d > 0");
+    } else if (ident_is(ps, at, "ior_decay")) {
+        s->model = IRIS_IOR_DECAY;
+        s->decay_n1 = pp_float(ps);
+        pp_expect(ps, T_COMMA, "','");
+        s->decay_n2 = pp_float(ps);
+        pp_expect(ps, T_COMMA, "','");
+        s->decay_spread = pp_float(ps);
+        if (s->decay_spread <= 0)
+            pp_error(ps, at, "ior_decay spread must be > 0");
+        if (s->decay_n1 < 1 || s->decay_n2 < 1)
+            pp_error(ps, at, "ior_decay indices must be >= 1");
+    } else {
+        return false;
+    }
+    in->spectral_ior = s;
+    return true;
+}
+
+iris_interior *pp_interior(pp_state *ps, const iris_interior *base)
+{
+    pp_token open = ps->tok;
+    pp_expect(ps, T_LBRACE, "'{' after interior");
+    iris_interior *in = pp_alloc(ps, sizeof *in);
+    if (base)
+        *in = *base;
+    else
+        iris_interior_defaults(in);
+    in->loc = pp_loc(ps, &open);
+    for (;;) {
+        pp_next(ps);
+        pp_token at = ps->tok;
+        switch (at.kind) {
+        case T_RBRACE:
+            return in;
+        case T_IDENT:
+            if (at.val.kind == V_INTERIOR) {
+                *in = *at.val.u.inter;
+                break;
+            }
+            if (ior_extension(ps, in, &at))
+                break;
+            goto bad;
+        case T_IOR: in->ior = pp_float(ps); break;
+        case T_DISPERSION: in->dispersion = pp_float(ps); break;
+        case T_DISPERSION_SAMPLES: {
+            double n = pp_float(ps);
+            if (n < 2)
+                pp_error(ps, &at, "dispersion_samples must be at least 2");
+            in->dispersion_samples = (int)n;
+            break;
+        }
+        case T_CAUSTICS: in->caustics = pp_float(ps); break;
+        case T_FADE_DISTANCE: in->fade_distance = pp_float(ps); break;
+        case T_FADE_POWER: in->fade_power = pp_float(ps); break;
+        case T_FADE_COLOR: in->fade_colour = pp_colour(ps); break;
+        case T_MEDIA:
+            pp_warn_once(ps, &at, T_MEDIA, "media");
+            pp_expect(ps, T_LBRACE, "'{'");
+            pp_skip_block(ps);
+            in->has_media = true;
+            break;
+        default:
+        bad: {
+            pp_unexpected(ps, &at, "interior");
+        }
+        }
+    }
+}
+
+/* material { [MATERIAL_ID] texture{} interior{} interior_texture{} ... } */
+pp_material *pp_material_block(pp_state *ps)
+{
+    pp_expect(ps, T_LBRACE, "'{' after material");
+    pp_material *m = pp_salloc(ps, sizeof *m);
+    for (;;) {
+        pp_next(ps);
+        pp_token at = ps->tok;
+        switch (at.kind) {
+        case T_RBRACE:
+            return m;
+        case T_IDENT:
+            if (at.val.kind == V_MATERIAL) {
+                *m = *at.val.u.mat;
+                break;
+            }
+            goto bad;
+        case T_TEXTURE: {
+            iris_texture *t = pp_texture(ps);
+            t->next = m->tex;
+            m->tex = t;
+            break;
+        }
+        case T_INTERIOR_TEXTURE:
+            m->interior_tex = pp_texture(ps);
+            break;
+        case T_INTERIOR:
+            m->inter = pp_interior(ps, m->inter);
+            break;
+        default: {
+            iris_transform x;
+            if (pp_transform_item(ps, &x)) {
+                m->tex = pp_tex_transform(ps, m->tex, &x);
+                m->interior_tex = pp_tex_transform(ps, m->interior_tex, &x);
+                break;
+            }
+        }
+        bad: {
+            pp_unexpected(ps, &at, "material");
+        }
+        }
+    }
+}
+
+/* ---- atmosphere -------------------------------------------------- */
+
+/* fog { [fog_type n] distance d colour C [turbulence ...] [fog_offset]
+**       [fog_alt] [up v] [transforms] } */
+iris_fog *pp_fog(pp_state *ps)
+{
+    pp_token open = ps->tok;
+    pp_expect(ps, T_LBRACE, "'{' after fog");
+    iris_fog *f = pp_alloc(ps, sizeof *f);
+    f->loc = pp_loc(ps, &open);
+    f->kind = IRIS_FOG_CONSTANT;
+    f->up = v3(0, 1, 0);
+    f->octaves = 6;
+    f->omega = 0.5;
+    f->lambda = 2;
+    f->turb_depth = 0.5;
+    xf_identity(&f->transform);
+    for (;;) {
+        pp_next(ps);
+        pp_token at = ps->tok;
+        switch (at.kind) {
+        case T_RBRACE: return f;
+        case T_IDENT:
+            if (at.val.kind == V_FOG) {
+                *f = *at.val.u.fog;
+                break;
+            }
+            pp_unget(ps);
+            f->colour = pp_colour(ps);
+            break;
+        case T_FOG_TYPE: f->kind = (int)pp_float(ps) == 2 ? IRIS_FOG_GROUND
+                                                         : IRIS_FOG_CONSTANT; break;
+        case T_DISTANCE: f->distance = pp_float(ps); break;
+        case T_TURBULENCE: f->turbulence = pp_vector(ps); break;
+        case T_TURB_DEPTH: f->turb_depth = pp_float(ps); break;
+        case T_OCTAVES: f->octaves = (int)pp_float(ps); break;
+        case T_OMEGA: f->omega = pp_float(ps); break;
+        case T_LAMBDA: f->lambda = pp_float(ps); break;
+        case T_FOG_OFFSET: f->offset = pp_float(ps); break;
+        case T_FOG_ALT: f->alt = pp_float(ps); break;
+        case T_UP: f->up = pp_vector(ps); break;
+        case T_COLOR: case T_RGB: case T_RGBF: case T_RGBT: case T_RGBFT:
+        case T_SRGB: case T_SRGBF: case T_SRGBT: case T_SRGBFT:
+            pp_unget(ps);
+            f->colour = pp_colour(ps);
+            break;
+        default: {
+            iris_transform x;
+            if (pp_transform_item(ps, &x)) {
+                xf_compose(&f->transform, &f->transform, &x);
+                f->has_transform = true;
+                break;
+            }
+            pp_unexpected(ps, &at, "fog");
+        }
+        }
+    }
+}
+
+/* sky_sphere { [SKY_ID] pigment{}... [emission C] [transforms] } */
+iris_sky_sphere *pp_sky_sphere(pp_state *ps, const iris_sky_sphere *b)
+{
+    pp_token open = ps->tok;
+    pp_expect(ps, T_LBRACE, "'{' after sky_sphere");
+    iris_sky_sphere *s = pp_alloc(ps, sizeof *s);
+    if (b) {
+        *s = *b;
+    } else {
+        s->emission = 1;
+        xf_identity(&s->transform);
+    }
+    s->loc = pp_loc(ps, &open);
+    for (;;) {
+        pp_next(ps);
+        pp_token at = ps->tok;
+        switch (at.kind) {
+        case T_RBRACE: return s;
+        case T_IDENT:
+            if (at.val.kind == V_SKY_SPHERE) {
+                *s = *at.val.u.sky;
+                break;
+            }
+            goto bad;
+        case T_PIGMENT: {
+            iris_pigment **np = pp_alloc(ps, (size_t)(s->n_pigments + 1) *
+                                                 sizeof *np);
+            if (s->n_pigments)
+                memcpy(np, s->pigments, (size_t)s->n_pigments * sizeof *np);
+            np[s->n_pigments++] = pp_pigment(ps, NULL);
+            s->pigments = np;
+            break;
+        }
+        case T_EMISSION: {
+            iris_colour c = pp_colour(ps);
+            s->emission = (c.r + c.g + c.b) / 3;
+            break;
+        }
+        default: {
+            iris_transform x;
+            if (pp_transform_item(ps, &x)) {
+                xf_compose(&s->transform, &s->transform, &x);
+                s->has_transform = true;
+                break;
+            }
+        }
+        bad: {
+            pp_unexpected(ps, &at, "sky_sphere");
+        }
+        }
+    }
+}

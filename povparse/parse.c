@@ -1,0 +1,208 @@
+/* SPDX-License-Identifier: MIT */
+/*
+** parse.c: the entry points iris_parse_file() and iris_parse_string(),
+** the single setjmp every parse error returns to, and the memory helpers.
+**
+** The scene and everything it points to live in the scene arena; symbol
+** values, arrays, macro records and file texts live in a scratch arena
+** freed when the parse ends, on success and on error alike. Both arenas
+** carry a byte limit (opts->max_memory), so no input can grow memory
+** without bound.
+*/
+#include "config.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "pp.h"
+#include "util/mem.h"
+
+void *pp_alloc(pp_state *ps, size_t n)
+{
+    void *p = arena_alloc(ps->A, n ? n : 1);
+    if (!p)
+        pp_nomem(ps);
+    return p;
+}
+
+void *pp_salloc(pp_state *ps, size_t n)
+{
+    void *p = arena_alloc(ps->S, n ? n : 1);
+    if (!p)
+        pp_nomem(ps);
+    return p;
+}
+
+char *pp_strdup(pp_state *ps, const char *s, size_t n)
+{
+    char *p = arena_strndup(ps->A, s, n);
+    if (!p)
+        pp_nomem(ps);
+    return p;
+}
+
+/* The default texture: black pigment, default finish, no normal. */
+static void make_defaults(pp_state *ps)
+{
+    iris_texture *t = pp_alloc(ps, sizeof *t);
+    iris_pigment *p = pp_alloc(ps, sizeof *p);
+    iris_finish *f = pp_alloc(ps, sizeof *f);
+    pp_pattern_init(&p->pattern);
+    iris_finish_defaults(f);
+    pp_pattern_init(&t->map_pattern);
+    t->pigment = p;
+    t->finish = f;
+    ps->default_tex = t;
+    ps->default_pigment = p;
+    ps->default_finish = f;
+}
+
+static void define_float(pp_state *ps, const char *name, double v)
+{
+    pp_sym *s = sym_define(ps, 0, name, strlen(name));
+    s->val.kind = V_FLOAT;
+    s->val.dim = 1;
+    s->val.v[0] = v;
+}
+
+/* Declare=Name=Value options become a prelude read before the scene. */
+static void push_declares(pp_state *ps)
+{
+    for (int i = ps->opt.n_declares - 1; i >= 0; i--) {
+        const iris_declare *d = &ps->opt.declares[i];
+        if (!d->name || !d->value)
+            continue;
+        size_t n = strlen(d->name) + strlen(d->value) + 32;
+        char *text = pp_salloc(ps, n);
+        snprintf(text, n, "#declare %s = %s;\n", d->name, d->value);
+        char name[300];
+        snprintf(name, sizeof name, "<Declare=%.200s>", d->name);
+        uint32_t f = pp_add_text(ps, name, text, strlen(text));
+        pp_push_frame(ps, FR_STRING, f, 0, NULL);
+    }
+}
+
+static void fill_files(pp_state *ps)
+{
+    iris_scene *sc = ps->scene;
+    sc->n_files = ps->n_files + 1;
+    sc->files = pp_alloc(ps, (size_t)sc->n_files * sizeof *sc->files);
+    sc->files[0] = "";
+    for (int i = 0; i < ps->n_files; i++)
+        sc->files[i + 1] = pp_strdup(ps, ps->files[i].path,
+                                     strlen(ps->files[i].path));
+}
+
+static void release(pp_state *ps)
+{
+    pp_close_files(ps);
+    sym_free_all(ps);
+    iris_free(ps->frames);
+    iris_free(ps->conds);
+    iris_free(ps->files);
+    arena_destroy(ps->S);
+}
+
+static enum iris_status run(const char *name, const char *text, size_t len,
+                            const iris_parse_options *opts,
+                            iris_scene **out, iris_diag_list *diags)
+{
+    *out = NULL;
+    pp_state *ps = iris_calloc(1, sizeof *ps);
+    if (!ps)
+        return IRIS_ENOMEM;
+    if (opts)
+        ps->opt = *opts;
+    if (ps->opt.max_while_iterations <= 0)
+        ps->opt.max_while_iterations = 10000000;
+    if (ps->opt.max_include_depth <= 0)
+        ps->opt.max_include_depth = 64;
+    if (ps->opt.max_macro_depth <= 0)
+        ps->opt.max_macro_depth = 256;
+    if (ps->opt.max_memory == 0)
+        ps->opt.max_memory = (size_t)2 << 30;
+    if (ps->opt.image_width <= 0)
+        ps->opt.image_width = 800;
+    if (ps->opt.image_height <= 0)
+        ps->opt.image_height = 600;
+    ps->diags = diags;
+    ps->A = arena_create(ps->opt.max_memory);
+    ps->S = arena_create(ps->opt.max_memory);
+    if (!ps->A || !ps->S) {
+        arena_destroy(ps->A);
+        arena_destroy(ps->S);
+        iris_free(ps);
+        return IRIS_ENOMEM;
+    }
+    if (setjmp(ps->jb)) {
+        enum iris_status st = ps->fail_status ? ps->fail_status : IRIS_EPARSE;
+        release(ps);
+        arena_destroy(ps->A);
+        iris_free(ps);
+        return st;
+    }
+    iris_scene *sc = pp_alloc(ps, sizeof *sc);
+    ps->scene = sc;
+    sc->arena = ps->A;
+    sc->version = 3.7;
+    ps->version = 3.7;
+    iris_camera_defaults(&sc->camera);
+    iris_global_defaults(&sc->settings);
+    sc->background.t = 1;
+    sc->image_width = ps->opt.image_width;
+    sc->image_height = ps->opt.image_height;
+    ps->warned = pp_salloc(ps, T_NUM_TOKENS);
+    lex_init_keywords(ps);
+    sym_push_scope(ps);
+    define_float(ps, "iris_version", 0.1);
+    make_defaults(ps);
+
+    if (text) {
+        char *copy = pp_salloc(ps, len + 1);
+        memcpy(copy, text, len);
+        copy[len] = 0;
+        uint32_t f = pp_add_text(ps, name, copy, len);
+        pp_push_frame(ps, FR_FILE, f, 0, NULL);
+    } else {
+        ps->fail_status = IRIS_EIO;
+        pp_open_file(ps, name, false, NULL);
+        ps->fail_status = 0;
+    }
+    push_declares(ps);
+    pp_scene_items(ps);
+    if (ps->n_conds > 0) {
+        pp_cond *c = &ps->conds[ps->n_conds - 1];
+        pp_error_at(ps, c->file, c->off, 1, "directive without #end");
+    }
+    fill_files(ps);
+    release(ps);
+    iris_free(ps);
+    *out = sc;
+    return IRIS_OK;
+}
+
+enum iris_status iris_parse_file(const char *path,
+                                 const iris_parse_options *opts,
+                                 iris_scene **out, iris_diag_list *diags)
+{
+    if (!path || !out) {
+        if (out)
+            *out = NULL;
+        return IRIS_EINVAL;
+    }
+    return run(path, NULL, 0, opts, out, diags);
+}
+
+enum iris_status iris_parse_string(const char *name, const char *text,
+                                   size_t len,
+                                   const iris_parse_options *opts,
+                                   iris_scene **out, iris_diag_list *diags)
+{
+    if (!text || !out) {
+        if (out)
+            *out = NULL;
+        return IRIS_EINVAL;
+    }
+    return run(name ? name : "<string>", text, len, opts, out, diags);
+}

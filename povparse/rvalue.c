@@ -1,0 +1,217 @@
+/* SPDX-License-Identifier: MIT */
+/*
+** rvalue.c: what may follow '#declare X =': any kind of value (numbers,
+** strings, objects, textures, arrays, splines, functions, maps, ...), as
+** POV-Ray's Parse_RValue. Arrays and splines are built here.
+*/
+#include "config.h"
+
+#include <string.h>
+
+#include "pp.h"
+
+#define MAX_ARRAY_ELEMS (1L << 24)
+
+/* One element of an array initialiser: nested braces per dimension. */
+static void array_init(pp_state *ps, pp_array *arr, int d, long base)
+{
+    pp_expect(ps, T_LBRACE, "'{'");
+    long stride = 1;
+    for (int k = d + 1; k < arr->ndim; k++)
+        stride *= arr->dims[k];
+    for (int i = 0; i < arr->dims[d]; i++) {
+        if (i > 0)
+            pp_expect(ps, T_COMMA, "','");
+        if (d + 1 < arr->ndim) {
+            array_init(ps, arr, d + 1, base + i * stride);
+        } else {
+            pp_value v = pp_rvalue(ps);
+            arr->items[base + i] = v;
+        }
+    }
+    pp_accept(ps, T_COMMA);
+    pp_expect(ps, T_RBRACE, "'}' (the initialiser has more elements than "
+              "the array)");
+}
+
+/* array '[' n ']' ... [ '{' initialiser '}' ] */
+static pp_array *array_value(pp_state *ps, const pp_token *at)
+{
+    pp_array *arr = pp_salloc(ps, sizeof *arr);
+    long n = 1;
+    while (pp_accept(ps, T_LBRACKET)) {
+        pp_token dt = ps->tok;
+        double f = pp_float(ps);
+        pp_expect(ps, T_RBRACKET, "']'");
+        if (arr->ndim >= 5)
+            pp_error(ps, &dt, "arrays have at most 5 dimensions");
+        if (!(f >= 1) || f > MAX_ARRAY_ELEMS)
+            pp_error(ps, &dt, "array size %g out of range [1, %ld]", f,
+                     MAX_ARRAY_ELEMS);
+        arr->dims[arr->ndim++] = (int)f;
+        n *= (long)f;
+        if (n > MAX_ARRAY_ELEMS)
+            pp_error(ps, &dt, "array of more than %ld elements",
+                     MAX_ARRAY_ELEMS);
+    }
+    if (arr->ndim == 0)
+        pp_error(ps, at, "array needs a size: array[N]");
+    arr->n = n;
+    arr->items = pp_salloc(ps, (size_t)n * sizeof *arr->items);
+    if (!pp_next_is_directive(ps)) {
+        pp_next(ps);
+        pp_unget(ps);
+        if (ps->tok.kind == T_LBRACE)
+            array_init(ps, arr, 0, 0);
+    }
+    return arr;
+}
+
+/* spline { [type] t, <v> [,] ... } */
+static pp_spline *spline_value(pp_state *ps)
+{
+    pp_expect(ps, T_LBRACE, "'{'");
+    pp_spline *s = pp_salloc(ps, sizeof *s);
+    int cap = 0;
+    for (;;) {
+        pp_next(ps);
+        switch (ps->tok.kind) {
+        case T_LINEAR_SPLINE: s->type = 0; continue;
+        case T_QUADRATIC_SPLINE: s->type = 1; continue;
+        case T_CUBIC_SPLINE: s->type = 2; continue;
+        case T_NATURAL_SPLINE: s->type = 3; continue;
+        case T_RBRACE:
+            return s;
+        case T_IDENT:
+            if (ps->tok.val.kind == V_SPLINE) {
+                *s = *ps->tok.val.u.spline;
+                continue;
+            }
+            break;
+        default:
+            break;
+        }
+        pp_unget(ps);
+        double t = pp_float(ps);
+        pp_accept(ps, T_COMMA);
+        pp_value v = pp_expr(ps);
+        pp_accept(ps, T_COMMA);
+        if (s->n == cap) {
+            int nc = cap ? cap * 2 : 16;
+            double *nt = pp_salloc(ps, (size_t)nc * sizeof *nt);
+            double (*np)[5] = pp_salloc(ps, (size_t)nc * sizeof *np);
+            if (s->n) {
+                memcpy(nt, s->t, (size_t)s->n * sizeof *nt);
+                memcpy(np, s->p, (size_t)s->n * sizeof *np);
+            }
+            s->t = nt;
+            s->p = np;
+            cap = nc;
+        }
+        /* keys are kept sorted by t */
+        int i = s->n;
+        while (i > 0 && s->t[i - 1] > t) {
+            s->t[i] = s->t[i - 1];
+            memcpy(s->p[i], s->p[i - 1], sizeof s->p[i]);
+            i--;
+        }
+        s->t[i] = t;
+        memset(s->p[i], 0, sizeof s->p[i]);
+        for (int k = 0; k < v.dim && k < 5; k++)
+            s->p[i][k] = v.v[k];
+        if (v.dim > s->dim)
+            s->dim = v.dim;
+        s->n++;
+    }
+}
+
+static pp_value make(int kind, void *p)
+{
+    pp_value v;
+    memset(&v, 0, sizeof v);
+    v.kind = kind;
+    v.u.ptr = p;
+    return v;
+}
+
+pp_value pp_rvalue(pp_state *ps)
+{
+    pp_next(ps);
+    pp_token at = ps->tok;
+    switch (at.kind) {
+    case T_TEXTURE: {
+        /* consecutive textures make a layered texture, the last on top */
+        iris_texture *t = pp_texture(ps);
+        while (!pp_next_is_directive(ps) && pp_accept(ps, T_TEXTURE)) {
+            iris_texture *top = pp_texture(ps);
+            iris_texture *last = top;
+            while (last->next)
+                last = last->next;
+            last->next = t;
+            t = top;
+        }
+        return make(V_TEXTURE, t);
+    }
+    case T_PIGMENT: return make(V_PIGMENT, pp_pigment(ps, NULL));
+    case T_NORMAL: return make(V_NORMAL, pp_normal(ps, NULL));
+    case T_FINISH: return make(V_FINISH, pp_finish(ps, NULL));
+    case T_INTERIOR: return make(V_INTERIOR, pp_interior(ps, NULL));
+    case T_MATERIAL: return make(V_MATERIAL, pp_material_block(ps));
+    case T_TRANSFORM: return make(V_TRANSFORM, pp_transform_block(ps));
+    case T_CAMERA: return make(V_CAMERA, pp_camera(ps, NULL));
+    case T_LIGHT_SOURCE: return make(V_LIGHT, pp_light(ps));
+    case T_FOG: return make(V_FOG, pp_fog(ps));
+    case T_SKY_SPHERE: return make(V_SKY_SPHERE, pp_sky_sphere(ps, NULL));
+    case T_FUNCTION: return make(V_FUNCTION, pp_function(ps));
+    case T_SPLINE: return make(V_SPLINE, spline_value(ps));
+    case T_ARRAY: return make(V_ARRAY, array_value(ps, &at));
+    case T_COLOR_MAP: return make(V_COLOUR_MAP, pp_map_block(ps, V_COLOUR_MAP));
+    case T_PIGMENT_MAP:
+        return make(V_PIGMENT_MAP, pp_map_block(ps, V_PIGMENT_MAP));
+    case T_NORMAL_MAP:
+        return make(V_NORMAL_MAP, pp_map_block(ps, V_NORMAL_MAP));
+    case T_TEXTURE_MAP:
+        return make(V_TEXTURE_MAP, pp_map_block(ps, V_TEXTURE_MAP));
+    case T_SLOPE_MAP: return make(V_SLOPE_MAP, pp_map_block(ps, V_SLOPE_MAP));
+    case T_RAINBOW: case T_MEDIA: case T_DENSITY: case T_DENSITY_MAP:
+    case T_PHOTONS: case T_RADIOSITY: {
+        pp_warn_once(ps, &at, at.kind, lex_keyword_name(at.kind));
+        pp_expect(ps, T_LBRACE, "'{'");
+        pp_skip_block(ps);
+        return make(at.kind == T_MEDIA ? V_MEDIA : V_UNSUPPORTED, NULL);
+    }
+    case T_IDENT: {
+        int k = at.val.kind;
+        if (k == V_NONE)
+            pp_error(ps, &at, "undeclared identifier '%.*s'", (int)at.len,
+                     pp_tok_text(ps, &at));
+        bool callable = k == V_FUNCTION || k == V_SPLINE || k == V_ARRAY;
+        if (callable && !pp_next_is_directive(ps)) {
+            pp_next(ps);
+            int nk = ps->tok.kind;
+            pp_unget(ps);
+            if (nk == T_LPAREN || nk == T_LBRACKET)
+                callable = false; /* a call or an element: an expression */
+            else
+                return at.val;
+        } else if (callable) {
+            return at.val;
+        }
+        if (!callable && k != V_FLOAT && k != V_VECTOR && k != V_COLOUR &&
+            k != V_STRING && k != V_FUNCTION && k != V_SPLINE &&
+            k != V_ARRAY) {
+            /* objects are copied on use, so sharing is safe */
+            return at.val;
+        }
+        break;
+    }
+    default:
+        break;
+    }
+    pp_unget(ps);
+    if (pp_starts_object(ps)) {
+        iris_object *o = pp_object(ps);
+        return make(V_OBJECT, o);
+    }
+    return pp_expr(ps);
+}

@@ -1,0 +1,426 @@
+/* SPDX-License-Identifier: MIT */
+/*
+** scene.c: the top level of a scene file: camera (resolved in POV-Ray's
+** fixed order), objects, lights, global_settings, background, sky_sphere
+** and fog.
+*/
+#include "config.h"
+
+#include <math.h>
+#include <string.h>
+
+#include "math/vec3.h"
+#include "pp.h"
+
+void pp_add_object(pp_state *ps, iris_object *o)
+{
+    iris_scene *sc = ps->scene;
+    if (sc->n_objects == ps->cap_objects) {
+        int cap = ps->cap_objects ? ps->cap_objects * 2 : 16;
+        iris_object **a = pp_alloc(ps, (size_t)cap * sizeof *a);
+        if (sc->n_objects)
+            memcpy(a, sc->objects, (size_t)sc->n_objects * sizeof *a);
+        sc->objects = a;
+        ps->cap_objects = cap;
+    }
+    sc->objects[sc->n_objects++] = o;
+}
+
+void pp_add_light(pp_state *ps, iris_light *l)
+{
+    iris_scene *sc = ps->scene;
+    if (sc->n_lights == ps->cap_lights) {
+        int cap = ps->cap_lights ? ps->cap_lights * 2 : 8;
+        iris_light **a = pp_alloc(ps, (size_t)cap * sizeof *a);
+        if (sc->n_lights)
+            memcpy(a, sc->lights, (size_t)sc->n_lights * sizeof *a);
+        sc->lights = a;
+        ps->cap_lights = cap;
+    }
+    sc->lights[sc->n_lights++] = l;
+}
+
+static void add_fog(pp_state *ps, iris_fog *f)
+{
+    iris_scene *sc = ps->scene;
+    if (sc->n_fogs == ps->cap_fogs) {
+        int cap = ps->cap_fogs ? ps->cap_fogs * 2 : 4;
+        iris_fog **a = pp_alloc(ps, (size_t)cap * sizeof *a);
+        if (sc->n_fogs)
+            memcpy(a, sc->fogs, (size_t)sc->n_fogs * sizeof *a);
+        sc->fogs = a;
+        ps->cap_fogs = cap;
+    }
+    sc->fogs[sc->n_fogs++] = f;
+}
+
+/* camera { [CAMERA_ID] [type] items... transforms... }
+** Items are applied in POV-Ray's order whatever order they are written
+** in: right, direction, angle, up, sky, location, look_at; then the
+** transforms (semantics §3.8). */
+iris_camera *pp_camera(pp_state *ps, const iris_camera *base)
+{
+    pp_token open = ps->tok;
+    pp_expect(ps, T_LBRACE, "'{' after camera");
+    iris_camera *c = pp_alloc(ps, sizeof *c);
+    if (base)
+        *c = *base;
+    else
+        iris_camera_defaults(c);
+    c->loc = pp_loc(ps, &open);
+    bool has_right = false, has_dir = false, has_angle = false;
+    bool has_up = false, has_sky = false, has_loc = false, has_look = false;
+    iris_vec3 right = c->right, dir = c->direction, up = c->up;
+    iris_vec3 sky = c->sky, loc = c->location, look = c->look_at;
+    double angle = 0;
+    iris_transform xf;
+    xf_identity(&xf);
+    bool has_xf = false;
+    pp_token look_tok = open;
+    for (;;) {
+        pp_next(ps);
+        pp_token at = ps->tok;
+        switch (at.kind) {
+        case T_RBRACE:
+            goto resolve;
+        case T_IDENT:
+            if (at.val.kind == V_CAMERA) {
+                *c = *at.val.u.cam;
+                right = c->right; dir = c->direction; up = c->up;
+                sky = c->sky; loc = c->location; look = c->look_at;
+                break;
+            }
+            goto bad;
+        case T_PERSPECTIVE: c->kind = IRIS_CAM_PERSPECTIVE; break;
+        case T_ORTHOGRAPHIC: c->kind = IRIS_CAM_ORTHOGRAPHIC; break;
+        case T_FISHEYE: c->kind = IRIS_CAM_FISHEYE; break;
+        case T_ULTRA_WIDE_ANGLE: c->kind = IRIS_CAM_ULTRA_WIDE; break;
+        case T_OMNIMAX: c->kind = IRIS_CAM_OMNIMAX; break;
+        case T_PANORAMIC: c->kind = IRIS_CAM_PANORAMIC; break;
+        case T_SPHERICAL: c->kind = IRIS_CAM_SPHERICAL; break;
+        case T_CYLINDER:
+            c->kind = IRIS_CAM_CYLINDER;
+            c->cylinder_type = (int)pp_float(ps);
+            if (c->cylinder_type < 1 || c->cylinder_type > 4)
+                pp_error(ps, &at, "cylinder camera type must be 1 to 4");
+            break;
+        case T_MESH_CAMERA:
+            pp_error(ps, &at, "mesh_camera is not supported");
+        case T_LOCATION: loc = pp_vector(ps); has_loc = true; break;
+        case T_DIRECTION: dir = pp_vector(ps); has_dir = true; break;
+        case T_RIGHT: right = pp_vector(ps); has_right = true; break;
+        case T_UP: up = pp_vector(ps); has_up = true; break;
+        case T_SKY: sky = pp_vector(ps); has_sky = true; break;
+        case T_LOOK_AT: look = pp_vector(ps); has_look = true; look_tok = at; break;
+        case T_ANGLE: {
+            angle = pp_float(ps);
+            has_angle = true;
+            /* an optional vertical angle for spherical cameras */
+            if (pp_accept(ps, T_COMMA))
+                pp_float(ps);
+            break;
+        }
+        case T_APERTURE: c->aperture = pp_float(ps); break;
+        case T_BLUR_SAMPLES:
+            c->blur_samples = (int)pp_float(ps);
+            if (pp_accept(ps, T_COMMA))
+                c->blur_samples = (int)pp_float(ps);
+            break;
+        case T_FOCAL_POINT: c->focal_point = pp_vector(ps); break;
+        case T_CONFIDENCE: c->confidence = pp_float(ps); break;
+        case T_VARIANCE: c->variance = pp_float(ps); break;
+        case T_BOKEH:
+            pp_warn_once(ps, &at, T_BOKEH, "bokeh");
+            pp_expect(ps, T_LBRACE, "'{'");
+            pp_skip_block(ps);
+            break;
+        case T_NORMAL:
+            pp_warn_once(ps, &at, T_CAMERA, "a camera normal");
+            pp_normal(ps, NULL);
+            break;
+        default: {
+            iris_transform x;
+            if (pp_transform_item(ps, &x)) {
+                xf_compose(&xf, &xf, &x);
+                has_xf = true;
+                break;
+            }
+        }
+        bad: {
+            pp_unexpected(ps, &at, "camera");
+        }
+        }
+    }
+resolve:
+    /* right, direction, angle, up, sky, location, look_at */
+    c->right = right;
+    c->direction = dir;
+    if (has_angle) {
+        if (!(angle > 0 && angle < 180) &&
+            (c->kind == IRIS_CAM_PERSPECTIVE))
+            pp_error(ps, &open, "camera angle must be in (0, 180) degrees");
+        c->angle = angle;
+        if (c->kind == IRIS_CAM_PERSPECTIVE ||
+            c->kind == IRIS_CAM_ORTHOGRAPHIC) {
+            double len = 0.5 * v3_len(c->right) / tan(angle * M_PI / 360);
+            c->direction = v3_scale(v3_norm(c->direction), len);
+        }
+    }
+    c->up = up;
+    c->sky = sky;
+    c->location = loc;
+    if (has_look) {
+        c->look_at = look;
+        iris_vec3 d = v3_sub(look, c->location);
+        if (v3_len(d) == 0)
+            pp_error(ps, &look_tok, "look_at equals the camera location");
+        double handed = v3_dot(v3_cross(c->up, c->direction), c->right);
+        double dlen = v3_len(c->direction);
+        iris_vec3 dn = v3_norm(d);
+        iris_vec3 r = v3_cross(c->sky, dn);
+        if (v3_len(r) < 1e-10 * v3_len(c->sky)) {
+            pp_warning(ps, &look_tok, "camera sky is parallel to the view "
+                       "direction; right is left unchanged");
+            c->direction = v3_scale(dn, dlen);
+        } else {
+            double rlen = v3_len(c->right), ulen = v3_len(c->up);
+            c->direction = v3_scale(dn, dlen);
+            r = v3_norm(r);
+            /* up from the unsigned right; only right carries handedness */
+            c->up = v3_scale(v3_norm(v3_cross(dn, r)), ulen);
+            c->right = v3_scale(r, handed > 0 ? rlen : -rlen);
+        }
+        /* orthographic cameras without explicit size cover the view */
+        if (c->kind == IRIS_CAM_ORTHOGRAPHIC &&
+            ((!has_up && !has_right) || has_angle) && dlen > 0) {
+            double s = v3_len(d) / dlen;
+            c->right = v3_scale(c->right, s);
+            c->up = v3_scale(c->up, s);
+        }
+    }
+    (void)has_dir; (void)has_sky; (void)has_loc;
+    if (has_xf) {
+        c->location = xf_point(&xf, c->location);
+        c->direction = xf_dir(&xf, c->direction);
+        c->right = xf_dir(&xf, c->right);
+        c->up = xf_dir(&xf, c->up);
+        c->sky = xf_dir(&xf, c->sky);
+        c->look_at = xf_point(&xf, c->look_at);
+        c->focal_point = xf_point(&xf, c->focal_point);
+    }
+    return c;
+}
+
+/* global_settings { photons { ... } } */
+static void global_photons(pp_state *ps, iris_photon_settings *p)
+{
+    pp_expect(ps, T_LBRACE, "'{'");
+    /* the values POV-Ray sets when the block is present (§2.2) */
+    p->enabled = true;
+    p->spacing = 1;
+    p->count = 0;
+    p->gather_min = 20;
+    p->gather_max = 100;
+    p->radius = -1;
+    p->radius_mul = 1;
+    p->jitter = 0.4;
+    p->max_trace_level = -1;
+    p->adc_bailout = -1;
+    p->autostop = 0.5;
+    p->expand_tol = 0.2;
+    p->expand_min = 35;
+    p->media_max_steps = 0;
+    p->media_factor = 1;
+    for (;;) {
+        pp_next(ps);
+        pp_token at = ps->tok;
+        switch (at.kind) {
+        case T_RBRACE:
+            if (p->gather_max <= 0)
+                p->enabled = false;
+            return;
+        case T_SPACING: p->spacing = pp_float(ps); break;
+        case T_COUNT: p->count = (int)pp_float(ps); break;
+        case T_GATHER:
+            p->gather_min = (int)pp_float(ps);
+            pp_expect(ps, T_COMMA, "','");
+            p->gather_max = (int)pp_float(ps);
+            break;
+        case T_RADIUS:
+            p->radius = pp_float(ps);
+            for (int i = 0; i < 3 && pp_accept(ps, T_COMMA); i++) {
+                double v = pp_float(ps);
+                if (i == 0)
+                    p->radius_mul = v;
+            }
+            break;
+        case T_JITTER: p->jitter = pp_float(ps); break;
+        case T_MAX_TRACE_LEVEL: p->max_trace_level = (int)pp_float(ps); break;
+        case T_ADC_BAILOUT: p->adc_bailout = pp_float(ps); break;
+        case T_AUTOSTOP: p->autostop = pp_float(ps); break;
+        case T_EXPAND_THRESHOLDS:
+            p->expand_tol = pp_float(ps);
+            pp_expect(ps, T_COMMA, "','");
+            p->expand_min = (int)pp_float(ps);
+            break;
+        case T_MEDIA:
+            p->media_max_steps = (int)pp_float(ps);
+            if (pp_accept(ps, T_COMMA))
+                p->media_factor = pp_float(ps);
+            break;
+        case T_SAVE_FILE: {
+            const char *s = pp_string(ps);
+            p->save_file = pp_strdup(ps, s, strlen(s));
+            break;
+        }
+        case T_LOAD_FILE: {
+            const char *s = pp_string(ps);
+            p->load_file = pp_strdup(ps, s, strlen(s));
+            break;
+        }
+        default: {
+            pp_unexpected(ps, &at, "global photons");
+        }
+        }
+    }
+}
+
+/* global_settings { ... } */
+static void global_settings(pp_state *ps)
+{
+    pp_expect(ps, T_LBRACE, "'{' after global_settings");
+    iris_global_settings *g = &ps->scene->settings;
+    for (;;) {
+        pp_next(ps);
+        pp_token at = ps->tok;
+        switch (at.kind) {
+        case T_RBRACE: return;
+        case T_ASSUMED_GAMMA: {
+            double gm = pp_float(ps);
+            if (!(gm > 0))
+                pp_error(ps, &at, "assumed_gamma must be > 0");
+            g->assumed_gamma = gm;
+            ps->gamma_given = true;
+            if (fabs(gm - 1) > 1e-6)
+                pp_warn_once(ps, &at, T_ASSUMED_GAMMA, "assumed_gamma other "
+                             "than 1 (colours are taken as linear)");
+            break;
+        }
+        case T_MAX_TRACE_LEVEL: {
+            int n = (int)pp_float(ps);
+            g->max_trace_level = n < 1 ? 1 : n > 256 ? 256 : n;
+            break;
+        }
+        case T_ADC_BAILOUT: g->adc_bailout = pp_float(ps); break;
+        case T_AMBIENT_LIGHT: g->ambient_light = pp_colour(ps); break;
+        case T_IRID_WAVELENGTH: {
+            iris_colour c = pp_colour(ps);
+            g->irid_wavelength = v3(c.r, c.g, c.b);
+            break;
+        }
+        case T_NUMBER_OF_WAVES: g->number_of_waves = (int)pp_float(ps); break;
+        case T_NOISE_GENERATOR: {
+            int n = (int)pp_float(ps);
+            if (n < 1 || n > 3)
+                pp_error(ps, &at, "noise_generator must be 1, 2 or 3");
+            g->noise_generator = n;
+            break;
+        }
+        case T_CHARSET: pp_next(ps); break;
+        case T_HF_GRAY_16: pp_bool_opt(ps); break;
+        case T_MAX_INTERSECTIONS: pp_float(ps); break;
+        case T_MM_PER_UNIT: pp_float(ps); break;
+        case T_PHOTONS: global_photons(ps, &g->photons); break;
+        case T_RADIOSITY:
+            g->radiosity = true;
+            pp_warn_once(ps, &at, T_RADIOSITY, "radiosity (iris treats it as "
+                         "a request for diffuse interreflection; its "
+                         "parameters are ignored)");
+            pp_expect(ps, T_LBRACE, "'{'");
+            pp_skip_block(ps);
+            break;
+        case T_SUBSURFACE:
+            pp_warn_once(ps, &at, T_SUBSURFACE, "subsurface");
+            pp_expect(ps, T_LBRACE, "'{'");
+            pp_skip_block(ps);
+            break;
+        default: {
+            pp_unexpected(ps, &at, "global_settings");
+        }
+        }
+    }
+}
+
+/* The scene: items until the end of the file. */
+void pp_scene_items(pp_state *ps)
+{
+    for (;;) {
+        pp_next(ps);
+        pp_token at = ps->tok;
+        switch (at.kind) {
+        case T_EOF:
+            return;
+        case T_CAMERA: {
+            iris_camera *c = pp_camera(ps, NULL);
+            ps->scene->camera = *c;
+            ps->scene->has_camera = true;
+            break;
+        }
+        case T_LIGHT_SOURCE:
+            pp_add_light(ps, pp_light(ps));
+            break;
+        case T_GLOBAL_SETTINGS:
+            global_settings(ps);
+            break;
+        case T_BACKGROUND: {
+            pp_expect(ps, T_LBRACE, "'{' after background");
+            iris_colour c = pp_colour(ps);
+            pp_expect(ps, T_RBRACE, "'}'");
+            ps->scene->background = c;
+            ps->scene->has_background = true;
+            break;
+        }
+        case T_SKY_SPHERE:
+            ps->scene->sky_sphere = pp_sky_sphere(ps, NULL);
+            break;
+        case T_FOG:
+            add_fog(ps, pp_fog(ps));
+            break;
+        case T_RAINBOW: case T_MEDIA:
+            pp_warn_once(ps, &at, at.kind, at.kind == T_RAINBOW ? "rainbow"
+                         : "atmospheric media");
+            pp_expect(ps, T_LBRACE, "'{'");
+            pp_skip_block(ps);
+            break;
+        case T_SEMI:
+            break;
+        case T_DEFAULT:
+            pp_default_block(ps);
+            break;
+        default: {
+            pp_unget(ps);
+            iris_object *o = pp_object(ps);
+            if (!o) {
+                char buf[80];
+                pp_next(ps);
+                if (at.kind == T_IDENT && at.val.kind == V_NONE)
+                    pp_error(ps, &at, "undeclared identifier '%.*s'",
+                             (int)at.len, pp_tok_text(ps, &at));
+                if (at.kind == T_IDENT)
+                    pp_error(ps, &at, "a %s identifier cannot stand alone "
+                             "here (wrap objects as object { %.*s })",
+                             pp_kind_name(at.val.kind), (int)at.len,
+                             pp_tok_text(ps, &at));
+                pp_error(ps, &at, "expected an object, light, camera or "
+                         "scene setting, found %s",
+                         pp_tok_name(ps, &at, buf, sizeof buf));
+            }
+            pp_finalize_object(ps, o);
+            /* A wrapper around a bare light carries no geometry. */
+            if (!(o->kind == IRIS_OBJ_UNION && o->u.csg.n_children == 0))
+                pp_add_object(ps, o);
+            break;
+        }
+        }
+    }
+}

@@ -1,0 +1,845 @@
+/* SPDX-License-Identifier: MIT */
+/*
+** accel.c: building the Embree scene and answering ray queries.
+**
+** DESIGN
+**
+** Tree. accel_build() turns every scene object into a node (node.h):
+** analytic shapes become shape leaves solved in object space in double
+** precision (geometry/), meshes become triangle leaves (mesh.c), CSG
+** becomes a node over its children. 'inverse' is pushed to the leaves with
+** De Morgan's rules as POV-Ray's Invert() does: an inverted union is the
+** intersection of the inverted children, an inverted intersection the
+** merge of them, and difference(A, B, ...) is intersection(A, inv B, ...).
+** So a leaf only flips its inside test and its normals.
+**
+** CSG. A CSG node is one Embree user primitive. Its callback gathers every
+** crossing of every child along the ray (meshes inside CSG have a private
+** Embree scene whose filter collects all crossings) and keeps those on its
+** boundary by inside tests of the other children; clipped_by then keeps
+** the crossings inside every clipping object. A top-level union without
+** clipping is split into its children (POV-Ray's split_union), so plain
+** unions cost nothing extra.
+**
+** Infinite objects. Nodes whose surface has no finite box (planes,
+** quadrics, polys, and CSG built from them) are not given to Embree at
+** all: they sit in a separate list tested after the Embree query, with
+** the ray's far end shrunk to the nearest Embree hit. Finite boxes of
+** user primitives are padded by 1e-6 of their size (plus their distance
+** from the origin) before becoming floats, so Embree's float traversal
+** never culls a primitive the double-precision test would hit.
+**
+** bounded_by is a hint only and is ignored: every object gets its own
+** exact box.
+**
+** Precision. Embree sees float rays; every decision (tmin, nearest hit)
+** is taken in double by the callbacks, from the double ray kept in the
+** query context (node.h, struct qctx). accel_epsilon() is therefore 1e-9
+** of the scene's size, relative, so a scene scaled by 1e-6 or 1e6 gives
+** the same hits.
+**
+** Threads. After accel_build() returns nothing is written: queries keep
+** their state on the caller's stack and Embree's rtcIntersect1 is
+** thread-safe, so any number of threads may query at once. Building is
+** single-threaded (Embree may use its own threads inside rtcCommitScene).
+*/
+#include "config.h"
+
+#include "accel/accel.h"
+
+#include <float.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "accel/node.h"
+#include "math/transform.h"
+#include "util/mem.h"
+
+/* Deeper CSG nesting than this is refused (a cycle, or a hostile file). */
+#define MAX_DEPTH 200
+
+/* A box that may be empty or infinite. */
+struct bbox {
+    bool inf, empty;
+    vec3 lo, hi;
+};
+
+struct accel {
+    RTCDevice dev;
+    RTCScene scene;
+    const iris_scene *sc;
+    char embree_err[256];
+
+    struct anode **nodes;          /* every node, for freeing */
+    int n_nodes, cap_nodes;
+    struct { const iris_object *obj; struct anode *node; } *map;
+    int n_map;                     /* sorted by obj, for accel_inside */
+
+    struct anode **roots;          /* per scene object, NULL if skipped */
+    struct bbox *root_vol;         /* per scene object, its inside's box */
+    struct anode **user;           /* Embree user primitives */
+    int n_user;
+    struct anode **inf;            /* unbounded, tested outside Embree */
+    int n_inf;
+
+    int cap_user, cap_inf;
+
+    bool has_bounds;
+    vec3 lo, hi;
+    double eps;
+    bool oom;
+    bool building;                 /* Embree errors are recorded only now */
+
+    /* For leaves the parser left without a texture: black, default finish
+    ** (POV-Ray's untextured objects are black) */
+    iris_texture default_texture;
+    iris_pigment default_pigment;
+    iris_finish default_finish;
+};
+
+/* ---------------------------------------------------------------- */
+/* Boxes                                                              */
+/* ---------------------------------------------------------------- */
+
+static struct bbox box_inf(void)
+{
+    struct bbox b = { .inf = true };
+    return b;
+}
+
+static struct bbox box_empty(void)
+{
+    struct bbox b = { .empty = true };
+    return b;
+}
+
+static struct bbox box_union(struct bbox a, struct bbox b)
+{
+    if (a.inf || b.inf)
+        return box_inf();
+    if (a.empty)
+        return b;
+    if (b.empty)
+        return a;
+    a.lo = v3_min(a.lo, b.lo);
+    a.hi = v3_max(a.hi, b.hi);
+    return a;
+}
+
+static struct bbox box_meet(struct bbox a, struct bbox b)
+{
+    if (a.empty || b.empty)
+        return box_empty();
+    if (a.inf)
+        return b;
+    if (b.inf)
+        return a;
+    a.lo = v3_max(a.lo, b.lo);
+    a.hi = v3_min(a.hi, b.hi);
+    if (a.lo.x > a.hi.x || a.lo.y > a.hi.y || a.lo.z > a.hi.z)
+        return box_empty();
+    return a;
+}
+
+/* World box of object-space box lo..hi under 'xf' (NULL = identity). */
+static struct bbox box_xf(vec3 lo, vec3 hi, const xform *xf)
+{
+    struct bbox b = { .lo = lo, .hi = hi };
+    if (!xf)
+        return b;
+    for (int c = 0; c < 8; c++) {
+        vec3 p = xf_point(xf, v3(c & 1 ? hi.x : lo.x, c & 2 ? hi.y : lo.y,
+                                 c & 4 ? hi.z : lo.z));
+        b.lo = c ? v3_min(b.lo, p) : p;
+        b.hi = c ? v3_max(b.hi, p) : p;
+    }
+    return b;
+}
+
+/*
+** The inside of an axis-aligned plane as a box with infinite sides (the
+** usual clipped_by plane), so clipping narrows the object's box.
+*/
+static struct bbox half_space(const iris_object *o)
+{
+    vec3 n = v3_norm(o->u.plane.normal);
+    double d = o->u.plane.distance;
+    struct bbox b = { .lo = v3(-INFINITY, -INFINITY, -INFINITY),
+                      .hi = v3(INFINITY, INFINITY, INFINITY) };
+    double c[3] = { n.x, n.y, n.z };
+    for (int k = 0; k < 3; k++) {
+        if (fabs(c[k]) != 1)
+            continue;
+        /* n = ±e_k: inside is x_k < d (n = +e_k) or x_k > -d */
+        if (c[k] > 0)
+            b.hi = v3(k == 0 ? d : b.hi.x, k == 1 ? d : b.hi.y,
+                      k == 2 ? d : b.hi.z);
+        else
+            b.lo = v3(k == 0 ? -d : b.lo.x, k == 1 ? -d : b.lo.y,
+                      k == 2 ? -d : b.lo.z);
+        return b;
+    }
+    return box_inf();
+}
+
+static bool box_finite(struct bbox b)
+{
+    return !b.inf && !b.empty && isfinite(b.lo.x) && isfinite(b.lo.y) &&
+           isfinite(b.lo.z) && isfinite(b.hi.x) && isfinite(b.hi.y) &&
+           isfinite(b.hi.z);
+}
+
+/* ---------------------------------------------------------------- */
+/* Building the tree                                                  */
+/* ---------------------------------------------------------------- */
+
+static const char *kind_name(enum iris_object_kind k)
+{
+    static const char *const names[] = {
+        "sphere", "box", "plane", "cylinder", "cone", "torus", "disc",
+        "triangle", "mesh", "polygon", "prism", "lathe", "sor",
+        "superellipsoid", "blob", "height_field", "text", "isosurface",
+        "quadric", "poly", "julia_fractal", "bicubic_patch", "parametric",
+        "sphere_sweep", "ovus", "lemon", "union", "merge", "intersection",
+        "difference", "light_group"
+    };
+    return (unsigned)k < sizeof names / sizeof names[0] ? names[k] : "object";
+}
+
+static void warn(struct accel *a, FILE *log, const iris_object *o,
+                 const char *why)
+{
+    if (!log)
+        return;
+    const char *file = "<unknown>";
+    if (o->loc.file > 0 && (int)o->loc.file < a->sc->n_files &&
+        a->sc->files && a->sc->files[o->loc.file])
+        file = a->sc->files[o->loc.file];
+    fprintf(log, "%s:%u:%u: warning: %s skipped: %s\n", file,
+            (unsigned)o->loc.line, (unsigned)o->loc.col, kind_name(o->kind),
+            why);
+}
+
+static struct anode *new_node(struct accel *a)
+{
+    if (a->n_nodes == a->cap_nodes) {
+        int cap = a->cap_nodes ? 2 * a->cap_nodes : 64;
+        struct anode **nv = iris_realloc(a->nodes, (size_t)cap * sizeof *nv);
+        if (!nv) {
+            a->oom = true;
+            return NULL;
+        }
+        a->nodes = nv;
+        a->cap_nodes = cap;
+    }
+    struct anode *n = iris_calloc(1, sizeof *n);
+    if (!n) {
+        a->oom = true;
+        return NULL;
+    }
+    a->nodes[a->n_nodes++] = n;
+    return n;
+}
+
+static unsigned own_skip(const iris_object *o)
+{
+    return (o->no_image ? ACCEL_SKIP_NO_IMAGE : 0) |
+           (o->no_shadow ? ACCEL_SKIP_NO_SHADOW : 0) |
+           (o->no_reflection ? ACCEL_SKIP_NO_REFLECTION : 0);
+}
+
+static bool is_csg(enum iris_object_kind k)
+{
+    return k == IRIS_OBJ_UNION || k == IRIS_OBJ_MERGE ||
+           k == IRIS_OBJ_INTERSECTION || k == IRIS_OBJ_DIFFERENCE ||
+           k == IRIS_OBJ_LIGHT_GROUP;
+}
+
+/*
+** Builds the node of 'o'. 'inv' says whether an odd number of enclosing
+** nodes are inverted; 'in_csg' whether the node's crossings will be
+** gathered by a CSG parent (meshes then need a private scene). '*surf'
+** receives the box holding the node's surface, '*vol' the box holding its
+** inside. Returns NULL when the object is skipped (warned on 'log').
+*/
+static struct anode *build(struct accel *a, FILE *log, const iris_object *o,
+                           const iris_object *top, bool inv, unsigned skip,
+                           bool in_csg, int depth, struct bbox *surf,
+                           struct bbox *vol)
+{
+    if (depth > MAX_DEPTH) {
+        warn(a, log, o, "CSG nested too deeply");
+        return NULL;
+    }
+    bool ninv = inv != o->inverse;
+    struct anode *n = new_node(a);
+    if (!n)
+        return NULL;
+    n->obj = o;
+    n->top = top;
+    n->under_inverse = inv;
+    n->skip = skip | own_skip(o);
+    struct bbox S, V;
+
+    if (is_csg(o->kind)) {
+        n->kind = AN_CSG;
+        bool kinv[2] = { ninv, ninv }; /* first child, the others */
+        switch (o->kind) {
+        case IRIS_OBJ_MERGE:
+            n->op = ninv ? AN_INTERSECTION : AN_MERGE;
+            break;
+        case IRIS_OBJ_INTERSECTION:
+            n->op = ninv ? AN_MERGE : AN_INTERSECTION;
+            break;
+        case IRIS_OBJ_DIFFERENCE:
+            n->op = ninv ? AN_MERGE : AN_INTERSECTION;
+            kinv[1] = !ninv;
+            break;
+        default: /* union, light_group */
+            n->op = ninv ? AN_INTERSECTION : AN_UNION;
+            break;
+        }
+        int nk = o->u.csg.n_children;
+        n->kids = nk > 0 ? iris_calloc((size_t)nk, sizeof *n->kids) : NULL;
+        if (nk > 0 && !n->kids) {
+            a->oom = true;
+            return NULL;
+        }
+        struct bbox *ks = iris_malloc((size_t)(nk > 0 ? nk : 1) * sizeof *ks);
+        struct bbox *kv = iris_malloc((size_t)(nk > 0 ? nk : 1) * sizeof *kv);
+        if (!ks || !kv) {
+            iris_free(ks);
+            iris_free(kv);
+            a->oom = true;
+            return NULL;
+        }
+        for (int i = 0; i < nk; i++) {
+            const iris_object *c = o->u.csg.children[i];
+            if (!c)
+                continue;
+            struct anode *k = build(a, log, c, top, kinv[i > 0], n->skip,
+                                    true, depth + 1, &ks[n->n_kids],
+                                    &kv[n->n_kids]);
+            if (k)
+                n->kids[n->n_kids++] = k;
+        }
+        if (n->n_kids == 0) {
+            iris_free(ks);
+            iris_free(kv);
+            warn(a, log, o, "it has no children that can be built");
+            return NULL;
+        }
+        if (n->op == AN_INTERSECTION) {
+            V = box_inf();
+            for (int i = 0; i < n->n_kids; i++)
+                V = box_meet(V, kv[i]);
+            S = box_empty();
+            for (int i = 0; i < n->n_kids; i++) {
+                struct bbox b = ks[i];
+                for (int j = 0; j < n->n_kids; j++)
+                    if (j != i)
+                        b = box_meet(b, kv[j]);
+                S = box_union(S, b);
+            }
+        } else {
+            S = V = box_empty();
+            for (int i = 0; i < n->n_kids; i++) {
+                S = box_union(S, ks[i]);
+                V = box_union(V, kv[i]);
+            }
+        }
+        iris_free(ks);
+        iris_free(kv);
+    } else if (amesh_kind(o->kind)) {
+        n->kind = AN_MESH;
+        n->inverted = ninv;
+        const char *why = amesh_build(n, a->dev, in_csg || o->n_clipped_by > 0);
+        vec3 lo, hi;
+        if (why || !amesh_bounds(n, &lo, &hi)) {
+            warn(a, log, o, why ? why : "it has no triangles");
+            amesh_free(n->mesh);
+            n->mesh = NULL;
+            return NULL;
+        }
+        S.inf = S.empty = false;
+        S.lo = lo;
+        S.hi = hi;
+        V = ninv ? box_inf() : S;
+    } else if (geom_is_analytic(o->kind)) {
+        n->kind = AN_SHAPE;
+        n->inverted = ninv;
+        const char *why = geom_validate(o);
+        if (!why) {
+            n->prof = geom_prepare(o, &why);
+        }
+        if (why) {
+            warn(a, log, o, why);
+            return NULL;
+        }
+        vec3 lo, hi;
+        if (geom_bounds(o, n->prof, &lo, &hi))
+            S = box_xf(lo, hi, o->has_transform ? &o->transform : NULL);
+        else
+            S = box_inf();
+        /* A plane's or poly's inside is unbounded, as is an inverse's */
+        V = ninv ? box_inf() : S;
+        if (!ninv && o->kind == IRIS_OBJ_PLANE && !o->has_transform)
+            V = half_space(o);
+    } else {
+        warn(a, log, o, "this shape is not supported");
+        return NULL;
+    }
+
+    /* clipped_by: only points inside every clipping object remain */
+    if (o->n_clipped_by > 0 && o->clipped_by) {
+        n->clips = iris_calloc((size_t)o->n_clipped_by, sizeof *n->clips);
+        if (!n->clips) {
+            a->oom = true;
+            return NULL;
+        }
+        for (int i = 0; i < o->n_clipped_by; i++) {
+            if (!o->clipped_by[i])
+                continue;
+            struct bbox cs, cv;
+            struct anode *c = build(a, log, o->clipped_by[i], top, false, 0,
+                                    true, depth + 1, &cs, &cv);
+            if (!c)
+                continue;
+            n->clips[n->n_clips++] = c;
+            S = box_meet(S, cv);
+            V = box_meet(V, cv);
+        }
+    }
+
+    n->bounded = box_finite(S) || S.empty;
+    if (S.empty) {
+        /* Nothing can be hit: a box no ray enters */
+        n->lo = v3(1, 1, 1);
+        n->hi = v3(-1, -1, -1);
+    } else if (n->bounded) {
+        n->lo = S.lo;
+        n->hi = S.hi;
+    }
+    *surf = S;
+    *vol = V;
+    return n;
+}
+
+static int cmp_map(const void *x, const void *y)
+{
+    const iris_object *a = *(const iris_object *const *)x;
+    const iris_object *b = *(const iris_object *const *)y;
+    return a < b ? -1 : a > b;
+}
+
+/* Sorted (object -> node) pairs for accel_inside(). */
+static bool build_map(struct accel *a)
+{
+    a->map = iris_malloc((size_t)(a->n_nodes ? a->n_nodes : 1) *
+                         sizeof *a->map);
+    if (!a->map)
+        return false;
+    /* Only nodes that answer for the object itself: not those built
+    ** under an inverted parent (a difference's subtracted children) */
+    a->n_map = 0;
+    for (int i = 0; i < a->n_nodes; i++) {
+        if (a->nodes[i]->under_inverse)
+            continue;
+        a->map[a->n_map].obj = a->nodes[i]->obj;
+        a->map[a->n_map].node = a->nodes[i];
+        a->n_map++;
+    }
+    qsort(a->map, (size_t)a->n_map, sizeof *a->map, cmp_map);
+    return true;
+}
+
+static struct anode *find_node(const struct accel *a, const iris_object *o)
+{
+    int lo = 0, hi = a->n_map - 1;
+    while (lo <= hi) {
+        int mid = (lo + hi) / 2;
+        if (a->map[mid].obj == o)
+            return a->map[mid].node;
+        if ((const void *)a->map[mid].obj < (const void *)o)
+            lo = mid + 1;
+        else
+            hi = mid - 1;
+    }
+    return NULL;
+}
+
+static bool push_ptr(struct anode ***arr, int *n, int *cap, struct anode *x)
+{
+    if (*n == *cap) {
+        int nc = *cap ? 2 * *cap : 16;
+        struct anode **nv = iris_realloc(*arr, (size_t)nc * sizeof *nv);
+        if (!nv)
+            return false;
+        *arr = nv;
+        *cap = nc;
+    }
+    (*arr)[(*n)++] = x;
+    return true;
+}
+
+/* Places a top-level node: splits plain unions, routes the rest. */
+static bool place(struct accel *a, struct anode *n)
+{
+    if (n->kind == AN_CSG && n->op == AN_UNION && n->n_clips == 0) {
+        for (int i = 0; i < n->n_kids; i++)
+            if (!place(a, n->kids[i]))
+                return false;
+        return true;
+    }
+    if (n->kind == AN_MESH && n->n_clips == 0)
+        return amesh_attach(n, a->dev, a->scene);
+    if (n->bounded)
+        return push_ptr(&a->user, &a->n_user, &a->cap_user, n);
+    return push_ptr(&a->inf, &a->n_inf, &a->cap_inf, n);
+}
+
+/* ---------------------------------------------------------------- */
+/* Embree callbacks                                                   */
+/* ---------------------------------------------------------------- */
+
+static void on_embree_error(void *user, enum RTCError code, const char *str)
+{
+    struct accel *a = user;
+    /* During queries the accel is shared and read-only: not written */
+    if (a->building && a->embree_err[0] == 0)
+        snprintf(a->embree_err, sizeof a->embree_err, "Embree error %d: %s",
+                 (int)code, str ? str : "");
+}
+
+static void user_bounds(const struct RTCBoundsFunctionArguments *args)
+{
+    const struct accel *a = args->geometryUserPtr;
+    const struct anode *n = a->user[args->primID];
+    /* Pad so float rounding of the box and the ray never culls a hit */
+    vec3 ext = v3_sub(n->hi, n->lo);
+    double mag = fmax(v3_max_comp(v3(fabs(n->lo.x), fabs(n->lo.y),
+                                     fabs(n->lo.z))),
+                      v3_max_comp(v3(fabs(n->hi.x), fabs(n->hi.y),
+                                     fabs(n->hi.z))));
+    double pad = 1e-6 * (v3_max_comp(ext) + mag);
+    struct RTCBounds *b = args->bounds_o;
+    b->lower_x = (float)(n->lo.x - pad);
+    b->lower_y = (float)(n->lo.y - pad);
+    b->lower_z = (float)(n->lo.z - pad);
+    b->upper_x = (float)(n->hi.x + pad);
+    b->upper_y = (float)(n->hi.y + pad);
+    b->upper_z = (float)(n->hi.z + pad);
+    if (n->lo.x > n->hi.x) {
+        /* An empty node: a degenerate box far from everything */
+        b->lower_x = b->upper_x = b->lower_y = b->upper_y = b->lower_z =
+            b->upper_z = 3e38f;
+    }
+}
+
+static void user_intersect(const struct RTCIntersectFunctionNArguments *args)
+{
+    if (args->N != 1 || !args->valid[0])
+        return;
+    const struct accel *a = args->geometryUserPtr;
+    struct qctx *q = (struct qctx *)args->context;
+    if (q->mode != Q_NEAREST || q->accel != a)
+        return;
+    const struct anode *n = a->user[args->primID];
+    struct ahit h;
+    if (!node_nearest(n, q->o, q->d, q->tmin, q->tmax, q->skip, &h))
+        return;
+    q->best = h;
+    q->tmax = h.t;
+    q->found = true;
+    struct RTCRayHit *rh = (struct RTCRayHit *)args->rayhit;
+    rh->ray.tfar = (float)h.t * (1 + 1e-6f);
+    rh->hit.geomID = args->geomID;
+    rh->hit.primID = args->primID;
+}
+
+/* ---------------------------------------------------------------- */
+/* Public entry points                                                */
+/* ---------------------------------------------------------------- */
+
+static void compute_epsilon(struct accel *a)
+{
+    /* 1e-9 of the scene's size: a million times double rounding of the
+    ** largest coordinate, and a billionth of the scene, so that nothing
+    ** the scene's author could see is ever skipped. */
+    double size = 0;
+    if (a->has_bounds) {
+        vec3 ext = v3_sub(a->hi, a->lo);
+        size = v3_max_comp(ext);
+        size = fmax(size, v3_max_comp(v3_max(v3(fabs(a->lo.x), fabs(a->lo.y),
+                                                 fabs(a->lo.z)),
+                                              v3(fabs(a->hi.x), fabs(a->hi.y),
+                                                 fabs(a->hi.z)))));
+    }
+    if (!(size > 0) && a->sc->has_camera)
+        size = v3_len(a->sc->camera.location);
+    if (!(size > 0) || !isfinite(size))
+        size = 1;
+    /* A floor far below any scene but above underflow */
+    a->eps = fmax(1e-9 * size, 1e-290);
+}
+
+enum iris_status accel_build(const iris_scene *scene, struct accel **out,
+                             FILE *log, char *err, size_t errlen)
+{
+    *out = NULL;
+    if (err && errlen)
+        err[0] = 0;
+    struct accel *a = iris_calloc(1, sizeof *a);
+    if (!a)
+        return IRIS_ENOMEM;
+    a->sc = scene;
+    a->building = true;
+    iris_finish_defaults(&a->default_finish);
+    a->default_pigment.colour.t = 0;
+    a->default_texture.pigment = &a->default_pigment;
+    a->default_texture.finish = &a->default_finish;
+    a->dev = rtcNewDevice("verbose=0");
+    if (!a->dev) {
+        if (err)
+            snprintf(err, errlen, "Embree: cannot create a device (error %d)",
+                     (int)rtcGetDeviceError(NULL));
+        iris_free(a);
+        return IRIS_EUNSUPPORTED;
+    }
+    rtcSetDeviceErrorFunction(a->dev, on_embree_error, a);
+    a->scene = rtcNewScene(a->dev);
+    if (a->scene)
+        rtcSetSceneFlags(a->scene, RTC_SCENE_FLAG_ROBUST);
+
+    int no = scene->n_objects > 0 ? scene->n_objects : 0;
+    a->roots = iris_calloc((size_t)(no ? no : 1), sizeof *a->roots);
+    a->root_vol = iris_calloc((size_t)(no ? no : 1), sizeof *a->root_vol);
+    if (!a->roots || !a->root_vol || !a->scene)
+        a->oom = true;
+
+    struct bbox all = box_empty();
+    for (int i = 0; i < no && !a->oom; i++) {
+        const iris_object *o = scene->objects[i];
+        if (!o)
+            continue;
+        struct bbox s, v;
+        struct anode *n = build(a, log, o, o, false, 0, false, 0, &s, &v);
+        if (!n)
+            continue;
+        a->roots[i] = n;
+        a->root_vol[i] = v;
+        if (box_finite(s))
+            all = box_union(all, s);
+        if (!place(a, n))
+            a->oom = true;
+    }
+
+    if (!a->oom && a->n_user > 0) {
+        RTCGeometry g = rtcNewGeometry(a->dev, RTC_GEOMETRY_TYPE_USER);
+        if (g) {
+            rtcSetGeometryUserPrimitiveCount(g, (unsigned)a->n_user);
+            rtcSetGeometryUserData(g, a);
+            rtcSetGeometryBoundsFunction(g, user_bounds, a);
+            rtcSetGeometryIntersectFunction(g, user_intersect);
+            rtcCommitGeometry(g);
+            rtcAttachGeometry(a->scene, g);
+            rtcReleaseGeometry(g);
+        }
+    }
+    if (a->scene)
+        rtcCommitScene(a->scene);
+    if (!a->oom && !build_map(a))
+        a->oom = true;
+
+    if (a->oom) {
+        if (err)
+            snprintf(err, errlen, "out of memory while building the scene");
+        accel_destroy(a);
+        return IRIS_ENOMEM;
+    }
+    if (a->embree_err[0]) {
+        if (err)
+            snprintf(err, errlen, "%s", a->embree_err);
+        accel_destroy(a);
+        return IRIS_EINVAL;
+    }
+    a->has_bounds = !all.empty && !all.inf;
+    if (a->has_bounds) {
+        a->lo = all.lo;
+        a->hi = all.hi;
+    }
+    compute_epsilon(a);
+    a->building = false;
+    *out = a;
+    return IRIS_OK;
+}
+
+void accel_destroy(struct accel *a)
+{
+    if (!a)
+        return;
+    for (int i = 0; i < a->n_nodes; i++) {
+        struct anode *n = a->nodes[i];
+        amesh_free(n->mesh);
+        geom_profile_free(n->prof);
+        iris_free(n->kids);
+        iris_free(n->clips);
+        iris_free(n);
+    }
+    if (a->scene)
+        rtcReleaseScene(a->scene);
+    if (a->dev)
+        rtcReleaseDevice(a->dev);
+    iris_free(a->nodes);
+    iris_free(a->map);
+    iris_free(a->roots);
+    iris_free(a->root_vol);
+    iris_free(a->user);
+    iris_free(a->inf);
+    iris_free(a);
+}
+
+static bool finite_v(vec3 v)
+{
+    return isfinite(v.x) && isfinite(v.y) && isfinite(v.z);
+}
+
+bool accel_intersect(const struct accel *a, const ray *r, double tmin,
+                     double tmax, unsigned skip, struct hit *h)
+{
+    if (!a || !r || !finite_v(r->o) || !finite_v(r->d) || !(tmax > tmin) ||
+        isnan(tmin))
+        return false;
+    struct qctx q;
+    memset(&q, 0, sizeof q);
+    rtcInitIntersectContext(&q.ec);
+    q.mode = Q_NEAREST;
+    q.o = r->o;
+    q.d = r->d;
+    q.tmin = tmin;
+    q.tmax = tmax;
+    q.skip = skip;
+    q.accel = a;
+
+    struct RTCRayHit rh;
+    qctx_embree_ray(&q, &rh);
+    rtcIntersect1(a->scene, &q.ec, &rh);
+
+    /* Unbounded objects, beyond Embree */
+    for (int i = 0; i < a->n_inf; i++) {
+        struct ahit x;
+        if (node_nearest(a->inf[i], q.o, q.d, q.tmin, q.tmax, skip, &x)) {
+            q.best = x;
+            q.tmax = x.t;
+            q.found = true;
+        }
+    }
+    if (!q.found)
+        return false;
+
+    const struct anode *leaf = q.best.leaf;
+    h->t = q.best.t;
+    h->p = v3_madd(r->o, r->d, q.best.t);
+    h->n = q.best.n;
+    h->shading_n = q.best.sn;
+    h->uv = q.best.uv;
+    h->obj = leaf->obj;
+    h->top = leaf->top;
+    h->texture = q.best.texture ? q.best.texture : leaf->obj->texture;
+    if (!h->texture)
+        h->texture = leaf->top->texture;
+    if (!h->texture)
+        h->texture = &a->default_texture;
+    h->interior = leaf->obj->interior;
+    if (!isfinite(h->t) || !finite_v(h->p) || !finite_v(h->n) ||
+        !finite_v(h->shading_n) || !(v3_len2(h->n) > 0))
+        return false;
+    if (!isfinite(h->uv.u) || !isfinite(h->uv.v))
+        h->uv.u = h->uv.v = 0;
+    return true;
+}
+
+/* Inside test of an object the accel was not built with: shapes and CSG
+** only (meshes have no inside here), without profiles. */
+static bool plain_inside(const iris_object *o, vec3 p, int depth)
+{
+    if (depth > MAX_DEPTH)
+        return false;
+    bool in;
+    if (is_csg(o->kind)) {
+        int nk = o->u.csg.n_children;
+        bool isect = o->kind == IRIS_OBJ_INTERSECTION ||
+                     o->kind == IRIS_OBJ_DIFFERENCE;
+        in = isect && nk > 0;
+        for (int i = 0; i < nk; i++) {
+            const iris_object *c = o->u.csg.children[i];
+            bool ci = c && plain_inside(c, p, depth + 1);
+            if (o->kind == IRIS_OBJ_DIFFERENCE && i > 0)
+                ci = !ci;
+            if (isect && !ci) {
+                in = false;
+                break;
+            }
+            if (!isect && ci) {
+                in = true;
+                break;
+            }
+        }
+    } else if (geom_is_analytic(o->kind) && !geom_validate(o)) {
+        vec3 lp = o->has_transform ? xf_inv_point(&o->transform, p) : p;
+        in = geom_inside(o, NULL, lp);
+    } else {
+        in = false;
+    }
+    in = in != o->inverse;
+    for (int i = 0; in && i < o->n_clipped_by; i++)
+        if (o->clipped_by && o->clipped_by[i] &&
+            !plain_inside(o->clipped_by[i], p, depth + 1))
+            in = false;
+    return in;
+}
+
+bool accel_inside(const struct accel *a, const iris_object *obj, vec3 p)
+{
+    if (!a || !obj || !finite_v(p))
+        return false;
+    const struct anode *n = find_node(a, obj);
+    if (n)
+        return node_inside(n, p);
+    return plain_inside(obj, p, 0);
+}
+
+void accel_bounds(const struct accel *a, vec3 *lo, vec3 *hi)
+{
+    if (a && a->has_bounds) {
+        *lo = a->lo;
+        *hi = a->hi;
+    } else {
+        *lo = *hi = v3(0, 0, 0);
+    }
+}
+
+bool accel_object_bounds(const struct accel *a, const iris_object *obj,
+                         vec3 *lo, vec3 *hi)
+{
+    if (!a)
+        return false;
+    const struct anode *n = NULL;
+    for (int i = 0; i < a->sc->n_objects && !n; i++)
+        if (a->sc->objects[i] == obj)
+            n = a->roots[i];
+    if (!n)
+        n = find_node(a, obj);
+    if (!n || !n->bounded || n->lo.x > n->hi.x)
+        return false;
+    *lo = n->lo;
+    *hi = n->hi;
+    return true;
+}
+
+double accel_epsilon(const struct accel *a)
+{
+    return a ? a->eps : 1e-9;
+}

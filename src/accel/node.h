@@ -1,0 +1,120 @@
+/* SPDX-License-Identifier: MIT */
+/*
+** node.h: the accel's internal object tree (see the DESIGN comment in
+** accel.c).
+**
+** Every scene object becomes a node: a shape leaf (analytic, geometry/),
+** a mesh leaf (Embree triangles, mesh.c) or a CSG node. 'inverse' is
+** pushed down to the leaves with De Morgan's rules when the tree is built
+** (POV-Ray's Invert() does the same), so a CSG node is only a union, merge
+** or intersection and a leaf carries one 'inverted' bit.
+*/
+#ifndef IRIS_ACCEL_NODE_H
+#define IRIS_ACCEL_NODE_H
+
+#include <stdbool.h>
+
+#include <embree3/rtcore.h>
+
+#include "accel/accel.h"
+#include "geometry/geom.h"
+
+enum anode_kind { AN_SHAPE, AN_MESH, AN_CSG };
+enum anode_op { AN_UNION, AN_MERGE, AN_INTERSECTION };
+
+struct amesh;
+
+struct anode {
+    enum anode_kind kind;
+    enum anode_op op;              /* AN_CSG */
+    bool inverted;                 /* leaves: inside and normals flipped */
+    bool under_inverse;            /* an enclosing node is inverted: this
+                                      node is not the object's own inside */
+    const iris_object *obj;        /* the scene object this node is */
+    const iris_object *top;        /* its top-level scene object */
+    unsigned skip;                 /* ACCEL_SKIP_* bits, ancestors' included */
+    int n_kids;
+    struct anode **kids;
+    int n_clips;
+    struct anode **clips;          /* clipped_by: keep points inside all */
+    bool bounded;                  /* world box lo..hi holds every hit */
+    vec3 lo, hi;
+    struct geom_profile *prof;     /* AN_SHAPE: prism, lathe, sor, text */
+    struct amesh *mesh;            /* AN_MESH */
+};
+
+/* A surface crossing in world space, before it becomes a 'struct hit'. */
+struct ahit {
+    double t;
+    vec3 n, sn;                    /* unit normal and shading normal */
+    iris_vec2 uv;
+    const struct anode *leaf;
+    const iris_texture *texture;   /* NULL: the leaf's texture */
+};
+
+struct ahit_list {
+    struct ahit *v;
+    int n, cap;
+    struct ahit buf[16];
+};
+
+void ahit_list_init(struct ahit_list *l);
+void ahit_list_fini(struct ahit_list *l);
+void ahit_push(struct ahit_list *l, const struct ahit *h);
+
+/*
+** Appends every crossing of world ray o + t·d (unit 'd') with the surface
+** of 'n' for tmin < t < tmax, after CSG filtering and clipping, leaving
+** out leaves whose skip bits meet 'skip'. Thread-safe.
+*/
+void node_hits(const struct anode *n, vec3 o, vec3 d, double tmin,
+               double tmax, unsigned skip, struct ahit_list *out);
+
+/* The nearest crossing, as node_hits; false when none. */
+bool node_nearest(const struct anode *n, vec3 o, vec3 d, double tmin,
+                  double tmax, unsigned skip, struct ahit *best);
+
+/* Whether world point 'p' is inside 'n' (clipping included). */
+bool node_inside(const struct anode *n, vec3 p);
+
+/*
+** The state of one query, handed to Embree's callbacks through the
+** intersect context (it must stay the first member). Lives on the
+** caller's stack, so queries share nothing.
+*/
+enum qmode { Q_NEAREST, Q_ALL };
+struct qctx {
+    struct RTCIntersectContext ec;
+    enum qmode mode;
+    vec3 o, d;                     /* the ray in double precision */
+    double tmin, tmax;             /* Q_NEAREST: tmax shrinks to the best */
+    unsigned skip;
+    bool found;
+    struct ahit best;              /* Q_NEAREST */
+    struct ahit_list *all;         /* Q_ALL */
+    const void *accel;             /* the user geometry's owner */
+};
+
+/* Embree's float ray for query 'q' (mesh.c). */
+void qctx_embree_ray(const struct qctx *q, struct RTCRayHit *rh);
+
+/* Mesh leaves (mesh.c). */
+void amesh_hits(const struct anode *n, vec3 o, vec3 d, double tmin,
+                double tmax, struct ahit_list *out);
+bool amesh_inside(const struct anode *n, vec3 p);
+/*
+** Builds the triangles of mesh leaf 'n' (mesh, mesh2, triangle,
+** smooth_triangle, height_field) in world space. 'private_scene' also
+** builds an Embree scene of its own, needed for CSG and inside tests.
+** Returns NULL on success, else the reason to report.
+*/
+const char *amesh_build(struct anode *n, RTCDevice dev, bool private_scene);
+/* Adds the leaf's triangles to 'scene' (the top-level scene). */
+bool amesh_attach(struct anode *n, RTCDevice dev, RTCScene scene);
+/* World box of the leaf's triangles; false when it has none. */
+bool amesh_bounds(const struct anode *n, vec3 *lo, vec3 *hi);
+void amesh_free(struct amesh *m);
+/* Whether 'kind' is built as triangles. */
+bool amesh_kind(enum iris_object_kind kind);
+
+#endif

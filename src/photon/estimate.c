@@ -1,0 +1,187 @@
+/* SPDX-License-Identifier: MIT */
+/*
+** estimate.c: the photon radiance estimate at a surface point, the
+** automatic gather radius, and POV-Ray's shadow rule for targets.
+**
+** Estimate (DESIGN.md, semantics §2.7). The k = gather-max photons nearest
+** to the point within the search radius R (expanded once to 3R, POV-Ray's
+** adaptive rule, when fewer than gather-min are found) are weighted by the
+** seed paper's cone filter w = 1 - d/(kc·r), where r is the distance of
+** the farthest photon found (R when fewer than k were found) and kc the
+** cone constant (1 here: the weight falls to 0 at r; this kc is not the
+** photon count k). Over a disc of uniform density the mean weight is
+** 1 - 2/(3·kc), so the sum is divided by that and by the disc area pi·r^2.
+** Each photon is shaded as POV-Ray shades it, like a light of colour
+** Phi·a in its direction omega with a = 1/clamp(N_raw·omega, 0.1, 1):
+** diffuse·|N_layer·omega|^brilliance·opacity — but the pigment enters as
+** the reflectance rho(lambda_j) at the photon's own wavelength, and the
+** photon becomes linear sRGB through spec_lambda_rgb_weight(lambda_j).
+** POV-Ray also adds phong/specular highlights from photons; iris does not
+** (yet).
+*/
+#include "config.h"
+
+#include "photon/pmap.h"
+
+#include <math.h>
+
+#include "spectrum/spectrum.h"
+#include "util/mem.h"
+#include "util/rng.h"
+
+#define STACK_K 512
+
+/* The k nearest within radius 'rad'; *r gets the estimate radius. */
+static int gather(const struct photon_map *m, vec3 p, double rad,
+                  struct pstore_found *buf, double *r)
+{
+    double r2;
+    int n = pstore_knn(&m->store, p, m->gather_max, rad * rad, buf, &r2);
+    *r = n >= m->gather_max ? sqrt(r2) : rad;
+    return n;
+}
+
+void photon_map_shade(const struct photon_map *m,
+                      const struct photon_shade_input *in, double rgb_out[3])
+{
+    rgb_out[0] = rgb_out[1] = rgb_out[2] = 0.0;
+    if (!m || m->store.n == 0 || !in->finish)
+        return;
+    if (in->obj && !in->obj->photon_collect)
+        return;
+    const iris_finish *fin = in->finish;
+    if (!(fin->diffuse > 0.0) && !(fin->diffuse_back > 0.0))
+        return;
+    struct pstore_found stack_buf[STACK_K];
+    struct pstore_found *buf = stack_buf;
+    if (m->gather_max > STACK_K) {
+        buf = iris_malloc((size_t)m->gather_max * sizeof *buf);
+        if (!buf)
+            return;
+    }
+    double r;
+    int n = gather(m, in->p, m->radius, buf, &r);
+    if (n < m->gather_min) {
+        /* POV-Ray's adaptive expansion: accept the 3R search if the
+        ** density did not jump, or if it found only a few photons */
+        double r_old = r;
+        int n_old = n;
+        n = gather(m, in->p, 3.0 * m->radius, buf, &r);
+        double rho_old = n_old / (r_old * r_old), rho_new = n / (r * r);
+        bool accept = (n_old > 0 && (rho_new - rho_old) / rho_old <
+                                        m->expand_tol) ||
+                      (n > 0 && n < m->expand_min) || n_old == 0;
+        if (!accept)
+            n = gather(m, in->p, m->radius, buf, &r);
+    }
+    double sum[3] = { 0, 0, 0 };
+    double kc = m->cone_k;
+    for (int i = 0; i < n && r > 0.0; i++) {
+        size_t j = buf[i].index;
+        vec3 om = pstore_direction(&m->store, j);
+        double cos_l = v3_dot(in->n_layer, om);
+        double diffuse = fin->diffuse;
+        if (cos_l <= 1e-10) {
+            if (!(fin->diffuse_back > 0.0))
+                continue;
+            diffuse = fin->diffuse_back;
+            cos_l = -cos_l;
+        }
+        double cos_raw = v3_dot(in->n_raw, om);
+        double a = 1.0 / (cos_raw < 0.1 ? 0.1 : cos_raw > 1.0 ? 1.0 : cos_raw);
+        double d = sqrt(buf[i].d2);
+        double w = 1.0 - d / (kc * r);
+        if (w <= 0.0)
+            continue;
+        double lambda = pstore_lambda(&m->store, j);
+        double rho = spec_reflectance(in->pigment_rgb, lambda);
+        double br = fin->brilliance == 1.0 ? cos_l
+                                           : pow(cos_l, fin->brilliance);
+        double c = w * m->store.ph[j].power * rho * diffuse * br * a;
+        double wt[3];
+        spec_lambda_rgb_weight(lambda, wt);
+        for (int k = 0; k < 3; k++)
+            sum[k] += c * wt[k];
+    }
+    if (buf != stack_buf)
+        iris_free(buf);
+    if (!(r > 0.0))
+        return;
+    double norm = in->opacity / ((1.0 - 2.0 / (3.0 * kc)) * M_PI * r * r);
+    for (int k = 0; k < 3; k++)
+        rgb_out[k] = sum[k] * norm;
+}
+
+/*
+** POV-Ray's automatic radius (semantics §2.6): the mean density over
+** sampled photons at gather-max neighbours gives r0 = sqrt(max/(pi·rho)),
+** enlarged where many samples see much lower density (sparse regions).
+** Samples are photons at evenly spaced indices, so the radius is
+** deterministic.
+*/
+double pmap_auto_radius(const struct pstore *s, int gather_max)
+{
+    if (s->n == 0 || gather_max <= 0)
+        return 0.0;
+    size_t m = s->n / 20;
+    m = m < 100 ? 100 : m > 1000 ? 1000 : m;
+    if (m > s->n)
+        m = s->n;
+    struct pstore_found *buf = iris_malloc((size_t)gather_max * sizeof *buf);
+    if (!buf)
+        return 0.0;
+    double mean = 0.0;
+    size_t used = 0;
+    for (size_t i = 0; i < m; i++) {
+        size_t j = i * s->n / m;
+        double r2;
+        int n = pstore_knn(s, pstore_position(s, j), gather_max, INFINITY,
+                           buf, &r2);
+        if (n > 1 && r2 > 0.0) {
+            mean += n / (M_PI * r2);
+            used++;
+        }
+    }
+    double r0 = 0.0;
+    if (used > 0) {
+        mean /= used;
+        r0 = sqrt(gather_max / (M_PI * mean));
+        size_t less = 0;
+        for (size_t i = 0; i < m; i++) {
+            size_t j = i * s->n / m;
+            double r2;
+            int n = pstore_knn(s, pstore_position(s, j), gather_max, r0 * r0,
+                               buf, &r2);
+            double rr = n >= gather_max ? r2 : r0 * r0;
+            double rho = n / (M_PI * rr);
+            if (rho > 0.05 * mean && rho < 0.7 * mean)
+                less++;
+        }
+        r0 *= 1.0 + 20.0 * (double)less / (double)m;
+    }
+    iris_free(buf);
+    return r0;
+}
+
+bool photon_blocks_shadow(const struct photon_map *m,
+                          const iris_object *blocker, const iris_light *light,
+                          const iris_object *lit)
+{
+    if (!m || m->store.n == 0 || !blocker || !light)
+        return false;
+    if (lit && !lit->photon_collect)
+        return false;
+    return blocker->photon_target &&
+           blocker->photon_refraction != IRIS_OFF &&
+           light->photon_refraction != IRIS_OFF &&
+           (blocker->photon_refraction == IRIS_ON ||
+            light->photon_refraction == IRIS_ON);
+}
+
+void photon_map_destroy(struct photon_map *m)
+{
+    if (!m)
+        return;
+    pstore_fini(&m->store);
+    iris_free(m);
+}

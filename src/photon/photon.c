@@ -1,0 +1,36 @@
+/* SPDX-License-Identifier: MIT */
+/*
+** photon.c: photon_map_build() over the Embree scene (accel.h); the
+** shooter itself sees only struct pmap_world (pmap.h).
+*/
+#include "config.h"
+
+#include "photon/pmap.h"
+
+static bool world_intersect(const void *ctx, const ray *r, double tmin,
+                            double tmax, unsigned skip, struct hit *h)
+{
+    return accel_intersect(ctx, r, tmin, tmax, skip, h);
+}
+
+static bool world_bounds(const void *ctx, const iris_object *obj, vec3 *lo,
+                         vec3 *hi)
+{
+    return accel_object_bounds(ctx, obj, lo, hi);
+}
+
+static bool world_inside(const void *ctx, const iris_object *obj, vec3 p)
+{
+    return accel_inside(ctx, obj, p);
+}
+
+enum iris_status photon_map_build(const iris_scene *scene,
+                                  const struct accel *accel,
+                                  const struct photon_options *opts,
+                                  struct photon_map **out,
+                                  struct photon_stats *stats)
+{
+    struct pmap_world w = { accel, world_intersect, world_bounds,
+                            world_inside, accel_epsilon(accel) };
+    return pmap_build(scene, &w, opts, out, stats);
+}

@@ -1,0 +1,504 @@
+/* SPDX-License-Identifier: MIT */
+/*
+** shoot.c: emitting photons as POV-Ray 3.7 does, and building the map.
+**
+** DESIGN. Every light x target pair that the shooting rule allows (a
+** "combo") aims at the target's bounding sphere (centre of the world
+** bounding box, radius half its diagonal) in rings of constant polar angle
+** theta about the light->centre axis, dtheta = atan(spacing·density/dist)
+** apart, each ring holding n_phi = round(2·pi·sin(theta)/dtheta) photons
+** (parallel lights: rings of radius theta in the plane normal to the
+** light, dtheta = spacing·density). Each photon is jittered inside its
+** cell by POV-Ray's 'jitter' (default 0.4).
+**
+** Power. Each photon carries the light's power through its cell: the
+** exact solid angle of the cell (parallel lights: its area), times the
+** emission at its wavelength relative to D65 (spec_emitter_eval) times the
+** spot attenuation; at deposit it is multiplied by D^2 (D = path length
+** from the light; not for parallel lights) and the light fade, which is
+** POV-Ray's "flux through the target per area = light colour" (§2.5:
+** Phi = P·spread^2·D^2, with the cell's true size for spread^2).
+**
+** Wavelengths. The photons of a pass are cut into blocks of
+** LAMBDA_STRATA consecutive indices; within a block, photon p gets the
+** stratum perm_b(p) of a random permutation of the block (keyed by seed,
+** pass, block), jittered inside it: lambda = 380 + 400·(perm_b(p) + u)/16.
+** Consecutive photons sit next to each other on a ring, so every short
+** arc covers the whole spectrum evenly and a k-nearest gather sees a
+** nearly stratified set of wavelengths: its colour noise drops well below
+** that of independent draws. Independent permutations per block avoid the
+** large-scale colour moire that a single low-discrepancy sequence over the
+** photon index produces on the ring layout (tried: 1-D and 2-D Kronecker
+** sequences gave 1-2% colour bias over whole regions). Each photon's lambda
+** is still uniform on [380, 780] (pdf 1/400 per nm), as
+** spec_lambda_rgb_weight() assumes.
+**
+** Threads. The rings of all combos are laid end to end and numbered
+** photon by photon; batches of PHOTON_BATCH consecutive photon indices
+** are the work items of par_for(). A photon's random stream is keyed by
+** (seed, pass, photon index), each batch fills its own buffer, and the
+** buffers are concatenated in batch order, so the map does not depend on
+** the thread count. POV-Ray's autostop (which needs rings in sequence) is
+** not used: all rings up to theta_max are shot.
+*/
+#include "config.h"
+
+#include "photon/pmap.h"
+
+#include <math.h>
+#include <string.h>
+
+#include "photon/trace.h"
+#include "spectrum/spectrum.h"
+#include "util/mem.h"
+#include "util/thread.h"
+
+#define PHOTON_BATCH 4096
+#define LAMBDA_STRATA 16
+
+/* One light x target pair. */
+struct combo {
+    struct ptrace_combo tc;
+    struct spec_emitter em;
+    vec3 ctr, axis, a, b;      /* centre; unit axis light->centre or the
+                                  light direction; a, b complete a basis */
+    vec3 origin;               /* the light's location */
+    double rad, dist;
+    double dtheta, theta_max;
+    int n1, n2;                /* area-light photon grid (1x1 if none) */
+    vec3 axis1, axis2;
+};
+
+/* One ring of photons. */
+struct ring {
+    int combo;
+    double theta;
+    int n_phi;
+    double cell;               /* solid angle (area) of one direction cell */
+    int64_t first;             /* first photon index */
+    int64_t count;             /* n_phi · n1 · n2 */
+};
+
+struct shoot {
+    const iris_scene *scene;
+    const struct pmap_world *w;
+    const struct photon_options *opts;
+    struct combo *combos;
+    int n_combos;
+    struct ring *rings;
+    int64_t n_rings, n_photons;
+    double jitter;
+    struct ptrace_out *outs;   /* one per batch */
+};
+
+bool pmap_shoots(const iris_light *l, const iris_object *t)
+{
+    if (l->shadowless || !t->photon_target || !(t->photon_density > 0.0))
+        return false;
+    enum iris_tristate rf[2] = { l->photon_refraction, t->photon_refraction };
+    enum iris_tristate rl[2] = { l->photon_reflection, t->photon_reflection };
+    bool rfr_on = rf[0] == IRIS_ON || rf[1] == IRIS_ON;
+    bool rfr_off = rf[0] == IRIS_OFF || rf[1] == IRIS_OFF;
+    bool rfl_on = rl[0] == IRIS_ON || rl[1] == IRIS_ON;
+    bool rfl_off = rl[0] == IRIS_OFF || rl[1] == IRIS_OFF;
+    return (rfr_on && !rfr_off) || (rfl_on && !rfl_off);
+}
+
+static bool light_parallel(const iris_light *l)
+{
+    return l->parallel || l->kind == IRIS_LIGHT_CYLINDER;
+}
+
+/* Spot and cylinder attenuation (semantics §3.5, without fade). */
+static double smooth(double t)
+{
+    t = t < 0 ? 0 : t > 1 ? 1 : t;
+    return t * t * (3.0 - 2.0 * t);
+}
+
+static double spot_atten(const iris_light *l, vec3 origin, vec3 dir)
+{
+    vec3 axis = v3_norm(v3_sub(l->point_at, l->location));
+    if (l->kind == IRIS_LIGHT_SPOT && !l->parallel) {
+        double k = v3_dot(axis, dir);
+        if (k <= 0.0)
+            return 0.0;
+        double a = l->tightness > 0.0 ? pow(k, l->tightness) : 1.0;
+        double cr = cos(l->radius * M_PI / 180.0);
+        double cf = cos(l->falloff * M_PI / 180.0);
+        if (k < cr)
+            a *= k <= cf || cr <= cf ? 0.0 : smooth((k - cf) / (cr - cf));
+        return a;
+    }
+    if (l->kind == IRIS_LIGHT_CYLINDER) {
+        vec3 rel = v3_sub(origin, l->location);
+        vec3 perp = v3_madd(rel, axis, -v3_dot(rel, axis));
+        double dist = v3_len(perp);
+        if (!(l->falloff > 0.0) || dist >= l->falloff)
+            return 0.0;
+        double x = 1.0 - dist / l->falloff;
+        double a = l->tightness > 0.0 ? pow(x, l->tightness) : 1.0;
+        if (l->radius > 0.0 && dist > l->radius)
+            a *= smooth(x / (1.0 - l->radius / l->falloff));
+        return a;
+    }
+    return 1.0;
+}
+
+/* Collects the combos and their bounding spheres. */
+static enum iris_status find_combos(struct shoot *s)
+{
+    const iris_scene *sc = s->scene;
+    int cap = sc->n_lights * sc->n_objects;
+    if (cap <= 0)
+        return IRIS_OK;
+    s->combos = iris_calloc((size_t)cap, sizeof *s->combos);
+    if (!s->combos)
+        return IRIS_ENOMEM;
+    int max_level = sc->settings.photons.max_trace_level;
+    if (max_level < 0)
+        max_level = sc->settings.max_trace_level;
+    for (int li = 0; li < sc->n_lights; li++) {
+        const iris_light *l = sc->lights[li];
+        for (int oi = 0; oi < sc->n_objects; oi++) {
+            const iris_object *t = sc->objects[oi];
+            vec3 lo, hi;
+            if (!pmap_shoots(l, t) ||
+                !s->w->object_bounds(s->w->ctx, t, &lo, &hi))
+                continue;
+            struct combo *c = &s->combos[s->n_combos++];
+            c->tc.light = l;
+            c->tc.target = t;
+            c->tc.parallel = light_parallel(l);
+            c->tc.fade_distance = l->fade_distance;
+            c->tc.fade_power = l->fade_power;
+            c->tc.max_level = max_level;
+            spec_emitter_init(&c->em, l);
+            c->ctr = v3_scale(v3_add(lo, hi), 0.5);
+            c->rad = 0.5 * v3_len(v3_sub(hi, lo));
+            c->origin = l->location;
+            if (c->tc.parallel) {
+                c->axis = v3_norm(v3_sub(l->point_at, l->location));
+                c->dist = v3_dot(v3_sub(c->ctr, l->location), c->axis);
+            } else {
+                c->dist = v3_len(v3_sub(c->ctr, l->location));
+                c->axis = c->dist > 0 ? v3_scale(v3_sub(c->ctr, l->location),
+                                                 1.0 / c->dist)
+                                      : v3(0, 0, 1);
+            }
+            v3_basis(c->axis, &c->a, &c->b);
+            c->n1 = c->n2 = 1;
+            if (l->area && l->photon_area_light && l->size1 > 1 &&
+                l->size2 > 1) {
+                c->n1 = l->size1;
+                c->n2 = l->size2;
+                c->axis1 = l->axis1;
+                c->axis2 = l->axis2;
+            }
+            /* Interiors that contain the light */
+            if (s->w->inside && !c->tc.parallel)
+                for (int k = 0; k < sc->n_objects; k++) {
+                    const iris_object *o = sc->objects[k];
+                    if (o->interior && c->tc.n_stack < PTRACE_MAX_STACK &&
+                        s->w->inside(s->w->ctx, o, l->location))
+                        c->tc.stack[c->tc.n_stack++] = o;
+                }
+        }
+    }
+    return IRIS_OK;
+}
+
+/* POV-Ray's 'count' -> spacing (semantics §2.4). */
+static double spacing_for(const struct shoot *s)
+{
+    const iris_photon_settings *ps = &s->scene->settings.photons;
+    double sp = ps->spacing > 0.0 ? ps->spacing : 1.0;
+    if (ps->count <= 0)
+        return sp;
+    double e = 0.0;
+    for (int i = 0; i < s->n_combos; i++) {
+        const struct combo *c = &s->combos[i];
+        const iris_object *t = c->tc.target;
+        double x = M_PI * pow(c->rad / (t->photon_density * sp), 2.0);
+        bool rfr = t->photon_refraction == IRIS_ON ||
+                   c->tc.light->photon_refraction == IRIS_ON;
+        bool rfl = t->photon_reflection == IRIS_ON ||
+                   c->tc.light->photon_reflection == IRIS_ON;
+        if (rfr && rfl)
+            x *= t->photon_collect ? 1.5 * 3.0 : 1.5;
+        else if (rfr && t->photon_collect)
+            x *= 2.0;
+        e += 0.5 * x;
+    }
+    return e > 0.0 ? sp * sqrt(e / ps->count) : sp;
+}
+
+/* Lays out the rings of every combo. */
+static enum iris_status make_rings(struct shoot *s, double spacing)
+{
+    int64_t cap = 0;
+    for (int pass = 0; pass < 2; pass++) {
+        int64_t nr = 0, np = 0;
+        for (int ci = 0; ci < s->n_combos; ci++) {
+            struct combo *c = &s->combos[ci];
+            double spread = c->tc.target->photon_density * spacing;
+            if (c->n1 > 1)
+                spread *= sqrt((double)c->n1 * c->n2);
+            if (c->tc.parallel) {
+                c->dtheta = spread;
+                c->theta_max = c->rad;
+            } else {
+                spread /= c->dist > 0 ? c->dist : 1.0;
+                c->dtheta = atan(spread);
+                c->theta_max = c->dist >= c->rad ? asin(c->rad / c->dist)
+                                                 : M_PI;
+            }
+            if (!(c->dtheta > 0.0) || !isfinite(c->dtheta))
+                continue;
+            /* Guard against absurd photon counts (about 1e9 rings). */
+            if (c->theta_max / c->dtheta > 1e7)
+                c->dtheta = c->theta_max / 1e7;
+            int64_t per = (int64_t)c->n1 * c->n2;
+            for (double th = 0.0; th < c->theta_max; th += c->dtheta) {
+                double lo = fmax(0.0, th - 0.5 * c->dtheta);
+                double hi = th + 0.5 * c->dtheta;
+                int n_phi;
+                double cell;
+                if (c->tc.parallel) {
+                    n_phi = th > 0 ? (int)fmax(1.0, lround(2 * M_PI * th /
+                                                          c->dtheta))
+                                   : 1;
+                    cell = M_PI * (hi * hi - lo * lo) / n_phi;
+                } else {
+                    hi = fmin(hi, M_PI);
+                    n_phi = th > 0 ? (int)fmax(1.0, lround(2 * M_PI * sin(th) /
+                                                          c->dtheta))
+                                   : 1;
+                    cell = 2 * M_PI * (cos(lo) - cos(hi)) / n_phi;
+                }
+                if (pass == 1) {
+                    struct ring *r = &s->rings[nr];
+                    r->combo = ci;
+                    r->theta = th;
+                    r->n_phi = n_phi;
+                    r->cell = cell / per;
+                    r->first = np;
+                    r->count = (int64_t)n_phi * per;
+                }
+                nr++;
+                np += (int64_t)n_phi * per;
+            }
+        }
+        if (pass == 0) {
+            cap = nr;
+            if (cap == 0)
+                return IRIS_OK;
+            s->rings = iris_calloc((size_t)cap, sizeof *s->rings);
+            if (!s->rings)
+                return IRIS_ENOMEM;
+        } else {
+            s->n_rings = nr;
+            s->n_photons = np;
+        }
+    }
+    return IRIS_OK;
+}
+
+/* The ring holding photon index 'j' (binary search). */
+static const struct ring *ring_of(const struct shoot *s, int64_t j)
+{
+    int64_t lo = 0, hi = s->n_rings - 1;
+    while (lo < hi) {
+        int64_t mid = (lo + hi + 1) / 2;
+        if (s->rings[mid].first <= j)
+            lo = mid;
+        else
+            hi = mid - 1;
+    }
+    return &s->rings[lo];
+}
+
+/* The wavelength stratum of photon 'j' (see the DESIGN note above). */
+static int lambda_stratum(const struct shoot *s, int64_t j)
+{
+    int perm[LAMBDA_STRATA];
+    rng rb;
+    rng_seed(&rb, s->opts->seed, (uint64_t)s->opts->pass,
+             (uint64_t)(j / LAMBDA_STRATA) | (1ULL << 63));
+    for (int i = 0; i < LAMBDA_STRATA; i++) {
+        int k = (int)(rng_u32(&rb) % (uint32_t)(i + 1));
+        perm[i] = perm[k];
+        perm[k] = i;
+    }
+    return perm[j % LAMBDA_STRATA];
+}
+
+/* Emits and traces photon 'j'. */
+static void shoot_one(const struct shoot *s, int64_t j,
+                      struct ptrace_out *out)
+{
+    const struct ring *rg = ring_of(s, j);
+    const struct combo *c = &s->combos[rg->combo];
+    int64_t local = j - rg->first;
+    int64_t per = (int64_t)c->n1 * c->n2;
+    int64_t k_phi = local / per, k_area = local % per;
+    rng r;
+    rng_seed(&r, s->opts->seed, (uint64_t)s->opts->pass, (uint64_t)j);
+    double dphi = 2.0 * M_PI / rg->n_phi;
+    double th = rg->theta + c->dtheta * (rng_uniform(&r) - 0.5) * s->jitter;
+    double ph = -M_PI + dphi * (k_phi + 0.5) +
+                dphi * (rng_uniform(&r) - 0.5) * s->jitter;
+    if (rg->theta == 0.0)
+        ph = 2.0 * M_PI * rng_uniform(&r); /* the central cell: any phi */
+    th = fabs(th);
+    vec3 radial = v3_add(v3_scale(c->a, cos(ph)), v3_scale(c->b, sin(ph)));
+    vec3 o, d;
+    if (c->tc.parallel) {
+        d = c->axis;
+        /* start on the light's plane, opposite the target's centre */
+        vec3 base = v3_madd(c->ctr, c->axis, -c->dist);
+        o = v3_madd(base, radial, th);
+    } else {
+        d = v3_norm(v3_add(v3_scale(c->axis, cos(th)),
+                           v3_scale(radial, sin(th))));
+        o = c->origin;
+    }
+    if (per > 1) {
+        int u = (int)(k_area % c->n1), v = (int)(k_area / c->n1);
+        o = v3_madd(o, c->axis1, (double)u / (c->n1 - 1) - 0.5);
+        o = v3_madd(o, c->axis2, (double)v / (c->n2 - 1) - 0.5);
+    }
+    double a = spot_atten(c->tc.light, o, d);
+    if (a < 1e-5)
+        return;
+    double lambda = spec_sample_uniform(
+        (lambda_stratum(s, j) + rng_uniform(&r)) / LAMBDA_STRATA);
+    double power = rg->cell * a * spec_emitter_eval(&c->em, lambda);
+    if (!(power > 0.0))
+        return;
+    ptrace_photon(s->w, &c->tc, o, d, lambda, power, &r, out);
+}
+
+static void shoot_batch(void *ctx, int64_t item, int thread)
+{
+    (void)thread;
+    struct shoot *s = ctx;
+    int64_t lo = item * PHOTON_BATCH;
+    int64_t hi = lo + PHOTON_BATCH < s->n_photons ? lo + PHOTON_BATCH
+                                                  : s->n_photons;
+    for (int64_t j = lo; j < hi && !s->outs[item].failed; j++)
+        shoot_one(s, j, &s->outs[item]);
+}
+
+static void shoot_fini(struct shoot *s, int64_t n_batches)
+{
+    if (s->outs)
+        for (int64_t b = 0; b < n_batches; b++)
+            iris_free(s->outs[b].ph);
+    iris_free(s->outs);
+    iris_free(s->rings);
+    iris_free(s->combos);
+}
+
+enum iris_status pmap_build(const iris_scene *scene, const struct pmap_world *w,
+                            const struct photon_options *opts,
+                            struct photon_map **out,
+                            struct photon_stats *stats)
+{
+    struct photon_stats st;
+    memset(&st, 0, sizeof st);
+    *out = NULL;
+    const iris_photon_settings *ps = &scene->settings.photons;
+    if (!ps->enabled || ps->gather_max <= 0) {
+        if (stats)
+            *stats = st;
+        return IRIS_OK;
+    }
+    double t0 = par_now();
+    struct shoot s;
+    memset(&s, 0, sizeof s);
+    s.scene = scene;
+    s.w = w;
+    s.opts = opts;
+    s.jitter = ps->jitter >= 0.0 ? ps->jitter : 0.4;
+    enum iris_status rc = find_combos(&s);
+    st.spacing = rc == IRIS_OK ? spacing_for(&s) : 0.0;
+    if (rc == IRIS_OK)
+        rc = make_rings(&s, st.spacing);
+    int64_t n_batches = (s.n_photons + PHOTON_BATCH - 1) / PHOTON_BATCH;
+    if (rc == IRIS_OK && s.n_photons == 0) {
+        shoot_fini(&s, 0);
+        if (stats)
+            *stats = st;
+        return IRIS_OK; /* nothing to shoot: no map */
+    }
+    if (rc == IRIS_OK) {
+        s.outs = iris_calloc((size_t)n_batches, sizeof *s.outs);
+        if (!s.outs)
+            rc = IRIS_ENOMEM;
+    }
+    if (rc == IRIS_OK)
+        par_for(opts->threads, n_batches, shoot_batch, &s);
+
+    /* Concatenate the batches in order */
+    size_t total = 0;
+    for (int64_t b = 0; rc == IRIS_OK && b < n_batches; b++) {
+        if (s.outs[b].failed)
+            rc = IRIS_ENOMEM;
+        total += s.outs[b].n;
+    }
+    struct pstore_raw *all = NULL;
+    if (rc == IRIS_OK && total > 0) {
+        all = iris_calloc(total, sizeof *all);
+        if (!all)
+            rc = IRIS_ENOMEM;
+    }
+    size_t at = 0;
+    for (int64_t b = 0; rc == IRIS_OK && b < n_batches; b++) {
+        if (s.outs[b].n)
+            memcpy(all + at, s.outs[b].ph, s.outs[b].n * sizeof *all);
+        at += s.outs[b].n;
+        iris_free(s.outs[b].ph);
+        s.outs[b].ph = NULL;
+    }
+    st.shot = s.n_photons;
+    st.n_combos = s.n_combos;
+    shoot_fini(&s, n_batches);
+    double t1 = par_now();
+
+    struct photon_map *m = NULL;
+    if (rc == IRIS_OK) {
+        m = iris_calloc(1, sizeof *m);
+        if (!m)
+            rc = IRIS_ENOMEM;
+    }
+    if (rc == IRIS_OK)
+        rc = pstore_build(&m->store, all, total);
+    iris_free(all);
+    if (rc != IRIS_OK) {
+        photon_map_destroy(m);
+        return rc;
+    }
+    m->scene = scene;
+    m->gather_min = ps->gather_min > 0 ? ps->gather_min : 0;
+    m->gather_max = ps->gather_max > PSTORE_MAX_K ? PSTORE_MAX_K
+                                                  : ps->gather_max;
+    m->expand_tol = ps->expand_tol;
+    m->expand_min = ps->expand_min;
+    m->cone_k = 1.0;
+    double rmul = ps->radius_mul > 0.0 ? ps->radius_mul : 1.0;
+    m->radius = ps->radius > 0.0 ? ps->radius
+                                 : pmap_auto_radius(&m->store, m->gather_max);
+    m->radius *= rmul;
+    if (opts->radius_scale > 0.0)
+        m->radius *= opts->radius_scale;
+    st.stored = (int64_t)m->store.n;
+    st.bytes = (int64_t)(m->store.n * sizeof(struct pstore_photon));
+    st.gather_radius = m->radius;
+    st.seconds_shoot = t1 - t0;
+    st.seconds_build = par_now() - t1;
+    if (stats)
+        *stats = st;
+    *out = m;
+    return IRIS_OK;
+}

@@ -1,0 +1,260 @@
+/* SPDX-License-Identifier: MIT */
+/*
+** trace.c: transport of one photon at one wavelength.
+**
+** Where POV-Ray's photons are not physical, these are (DESIGN.md):
+**  - At a refracting surface POV-Ray spawns both a reflected and a
+**    refracted photon at full power (semantics §2.5). Here the photon
+**    reflects with the exact unpolarised Fresnel probability F(lambda)
+**    and refracts otherwise (Russian roulette), keeping its power: the
+**    expected power splits F : 1-F as in nature, with one path.
+**  - POV-Ray's dispersion splits a photon into 'dispersion_samples'
+**    RGB-tinted bands (§1.6). Here each photon carries one wavelength
+**    and bends by n(lambda) from ior_eval(), at every interface.
+**  - Pigment filter/transmit is a spectral transmittance
+**    f·rho_rgb(lambda) + t (Burns' curve of the filter colour), and
+**    interior fade a spectral absorption with POV-Ray's fade laws applied
+**    to the fade colour's curve, instead of RGB products.
+**  - Mirror reflection of surfaces without an interior (finish
+**    reflection) is taken with Russian roulette on the spectral
+**    reflectivity.
+** As in POV-Ray: photons pass through no_shadow objects (they are "shadow
+** rays" for this purpose), but NOT through no_image objects, although
+** POV-Ray 3.7 lets them pass (photons are launched as primary rays, so
+** IsImageRay() is true for them: POV-Ray/povray#373, a bug). The first
+** hit must be the target (or a pass_through object); photons are stored
+** only after at least one bounce, on collecting surfaces with diffuse > 0.
+*/
+#include "config.h"
+
+#include "photon/trace.h"
+
+#include <math.h>
+
+#include "spectrum/ior.h"
+#include "spectrum/spectrum.h"
+#include "util/mem.h"
+
+double pmap_fresnel(double cos_i, double eta, double *cos_t)
+{
+    if (cos_i > 1.0)
+        cos_i = 1.0;
+    if (!(cos_i >= 0.0))
+        cos_i = 0.0;
+    double sin2_t = eta * eta * (1.0 - cos_i * cos_i);
+    if (sin2_t >= 1.0) {
+        *cos_t = 0.0;
+        return 1.0; /* total internal reflection */
+    }
+    double ct = sqrt(1.0 - sin2_t);
+    *cos_t = ct;
+    double rs = (eta * cos_i - ct) / (eta * cos_i + ct);
+    double rp = (cos_i - eta * ct) / (cos_i + eta * ct);
+    double f = 0.5 * (rs * rs + rp * rp);
+    return f != f ? 1.0 : f;
+}
+
+/*
+** The solid colour of a texture's top layer. Until the material module
+** publishes mat_eval_texture(), patterned pigments use their first map
+** colour (an approximation noted in the report).
+*/
+static iris_colour surface_colour(const iris_texture *tex)
+{
+    iris_colour c = { 0, 0, 0, 0, 0 };
+    if (!tex || !tex->pigment)
+        return c;
+    const iris_pigment *p = tex->pigment;
+    if (p->pattern.kind != IRIS_PAT_NONE && p->n_entries > 0 &&
+        !p->is_pigment_map)
+        return p->entries[0].colour;
+    return p->colour;
+}
+
+static double clamp01(double x)
+{
+    return x > 1.0 ? 1.0 : (x > 0.0 ? x : 0.0);
+}
+
+/* Spectral transmittance of fade over a segment of length 'd'. */
+static double fade_factor(const iris_interior *in, double d, double lambda)
+{
+    if (!in || !(in->fade_power > 0.0) || !(fabs(in->fade_distance) > 1e-10))
+        return 1.0;
+    double rgb[3] = { in->fade_colour.r, in->fade_colour.g,
+                      in->fade_colour.b };
+    double fc = clamp01(spec_reflectance(rgb, lambda));
+    if (in->fade_power >= 1000.0)
+        return exp(-(1.0 - fc) * d / in->fade_distance);
+    return fc + (1.0 - fc) /
+                    (1.0 + pow(fabs(d / in->fade_distance), in->fade_power));
+}
+
+/* POV-Ray's flag logic for refraction/reflection (semantics §2.5). */
+static bool allowed(enum iris_tristate obj, enum iris_tristate light)
+{
+    return (obj == IRIS_ON && light != IRIS_OFF) ||
+           (obj != IRIS_OFF && light == IRIS_ON);
+}
+
+static void deposit(struct ptrace_out *out, vec3 p, double power,
+                    double lambda, vec3 from)
+{
+    if (out->n == out->cap) {
+        size_t cap = out->cap ? 2 * out->cap : 256;
+        struct pstore_raw *ph = iris_realloc(out->ph, cap * sizeof *ph);
+        if (!ph) {
+            out->failed = true;
+            return;
+        }
+        out->ph = ph;
+        out->cap = cap;
+    }
+    struct pstore_raw *r = &out->ph[out->n++];
+    r->p[0] = (float)p.x;
+    r->p[1] = (float)p.y;
+    r->p[2] = (float)p.z;
+    r->power = (float)power;
+    r->lambda = (float)lambda;
+    r->dir[0] = (float)from.x;
+    r->dir[1] = (float)from.y;
+    r->dir[2] = (float)from.z;
+}
+
+/* The index of the medium at the top of the stack (1 = atmosphere). */
+static double top_ior(const iris_object *const *stack, int n, double lambda)
+{
+    return n > 0 ? ior_eval(stack[n - 1]->interior, lambda) : 1.0;
+}
+
+void ptrace_photon(const struct pmap_world *w, const struct ptrace_combo *c,
+                   vec3 o, vec3 d, double lambda, double power, rng *r,
+                   struct ptrace_out *out)
+{
+    const iris_object *stack[PTRACE_MAX_STACK];
+    int n_stack = c->n_stack;
+    for (int i = 0; i < n_stack; i++)
+        stack[i] = c->stack[i];
+    double depth = 0.0;
+    struct hit h;
+    for (int level = 1; level <= c->max_level && power > 0.0; level++) {
+        ray ry = { o, d };
+        if (!w->intersect(w->ctx, &ry, w->epsilon, INFINITY,
+                          ACCEL_SKIP_NO_SHADOW, &h))
+            return;
+        depth += h.t;
+        /* Absorption in the medium just crossed */
+        if (n_stack > 0)
+            power *= fade_factor(stack[n_stack - 1]->interior, h.t, lambda);
+        const iris_object *obj = h.obj;
+        /* The first surface must belong to the target */
+        if (level == 1 && h.top != c->target && obj != c->target &&
+            !obj->photon_pass_through)
+            return;
+        iris_colour col = surface_colour(h.texture);
+        const iris_finish *fin = h.texture ? h.texture->finish : NULL;
+        double opacity = 1.0 - col.f - col.t;
+
+        /* Store caustic photons (after at least one bounce) */
+        if (level > 1 && obj->photon_collect && fin && fin->diffuse > 0.0 &&
+            opacity > 0.0) {
+            double p = power;
+            if (!c->parallel)
+                p *= depth * depth;
+            if (c->fade_power > 0.0 && fabs(c->fade_distance) > 1e-10)
+                p *= 2.0 / (1.0 + pow(depth / c->fade_distance, c->fade_power));
+            deposit(out, h.p, p, lambda, v3_neg(d));
+            if (out->failed)
+                return;
+        }
+
+        double rgb[3] = { col.r, col.g, col.b };
+        double transm = clamp01(col.f * clamp01(spec_reflectance(rgb, lambda)) +
+                                col.t);
+        if (obj->photon_pass_through) {
+            /* Straight on, filtered; POV-Ray counts the level too */
+            power *= transm;
+            o = h.p;
+            continue;
+        }
+        bool entering = v3_dot(d, h.n) < 0.0;
+        vec3 nf = entering ? h.n : v3_neg(h.n); /* facing the photon */
+        double cos_i = -v3_dot(d, nf);
+        bool refl_ok = allowed(obj->photon_reflection,
+                               c->light->photon_reflection);
+        bool refr_ok = allowed(obj->photon_refraction,
+                               c->light->photon_refraction) &&
+                       h.interior && transm > 0.0;
+        double u = rng_uniform(r);
+        if (refr_ok) {
+            /* Indices on both sides from the interior stack (§1.2) */
+            int pos = -1;
+            for (int i = n_stack - 1; i >= 0; i--)
+                if (stack[i] == obj) {
+                    pos = i;
+                    break;
+                }
+            double n_from, n_to;
+            int action; /* 0 push, 1 pop top, 2 remove inner, 3 none */
+            if (entering && pos < 0) {
+                n_from = top_ior(stack, n_stack, lambda);
+                n_to = ior_eval(h.interior, lambda);
+                action = 0;
+            } else if (pos == n_stack - 1 && pos >= 0) {
+                n_from = ior_eval(h.interior, lambda);
+                n_to = top_ior(stack, n_stack - 1, lambda);
+                action = 1;
+            } else if (pos >= 0) {
+                n_from = n_to = 1.0; /* leaving an outer overlapping object */
+                action = 2;
+            } else {
+                /* leaving an object we were not known to be inside (the
+                ** light sat in it, or a grazing miss): into the top medium */
+                n_from = ior_eval(h.interior, lambda);
+                n_to = top_ior(stack, n_stack, lambda);
+                action = 3;
+            }
+            double cos_t;
+            double eta = n_from / n_to;
+            double f = pmap_fresnel(cos_i, eta, &cos_t);
+            if (u < f) {
+                /* Reflection off the outside needs 'reflection on', as
+                ** in POV-Ray; inside the object (total or partial
+                ** internal reflection) it is part of the refracted light
+                ** and always followed (POV-Ray follows TIR only). */
+                if (!refl_ok && entering)
+                    return;
+                d = v3_norm(v3_reflect(d, nf));
+            } else {
+                d = v3_norm(v3_add(v3_scale(d, eta),
+                                   v3_scale(nf, eta * cos_i - cos_t)));
+                power *= transm;
+                if (action == 0 && n_stack < PTRACE_MAX_STACK)
+                    stack[n_stack++] = obj;
+                else if (action == 1)
+                    n_stack--;
+                else if (action == 2) {
+                    for (int i = pos; i < n_stack - 1; i++)
+                        stack[i] = stack[i + 1];
+                    n_stack--;
+                }
+            }
+        } else if (refl_ok && fin) {
+            /* A mirror: POV-Ray's reflection colour with its falloff,
+            ** as a spectral reflectivity taken by Russian roulette */
+            double fl = pow(1.0 - cos_i, fin->reflection_falloff);
+            double refl[3] = {
+                fl * fin->reflection_max.r + (1 - fl) * fin->reflection_min.r,
+                fl * fin->reflection_max.g + (1 - fl) * fin->reflection_min.g,
+                fl * fin->reflection_max.b + (1 - fl) * fin->reflection_min.b
+            };
+            double p = clamp01(spec_reflectance(refl, lambda));
+            if (!(u < p))
+                return;
+            d = v3_norm(v3_reflect(d, nf));
+        } else {
+            return;
+        }
+        o = h.p;
+    }
+}

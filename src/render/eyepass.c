@@ -1,0 +1,423 @@
+/* SPDX-License-Identifier: MIT */
+/*
+** eyepass.c: the eye pass: tiles over threads and POV-Ray's antialiasing
+** (see eyepass.h).
+**
+** DESIGN. The image is cut into 32 x 32 tiles, POV-Ray's block size, and
+** par_for() hands them to the threads. POV-Ray's antialiasing depends on
+** the tile: method 1 compares each pixel with its left and upper
+** neighbours, tracing (but never supersampling) the row above and the
+** column left of the tile; method 2 traces the tile's pixel corners. Doing
+** the same here supersamples the pixels POV-Ray supersamples. Every random
+** number (AA jitter, area-light jitter, wavelengths) comes from a stream
+** keyed by the sample's image position, never by the thread, so the image
+** does not depend on the thread count.
+*/
+#include "config.h"
+
+#include <math.h>
+#include <stdatomic.h>
+#include <string.h>
+
+#include "render/camera.h"
+#include "render/eyepass.h"
+#include "util/mem.h"
+#include "util/thread.h"
+
+#define TILE 32
+
+/* ------------------------------------------------------------------ */
+/* Sampling                                                             */
+/* ------------------------------------------------------------------ */
+
+struct job {
+    const iris_scene *scene;
+    const iris_render_options *opts;
+    const struct tracer *tracer;
+    struct trace_ctx *ctx;     /* one per thread */
+    struct interior_stack cam_stack;
+    bool ortho;
+    iris_image *out;
+    int x0, y0, x1, y1;        /* render window, inclusive, 0-based */
+    int tiles_x, tiles_y;
+    double aa_threshold, aa_gamma, jitter;
+    int aa_depth;
+    enum iris_aa_method aa;
+    atomic_ullong nan_count;
+    atomic_int tiles_done;
+    atomic_int interrupted;
+    atomic_int alloc_failed;
+};
+
+/* A stream key from an image position, so that a sample gets the same
+** random numbers whichever tile or thread traces it. */
+static uint64_t pos_key(double x, double y)
+{
+    int64_t ix = (int64_t)llround(x * 4096.0), iy = (int64_t)llround(y * 4096.0);
+    return ((uint64_t)ix << 32) ^ (uint64_t)iy ^ ((uint64_t)iy << 17);
+}
+
+/* Traces the camera ray through image point (x, y). */
+static void trace_sample(struct job *j, struct trace_ctx *c, double x,
+                         double y, double rgb[3])
+{
+    rng_seed(&c->rng, j->opts->seed, 1, pos_key(x, y));
+    struct tray r;
+    memset(&r, 0, sizeof r);
+    rgb[0] = rgb[1] = rgb[2] = 0.0;
+    if (!camera_ray(&j->scene->camera, j->opts->width, j->opts->height, x, y,
+                    &r.r))
+        return;
+    if (j->ortho)
+        trace_containing(j->tracer, r.r.o, &r.st);
+    else
+        r.st = j->cam_stack;
+    c->level = 0;
+    trace_ray(c, &r, 1.0, false, rgb);
+    for (int k = 0; k < 3; k++)
+        if (!isfinite(rgb[k])) {
+            rgb[0] = rgb[1] = rgb[2] = 0.0;
+            atomic_fetch_add(&j->nan_count, 1);
+            break;
+        }
+}
+
+/* POV-Ray's Jitter2d: a position-keyed offset in [-0.5, 0.5)^2. */
+static void jitter2d(const struct job *j, double x, double y, double *rx,
+                     double *ry)
+{
+    rng r;
+    rng_seed(&r, j->opts->seed, 2, pos_key(x, y));
+    *rx = rng_uniform(&r) - 0.5;
+    *ry = rng_uniform(&r) - 0.5;
+}
+
+/* The colour compared by the AA threshold: gamma-adjusted (§4.1). */
+static double aa_distance(const struct job *j, const double a[3],
+                          const double b[3])
+{
+    double g = j->aa_gamma > 0 ? 1.0 / j->aa_gamma : 1.0, d = 0;
+    for (int k = 0; k < 3; k++)
+        d += fabs(pow(fmax(a[k], 0.0), g) - pow(fmax(b[k], 0.0), g));
+    return d;
+}
+
+/* Method 1: (centre + R x R jittered samples) / (R^2 + 1). */
+static void supersample(struct job *j, struct trace_ctx *c, double x, double y,
+                        double col[3])
+{
+    int R = j->aa_depth;
+    double step = 1.0 / R, range = 0.5 - step * 0.5;
+    double js = j->jitter / R;
+    for (int iy = 0; iy < R; iy++)
+        for (int ix = 0; ix < R; ix++) {
+            double xx = -range + ix * step, yy = -range + iy * step;
+            double sx = x + xx, sy = y + yy;
+            if (js > 0.0) {
+                double rx, ry;
+                jitter2d(j, sx, sy, &rx, &ry);
+                sx += rx * js;
+                sy += ry * js;
+            }
+            double s[3];
+            trace_sample(j, c, sx, sy, s);
+            for (int k = 0; k < 3; k++)
+                col[k] += s[k];
+        }
+    for (int k = 0; k < 3; k++)
+        col[k] /= R * R + 1;
+}
+
+/* Stratified supersampling: R x R samples, one per jittered stratum. */
+static void stratified(struct job *j, struct trace_ctx *c, int x, int y,
+                       double col[3])
+{
+    int R = j->aa_depth;
+    col[0] = col[1] = col[2] = 0.0;
+    rng r;
+    rng_seed(&r, j->opts->seed, 3, (uint64_t)y * 65536u + (uint64_t)x);
+    for (int iy = 0; iy < R; iy++)
+        for (int ix = 0; ix < R; ix++) {
+            double ux = j->jitter > 0 ? rng_uniform(&r) : 0.5;
+            double uy = j->jitter > 0 ? rng_uniform(&r) : 0.5;
+            double s[3];
+            trace_sample(j, c, x - 0.5 + (ix + ux) / R, y - 0.5 + (iy + uy) / R,
+                         s);
+            for (int k = 0; k < 3; k++)
+                col[k] += s[k];
+        }
+    for (int k = 0; k < 3; k++)
+        col[k] /= R * R;
+}
+
+static void put_pixel(struct job *j, int x, int y, const double col[3])
+{
+    float *px = &j->out->pixels[((size_t)y * j->out->width + x) * 4];
+    for (int k = 0; k < 3; k++) {
+        double v = col[k];
+        if (!isfinite(v)) {
+            v = 0.0;
+            atomic_fetch_add(&j->nan_count, 1);
+        }
+        px[k] = (float)fmax(v, 0.0);
+    }
+    px[3] = 1.0f;
+}
+
+/* The tile's pixel (x, y) in a buffer with one extra row and column on
+** the top and left. */
+#define TB(buf, x, y) (buf)[((y) - ty0 + 1) * (tw + 2) + ((x) - tx0 + 1)]
+
+struct px {
+    double c[3];
+    bool done;                 /* already supersampled (or not allowed) */
+};
+
+static void tile_method1(struct job *j, struct trace_ctx *c, int tx0,
+                         int ty0, int tx1, int ty1)
+{
+    int tw = tx1 - tx0 + 1, th = ty1 - ty0 + 1;
+    struct px *buf = iris_calloc((size_t)(tw + 2) * (th + 2), sizeof *buf);
+    if (!buf) {
+        atomic_store(&j->alloc_failed, 1);
+        return;
+    }
+    for (int x = tx0; x <= tx1; x++) {
+        trace_sample(j, c, x, ty0 - 1, TB(buf, x, ty0 - 1).c);
+        TB(buf, x, ty0 - 1).done = true;
+    }
+    for (int y = ty0; y <= ty1; y++) {
+        trace_sample(j, c, tx0 - 1, y, TB(buf, tx0 - 1, y).c);
+        TB(buf, tx0 - 1, y).done = true;
+        for (int x = tx0; x <= tx1; x++) {
+            struct px *cur = &TB(buf, x, y), *left = &TB(buf, x - 1, y),
+                      *top = &TB(buf, x, y - 1);
+            trace_sample(j, c, x, y, cur->c);
+            bool ldiff = aa_distance(j, left->c, cur->c) >= j->aa_threshold;
+            bool tdiff = aa_distance(j, top->c, cur->c) >= j->aa_threshold;
+            bool sl = !left->done && ldiff, st = !top->done && tdiff;
+            bool sc = ldiff || tdiff;
+            if (sl) supersample(j, c, x - 1, y, left->c);
+            if (st) supersample(j, c, x, y - 1, top->c);
+            if (sc) supersample(j, c, x, y, cur->c);
+            if (sl) left->done = true;
+            if (st) top->done = true;
+            if (sc) cur->done = true;
+        }
+    }
+    for (int y = ty0; y <= ty1; y++)
+        for (int x = tx0; x <= tx1; x++)
+            put_pixel(j, x, y, TB(buf, x, y).c);
+    iris_free(buf);
+}
+
+/* Method 2's per-pixel subdivision buffer of (2^R + 1)^2 samples. */
+struct subdiv {
+    int size;                  /* 2^R + 1 */
+    struct px *s;
+};
+
+static struct px *sd_at(struct subdiv *b, int x, int y)
+{
+    return &b->s[y * b->size + x];
+}
+
+/* POV-Ray's SubdivideOnePixel. */
+static void subdivide(struct job *j, struct trace_ctx *c, double x, double y,
+                      double d, int bx, int by, int bstep, struct subdiv *b,
+                      double res[3], int level, double js)
+{
+    struct px *c00 = sd_at(b, bx, by), *c02 = sd_at(b, bx, by + bstep),
+              *c20 = sd_at(b, bx + bstep, by),
+              *c22 = sd_at(b, bx + bstep, by + bstep);
+    int h = bstep / 2;
+    double thr = j->aa_threshold;
+    if (level > 0 && h > 0 &&
+        (aa_distance(j, c00->c, c02->c) >= thr ||
+         aa_distance(j, c00->c, c20->c) >= thr ||
+         aa_distance(j, c00->c, c22->c) >= thr ||
+         aa_distance(j, c02->c, c20->c) >= thr ||
+         aa_distance(j, c02->c, c22->c) >= thr ||
+         aa_distance(j, c20->c, c22->c) >= thr)) {
+        const struct { int bx, by; double dx, dy; } mids[5] = {
+            { bx, by + h, -d, 0 }, { bx + h, by, 0, -d },
+            { bx + bstep, by + h, d, 0 }, { bx + h, by + bstep, 0, d },
+            { bx + h, by + h, 0, 0 } };
+        for (int i = 0; i < 5; i++) {
+            struct px *p = sd_at(b, mids[i].bx, mids[i].by);
+            if (p->done)
+                continue;
+            double sx = x + mids[i].dx, sy = y + mids[i].dy;
+            if (js > 0.0) {
+                double rx, ry;
+                jitter2d(j, sx, sy, &rx, &ry);
+                sx += rx * js;
+                sy += ry * js;
+            }
+            trace_sample(j, c, sx, sy, p->c);
+            p->done = true;
+        }
+        double d2 = d * 0.5, r[4][3];
+        subdivide(j, c, x - d2, y - d2, d2, bx, by, h, b, r[0], level - 1, js);
+        subdivide(j, c, x - d2, y + d2, d2, bx, by + h, h, b, r[1], level - 1,
+                  js);
+        subdivide(j, c, x + d2, y - d2, d2, bx + h, by, h, b, r[2], level - 1,
+                  js);
+        subdivide(j, c, x + d2, y + d2, d2, bx + h, by + h, h, b, r[3],
+                  level - 1, js);
+        for (int k = 0; k < 3; k++)
+            res[k] = (r[0][k] + r[1][k] + r[2][k] + r[3][k]) / 4.0;
+    } else {
+        for (int k = 0; k < 3; k++)
+            res[k] = (c00->c[k] + c02->c[k] + c20->c[k] + c22->c[k]) / 4.0;
+    }
+}
+
+static void tile_method2(struct job *j, struct trace_ctx *c, int tx0,
+                         int ty0, int tx1, int ty1)
+{
+    int tw = tx1 - tx0 + 1, th = ty1 - ty0 + 1;
+    int R = j->aa_depth, sub = 1 << R;
+    struct px *corners = iris_calloc((size_t)(tw + 1) * (th + 1),
+                                     sizeof *corners);
+    struct subdiv b = { sub + 1, iris_calloc((size_t)(sub + 1) * (sub + 1),
+                                              sizeof(struct px)) };
+    if (!corners || !b.s) {
+        iris_free(corners);
+        iris_free(b.s);
+        atomic_store(&j->alloc_failed, 1);
+        return;
+    }
+    for (int y = ty0; y <= ty1 + 1; y++)
+        for (int x = tx0; x <= tx1 + 1; x++)
+            trace_sample(j, c, x - 0.5, y - 0.5,
+                         corners[(y - ty0) * (tw + 1) + (x - tx0)].c);
+    double js = j->jitter / (double)(sub + 1);
+    for (int y = ty0; y <= ty1; y++)
+        for (int x = tx0; x <= tx1; x++) {
+            memset(b.s, 0, (size_t)b.size * b.size * sizeof *b.s);
+            *sd_at(&b, 0, 0) = corners[(y - ty0) * (tw + 1) + (x - tx0)];
+            *sd_at(&b, 0, sub) = corners[(y - ty0 + 1) * (tw + 1) + (x - tx0)];
+            *sd_at(&b, sub, 0) = corners[(y - ty0) * (tw + 1) + (x - tx0 + 1)];
+            *sd_at(&b, sub, sub) =
+                corners[(y - ty0 + 1) * (tw + 1) + (x - tx0 + 1)];
+            sd_at(&b, 0, 0)->done = sd_at(&b, 0, sub)->done =
+                sd_at(&b, sub, 0)->done = sd_at(&b, sub, sub)->done = true;
+            double col[3];
+            subdivide(j, c, x, y, 0.5, 0, 0, sub, &b, col, R - 1, js);
+            put_pixel(j, x, y, col);
+        }
+    iris_free(corners);
+    iris_free(b.s);
+}
+
+static void run_tile(void *ctx, int64_t item, int thread)
+{
+    struct job *j = ctx;
+    struct trace_ctx *c = &j->ctx[thread];
+    if (atomic_load(&j->interrupted) ||
+        (j->opts->interrupt && *j->opts->interrupt)) {
+        atomic_store(&j->interrupted, 1);
+        return;
+    }
+    int tx = (int)(item % j->tiles_x), ty = (int)(item / j->tiles_x);
+    int x0 = j->x0 + tx * TILE, y0 = j->y0 + ty * TILE;
+    int x1 = x0 + TILE - 1 < j->x1 ? x0 + TILE - 1 : j->x1;
+    int y1 = y0 + TILE - 1 < j->y1 ? y0 + TILE - 1 : j->y1;
+    switch (j->aa) {
+    case IRIS_AA_POV1:
+        tile_method1(j, c, x0, y0, x1, y1);
+        break;
+    case IRIS_AA_POV2:
+        tile_method2(j, c, x0, y0, x1, y1);
+        break;
+    default:
+        for (int y = y0; y <= y1; y++)
+            for (int x = x0; x <= x1; x++) {
+                double col[3];
+                if (j->aa == IRIS_AA_STRATIFIED)
+                    stratified(j, c, x, y, col);
+                else
+                    trace_sample(j, c, x, y, col);
+                put_pixel(j, x, y, col);
+            }
+        break;
+    }
+    int done = atomic_fetch_add(&j->tiles_done, 1) + 1;
+    if (thread == 0 && j->opts->progress)
+        j->opts->progress(j->opts->progress_user, "render",
+                          (double)done / (j->tiles_x * j->tiles_y));
+}
+
+
+static int clampi(int v, int lo, int hi)
+{
+    return v < lo ? lo : v > hi ? hi : v;
+}
+
+enum iris_status eyepass_run(const struct tracer *tr,
+                             const iris_render_options *opts, int threads,
+                             iris_image *out, iris_render_stats *stats)
+{
+    const iris_scene *scene = tr->scene;
+    struct job j;
+    memset(&j, 0, sizeof j);
+    j.scene = scene;
+    j.opts = opts;
+    j.out = out;
+    j.tracer = tr;
+    j.x0 = opts->start_col > 0 ? clampi(opts->start_col - 1, 0, opts->width - 1) : 0;
+    j.x1 = opts->end_col > 0 ? clampi(opts->end_col - 1, 0, opts->width - 1)
+                             : opts->width - 1;
+    j.y0 = opts->start_row > 0 ? clampi(opts->start_row - 1, 0, opts->height - 1) : 0;
+    j.y1 = opts->end_row > 0 ? clampi(opts->end_row - 1, 0, opts->height - 1)
+                             : opts->height - 1;
+    if (j.x1 < j.x0 || j.y1 < j.y0)
+        return IRIS_EINVAL;
+    j.tiles_x = (j.x1 - j.x0) / TILE + 1;
+    j.tiles_y = (j.y1 - j.y0) / TILE + 1;
+    j.aa = opts->aa;
+    j.aa_depth = opts->aa_depth < 1 ? 1 : opts->aa_depth > 9 ? 9 : opts->aa_depth;
+    j.aa_threshold = opts->aa_threshold;
+    j.aa_gamma = opts->aa_gamma;
+    j.jitter = opts->jitter ? opts->jitter_amount : 0.0;
+    j.ortho = scene->camera.kind == IRIS_CAM_ORTHOGRAPHIC;
+    if (threads < 1)
+        threads = 1;
+    trace_containing(tr, scene->camera.location, &j.cam_stack);
+    j.ctx = iris_calloc((size_t)threads, sizeof *j.ctx);
+    if (!j.ctx)
+        return IRIS_ENOMEM;
+    enum iris_status st = IRIS_OK;
+    int n_ctx = 0;
+    for (; n_ctx < threads; n_ctx++)
+        if (!trace_ctx_init(&j.ctx[n_ctx], tr)) {
+            trace_ctx_fini(&j.ctx[n_ctx]);
+            st = IRIS_ENOMEM;
+            break;
+        }
+    if (st == IRIS_OK) {
+        atomic_init(&j.nan_count, 0);
+        atomic_init(&j.tiles_done, 0);
+        atomic_init(&j.interrupted, 0);
+        atomic_init(&j.alloc_failed, 0);
+        par_for(threads, (int64_t)j.tiles_x * j.tiles_y, run_tile, &j);
+        if (atomic_load(&j.alloc_failed))
+            st = IRIS_ENOMEM;
+        else if (atomic_load(&j.interrupted))
+            st = IRIS_EINTR;
+        else if (opts->progress)
+            opts->progress(opts->progress_user, "render", 1.0);
+    }
+    if (stats) {
+        for (int i = 0; i < n_ctx; i++)
+            stats->rays_traced += j.ctx[i].rays;
+        stats->threads = threads;
+        stats->passes = 1;
+        stats->nan_pixels += atomic_load(&j.nan_count);
+    }
+    for (int i = 0; i < n_ctx; i++)
+        trace_ctx_fini(&j.ctx[i]);
+    iris_free(j.ctx);
+    return st;
+}

@@ -1,0 +1,161 @@
+/* SPDX-License-Identifier: MIT */
+/*
+** plan.c: the render plan (see plan.h). Photons follow POV-Ray's rules
+** (semantics §2.1, §2.2b): a photons{} block with gather > 0, quality 9,
+** and some non-shadowless light and photon target whose merged flags ask
+** for refraction or reflection. Spectral splitting is planned when some
+** interior's index varies with the wavelength.
+*/
+#include "config.h"
+
+#include <string.h>
+
+#include "render/plan.h"
+#include "render/trace.h"
+#include "spectrum/ior.h"
+
+static bool flag_on(enum iris_tristate a, enum iris_tristate b)
+{
+    /* merged = light | target; shoot if ON and not OFF in the merge */
+    return (a == IRIS_ON || b == IRIS_ON) && a != IRIS_OFF && b != IRIS_OFF;
+}
+
+struct walk {
+    bool any_target_refr, any_target_refl, any_target_unset;
+    bool targets_refl_on[2]; /* [0] refraction, [1] reflection */
+    bool spectral;
+    int spectral_samples;
+    int n_objects;
+    const iris_scene *scene;
+    bool photon_ok;
+};
+
+static void walk_object(struct walk *w, const iris_object *o, int depth)
+{
+    if (!o || depth > 64)
+        return;
+    w->n_objects++;
+    if (o->interior && ior_is_dispersive(o->interior)) {
+        w->spectral = true;
+        int n = o->interior->dispersion_samples > 0
+                    ? o->interior->dispersion_samples : 7;
+        if (n > w->spectral_samples)
+            w->spectral_samples = n;
+    }
+    if (o->photon_target && o->photon_density > 0) {
+        for (int i = 0; i < w->scene->n_lights; i++) {
+            const iris_light *l = w->scene->lights[i];
+            if (l->shadowless)
+                continue;
+            if (flag_on(l->photon_refraction, o->photon_refraction) ||
+                flag_on(l->photon_reflection, o->photon_reflection))
+                w->photon_ok = true;
+        }
+    }
+    if (o->kind >= IRIS_OBJ_UNION && o->kind <= IRIS_OBJ_LIGHT_GROUP)
+        for (int i = 0; i < o->u.csg.n_children; i++)
+            walk_object(w, o->u.csg.children[i], depth + 1);
+}
+
+void plan_compute(const iris_scene *scene, const iris_render_options *opts,
+                  struct render_plan *p)
+{
+    memset(p, 0, sizeof *p);
+    p->width = opts->width;
+    p->height = opts->height;
+    p->threads = opts->threads;
+    p->quality = opts->quality < 0 ? 0 : opts->quality > 9 ? 9 : opts->quality;
+    unsigned q = trace_quality_flags(p->quality);
+    p->aa = opts->aa;
+    p->aa_depth = opts->aa_depth < 1 ? 1 : opts->aa_depth > 9 ? 9 : opts->aa_depth;
+    p->aa_threshold = opts->aa_threshold;
+    p->n_lights = scene->n_lights;
+    for (int i = 0; i < scene->n_lights; i++) {
+        const iris_light *l = scene->lights[i];
+        if (l->kind == IRIS_LIGHT_SPOT) p->n_spot++;
+        else if (l->kind == IRIS_LIGHT_CYLINDER) p->n_cylinder++;
+        else p->n_point++;
+        if (l->parallel) p->n_parallel++;
+        if (l->area && l->size1 * l->size2 > 1) p->n_area++;
+        if (l->shadowless) p->n_shadowless++;
+    }
+    p->shadows = (q & TQ_SHADOW) && p->n_lights > p->n_shadowless;
+    p->area_sampling = (q & TQ_AREA_LIGHT) && p->n_area > 0;
+    p->refraction = (q & TQ_REFRACT) != 0;
+    p->reflection = (q & TQ_REFLECT) != 0;
+    p->normals = (q & TQ_NORMAL) != 0;
+    struct walk w;
+    memset(&w, 0, sizeof w);
+    w.scene = scene;
+    for (int i = 0; i < scene->n_objects; i++)
+        walk_object(&w, scene->objects[i], 0);
+    p->n_objects = w.n_objects;
+    p->spectral = w.spectral && p->refraction;
+    p->spectral_samples = w.spectral_samples;
+    if (opts->spectral_samples_min > p->spectral_samples)
+        p->spectral_samples = opts->spectral_samples_min;
+    if (!opts->use_photons)
+        p->photon_reason = "disabled by the options";
+    else if (!scene->settings.photons.enabled)
+        p->photon_reason = "no photons{} block with gather > 0";
+    else if (p->quality < 9)
+        p->photon_reason = "quality below 9";
+    else if (!w.photon_ok)
+        p->photon_reason = "no light and target ask for refraction or "
+                           "reflection photons";
+    else
+        p->photons = true;
+    p->fog = scene->n_fogs > 0;
+    p->sky_sphere = scene->sky_sphere && scene->sky_sphere->n_pigments > 0;
+    p->max_trace_level = scene->settings.max_trace_level > 0
+                             ? scene->settings.max_trace_level : 5;
+    p->adc_bailout = scene->settings.adc_bailout > 0
+                         ? scene->settings.adc_bailout : 1.0 / 255.0;
+}
+
+static const char *aa_name(enum iris_aa_method m)
+{
+    switch (m) {
+    case IRIS_AA_POV1: return "POV-Ray method 1 (non-adaptive)";
+    case IRIS_AA_POV2: return "POV-Ray method 2 (adaptive)";
+    case IRIS_AA_STRATIFIED: return "stratified supersampling";
+    default: return "none";
+    }
+}
+
+void plan_print(const struct render_plan *p, FILE *out)
+{
+    if (!out)
+        return;
+    fprintf(out, "render plan:\n");
+    fprintf(out, "  image: %d x %d, %d tiles, %d threads\n", p->width,
+            p->height, p->tiles, p->threads);
+    fprintf(out, "  quality: %d (shadows %s, refraction %s, reflection %s, "
+            "normals %s)\n", p->quality, p->shadows ? "on" : "off",
+            p->refraction ? "on" : "off", p->reflection ? "on" : "off",
+            p->normals ? "on" : "off");
+    fprintf(out, "  objects: %d; lights: %d (point %d, spot %d, cylinder %d, "
+            "parallel %d, shadowless %d)\n", p->n_objects, p->n_lights,
+            p->n_point, p->n_spot, p->n_cylinder, p->n_parallel,
+            p->n_shadowless);
+    fprintf(out, "  area-light sampling: %s", p->area_sampling ? "yes" : "no");
+    if (p->n_area > 0 && !p->area_sampling)
+        fprintf(out, " (quality below 5: area lights act as point lights)");
+    fprintf(out, "\n");
+    if (p->photons)
+        fprintf(out, "  photon pass: yes\n");
+    else
+        fprintf(out, "  photon pass: no (%s)\n", p->photon_reason);
+    if (p->spectral)
+        fprintf(out, "  spectral splitting: yes, up to %d wavelengths at "
+                "dispersive interiors\n", p->spectral_samples);
+    else
+        fprintf(out, "  spectral splitting: no (no dispersive interior)\n");
+    fprintf(out, "  atmosphere: fog %s, sky_sphere %s\n", p->fog ? "yes" : "no",
+            p->sky_sphere ? "yes" : "no");
+    fprintf(out, "  antialiasing: %s", aa_name(p->aa));
+    if (p->aa != IRIS_AA_NONE)
+        fprintf(out, ", depth %d, threshold %g", p->aa_depth, p->aa_threshold);
+    fprintf(out, "\n  max_trace_level %d, adc_bailout %g\n", p->max_trace_level,
+            p->adc_bailout);
+}

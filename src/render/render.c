@@ -1,0 +1,153 @@
+/* SPDX-License-Identifier: MIT */
+/*
+** render.c: iris_render(): the render plan, the Embree scene and the
+** materials, the photon pass when the plan has one, then the eye pass
+** (eyepass.c).
+**
+** The scene reaches the tracer only through the query table (query.h),
+** filled here from src/accel.
+*/
+#include "config.h"
+
+#include <string.h>
+
+#include "accel/accel.h"
+#include "iris/render.h"
+#include "material/material.h"
+#include "render/eyepass.h"
+#include "render/plan.h"
+#include "render/trace.h"
+#include "util/thread.h"
+
+void iris_render_defaults(iris_render_options *o)
+{
+    memset(o, 0, sizeof *o);
+    o->width = 160;
+    o->height = 120;
+    o->quality = 9;
+    o->aa = IRIS_AA_NONE;
+    o->aa_threshold = 0.3;
+    o->aa_depth = 3;
+    o->jitter = true;
+    o->jitter_amount = 1.0;
+    o->aa_gamma = 2.5;
+    o->use_photons = true;
+}
+
+/* ------------------------------------------------------------------ */
+/* The scene query through src/accel                                    */
+/* ------------------------------------------------------------------ */
+
+static bool accel_isect(const void *impl, const ray *r, double tmin,
+                        double tmax, unsigned skip, struct hit *h)
+{
+    return accel_intersect(impl, r, tmin, tmax, skip, h);
+}
+
+static bool accel_in(const void *impl, const iris_object *obj, vec3 p)
+{
+    return accel_inside(impl, obj, p);
+}
+
+/* ------------------------------------------------------------------ */
+/* Photons                                                              */
+/* ------------------------------------------------------------------ */
+
+/*
+** The photon pass. The photon module (src/photon) builds the map that
+** tracer.photon_shade reads at each texture layer; until its interface is
+** joined here, a plan that asks for photons renders without the caustic
+** light, which is what POV-Ray shows with photons disabled.
+*/
+static enum iris_status photon_pass(const struct render_plan *plan,
+                                    struct tracer *t, FILE *log)
+{
+    if (plan->photons && log)
+        fprintf(log, "warning: photons are planned but the photon pass is "
+                     "not joined to the renderer yet; rendering without\n");
+    t->photon_shade = NULL;
+    t->photon_map = NULL;
+    return IRIS_OK;
+}
+
+/* ------------------------------------------------------------------ */
+/* iris_render                                                          */
+/* ------------------------------------------------------------------ */
+
+static void set_err(char *err, size_t errlen, const char *msg)
+{
+    if (err && errlen) {
+        strncpy(err, msg, errlen - 1);
+        err[errlen - 1] = '\0';
+    }
+}
+
+enum iris_status iris_render(const iris_scene *scene,
+                             const iris_render_options *opts, iris_image *out,
+                             iris_render_stats *stats, char *err,
+                             size_t errlen)
+{
+    if (stats)
+        memset(stats, 0, sizeof *stats);
+    if (!scene || !opts || !out || !out->pixels) {
+        set_err(err, errlen, "iris_render: missing scene, options or image");
+        return IRIS_EINVAL;
+    }
+    if (opts->width <= 0 || opts->height <= 0 || out->width != opts->width ||
+        out->height != opts->height) {
+        set_err(err, errlen, "iris_render: the image size does not match "
+                             "the options");
+        return IRIS_EINVAL;
+    }
+    FILE *log = opts->log ? opts->log : stderr;
+    double t0 = par_now();
+    int threads = opts->threads > 0 ? opts->threads : par_cores();
+    if (threads > 256)
+        threads = 256;
+    struct render_plan plan;
+    plan_compute(scene, opts, &plan);
+    plan.threads = threads;
+    if (opts->plan_out)
+        plan_print(&plan, opts->plan_out);
+
+    struct accel *acc = NULL;
+    enum iris_status st = accel_build(scene, &acc, log, err, errlen);
+    if (st != IRIS_OK)
+        return st;
+    struct mat_ctx *mat = NULL;
+    st = mat_ctx_create(scene, log, &mat);
+    if (st != IRIS_OK) {
+        accel_destroy(acc);
+        set_err(err, errlen, "iris_render: out of memory building materials");
+        return st;
+    }
+    struct rquery q = { acc, accel_isect, accel_in, accel_epsilon(acc) };
+    struct tracer tr;
+    if (!tracer_init(&tr, scene, mat, &q, plan.quality)) {
+        st = IRIS_ENOMEM;
+        goto done;
+    }
+    tr.seed = opts->seed;
+    tr.spectral_min = opts->spectral_samples_min;
+    double t1 = par_now();
+    st = photon_pass(&plan, &tr, log);
+    double t2 = par_now();
+    if (st == IRIS_OK)
+        st = eyepass_run(&tr, opts, threads, out, stats);
+    if (stats) {
+        stats->time_build_s = t1 - t0;
+        stats->time_photon_s = t2 - t1;
+        stats->time_render_s = par_now() - t2;
+    }
+    if (st == IRIS_ENOMEM)
+        set_err(err, errlen, "iris_render: out of memory");
+    else if (st == IRIS_EINTR)
+        set_err(err, errlen, "iris_render: interrupted");
+    else if (st == IRIS_EINVAL)
+        set_err(err, errlen, "iris_render: empty render window");
+done:
+    tracer_fini(&tr);
+    mat_ctx_destroy(mat);
+    accel_destroy(acc);
+    return st;
+}

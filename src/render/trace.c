@@ -1,0 +1,1069 @@
+/* SPDX-License-Identifier: MIT */
+/*
+** trace.c: the eye-pass tracer (see trace.h), following POV-Ray 3.7's
+** Trace class (source/backend/render/trace.cpp): TraceRay,
+** ComputeTextureColour, ComputeLightedTexture, ComputeOneDiffuseLight,
+** the shadow-ray functions, ComputeRefraction, ComputeReflection,
+** ComputeSky and ComputeFog, in that order below.
+*/
+#include "config.h"
+
+#include <math.h>
+#include <string.h>
+
+#include "render/trace.h"
+#include "material/noise.h"
+#include "math/transform.h"
+#include "spectrum/ior.h"
+#include "spectrum/spectrum.h"
+#include "util/mem.h"
+
+#define T_EPSILON 1e-10
+#define HUGE_DEPTH 2.0e10        /* POV-Ray's BOUND_HUGE */
+#define MAX_CACHED_LIGHTS 64
+
+unsigned trace_quality_flags(int q)
+{
+    if (q < 0) q = 0;
+    if (q > 9) q = 9;
+    unsigned f = 0;
+    if (q <= 1) f |= TQ_FULL_AMBIENT;
+    if (q >= 4) f |= TQ_SHADOW;
+    if (q >= 5) f |= TQ_AREA_LIGHT;
+    if (q >= 6) f |= TQ_REFRACT;
+    if (q >= 8) f |= TQ_REFLECT | TQ_NORMAL;
+    if (q >= 9) f |= TQ_VOLUME | TQ_ADVANCED;
+    return f;
+}
+
+bool tracer_init(struct tracer *t, const iris_scene *scene,
+                 const struct mat_ctx *mat, const struct rquery *q,
+                 int quality)
+{
+    memset(t, 0, sizeof *t);
+    t->scene = scene;
+    t->mat = mat;
+    t->q = *q;
+    t->quality = trace_quality_flags(quality);
+    t->max_level = scene->settings.max_trace_level > 0
+                       ? scene->settings.max_trace_level : 5;
+    if (t->max_level > 256)
+        t->max_level = 256;
+    t->adc = scene->settings.adc_bailout > 0 ? scene->settings.adc_bailout
+                                             : 1.0 / 255.0;
+    t->legacy = scene->version > 0 && scene->version < 3.7;
+    t->max_area_grid = 1;
+    if (scene->n_lights > 0) {
+        t->lights = iris_calloc((size_t)scene->n_lights, sizeof *t->lights);
+        if (!t->lights)
+            return false;
+        for (int i = 0; i < scene->n_lights; i++) {
+            light_prepare(scene->lights[i], &t->lights[i]);
+            if (t->lights[i].area) {
+                long g = (long)t->lights[i].size1 * t->lights[i].size2;
+                if (g > 1 << 20) /* a sane cap: 1024 x 1024 sub-lights */
+                    t->lights[i].area = false;
+                else if (g > t->max_area_grid)
+                    t->max_area_grid = (int)g;
+            }
+        }
+        t->n_lights = scene->n_lights;
+    }
+    return true;
+}
+
+void tracer_fini(struct tracer *t)
+{
+    iris_free(t->lights);
+    t->lights = NULL;
+}
+
+bool trace_ctx_init(struct trace_ctx *c, const struct tracer *t)
+{
+    memset(c, 0, sizeof *c);
+    c->t = t;
+    c->grid = iris_calloc((size_t)t->max_area_grid, sizeof *c->grid);
+    c->grid_set = iris_calloc((size_t)t->max_area_grid, sizeof *c->grid_set);
+    rng_seed(&c->rng, t->seed, 0, 0);
+    return c->grid && c->grid_set;
+}
+
+void trace_ctx_fini(struct trace_ctx *c)
+{
+    iris_free(c->grid);
+    iris_free(c->grid_set);
+    c->grid = NULL;
+    c->grid_set = NULL;
+}
+
+/* ------------------------------------------------------------------ */
+/* Small helpers                                                        */
+/* ------------------------------------------------------------------ */
+
+static bool rgb_zero(const double c[3])
+{
+    return fabs(c[0]) < T_EPSILON && fabs(c[1]) < T_EPSILON &&
+           fabs(c[2]) < T_EPSILON;
+}
+
+static double ior_of(const iris_interior *in)
+{
+    return in && in->ior > 0 ? in->ior : 1.0;
+}
+
+static const void *interior_key(const struct hit *h)
+{
+    return h->interior ? (const void *)h->interior : (const void *)h->obj;
+}
+
+static int stack_find(const struct interior_stack *st, const void *key)
+{
+    for (int i = st->n - 1; i >= 0; i--)
+        if (st->e[i].key == key)
+            return i;
+    return -1;
+}
+
+static void stack_remove(struct interior_stack *st, int i)
+{
+    for (; i + 1 < st->n; i++)
+        st->e[i] = st->e[i + 1];
+    st->n--;
+}
+
+static void stack_push(struct interior_stack *st, const void *key,
+                       const iris_interior *in, bool hollow)
+{
+    if (st->n >= TRACE_MAX_INTERIORS)
+        return;
+    st->e[st->n].key = key;
+    st->e[st->n].in = in;
+    st->e[st->n].hollow = hollow;
+    st->n++;
+}
+
+/* POV-Ray applies fog only to rays not inside a solid (non-hollow)
+** object. */
+static bool is_hollow_ray(const struct interior_stack *st)
+{
+    for (int i = 0; i < st->n; i++)
+        if (!st->e[i].hollow)
+            return false;
+    return true;
+}
+
+void trace_containing(const struct tracer *t, vec3 p,
+                      struct interior_stack *st)
+{
+    st->n = 0;
+    if (!t->q.inside)
+        return;
+    for (int i = 0; i < t->scene->n_objects; i++) {
+        const iris_object *o = t->scene->objects[i];
+        if (!o->interior)
+            continue;
+        if (t->q.inside(t->q.impl, o, p))
+            stack_push(st, o->interior, o->interior, o->hollow);
+    }
+}
+
+static unsigned skip_flags(const struct tray *r)
+{
+    return r->reflected ? ACCEL_SKIP_NO_REFLECTION : ACCEL_SKIP_NO_IMAGE;
+}
+
+/* The texture seen at a hit: interior_texture on the back side. */
+static const iris_texture *hit_texture(const struct hit *h, bool backface)
+{
+    if (backface && h->obj && h->obj->interior_texture)
+        return h->obj->interior_texture;
+    return h->texture;
+}
+
+/* The fade of 'in' over distance 'dist' (eye rays: applied even with
+** fade_power 0, as POV-Ray's ComputeLightedTexture does). */
+static void interior_fade(const iris_interior *in, double dist, bool eye,
+                          double att[3])
+{
+    att[0] = att[1] = att[2] = 1.0;
+    if (!in || !(fabs(in->fade_distance) > T_EPSILON))
+        return;
+    if (!eye && !(in->fade_power > 0.0))
+        return;
+    const double fc[3] = { in->fade_colour.r, in->fade_colour.g,
+                           in->fade_colour.b };
+    if (in->fade_power >= 1000) {
+        double depth = dist / in->fade_distance;
+        for (int k = 0; k < 3; k++)
+            att[k] = exp(-(1.0 - fc[k]) * depth);
+    } else {
+        double a = 1.0 + pow(dist / in->fade_distance, in->fade_power);
+        for (int k = 0; k < 3; k++)
+            att[k] = fc[k] + (1.0 - fc[k]) / a;
+    }
+}
+
+/* ------------------------------------------------------------------ */
+/* Shadows                                                              */
+/* ------------------------------------------------------------------ */
+
+/* POV-Ray's ComputeShadowColour: the filter of the object at 'h' for a
+** shadow ray along 'L'. */
+static void shadow_colour(struct trace_ctx *c, const struct interior_stack *st,
+                          const struct hit *h, vec3 L, double lc[3])
+{
+    const struct tracer *t = c->t;
+    vec3 n = h->shading_n;
+    double nd = v3_dot(n, L);
+    if (nd > 0.0)
+        n = v3_neg(n);
+    struct mat_point pt = { h->p, n, L, h->uv, h->obj,
+                            !(t->quality & TQ_NORMAL) };
+    struct mat_eval ev;
+    mat_eval_texture(t->mat, hit_texture(h, nd > 0.0), &pt, &ev);
+    const iris_interior *in = h->interior;
+    double caustics = in ? in->caustics * 45.0 : 0.0;
+    double fade[3] = { 1, 1, 1 };
+    if (in && stack_find(st, interior_key(h)) >= 0)
+        interior_fade(in, h->t, false, fade);
+    double acc[3] = { 0, 0, 0 };
+    for (int s = 0; s < ev.n_stacks; s++) {
+        const struct mat_stack *sk = &ev.stacks[s];
+        if (sk->weight < t->adc)
+            continue;
+        double tmp[3] = { 1, 1, 1 };
+        for (int i = 0; i < sk->n; i++) {
+            const struct mat_layer *l = &ev.layers[sk->first + i];
+            if (l->valid) {
+                double tr[3];
+                mat_rgb_transm(&l->pigment, tr);
+                for (int k = 0; k < 3; k++)
+                    tmp[k] *= tr[k];
+            }
+            if (caustics != 0.0) {
+                double k2 = 1.0 + pow(fabs(v3_dot(l->n, L)), caustics);
+                for (int k = 0; k < 3; k++)
+                    tmp[k] *= k2;
+            }
+        }
+        for (int k = 0; k < 3; k++)
+            acc[k] += sk->weight * tmp[k] * fade[k];
+    }
+    for (int k = 0; k < 3; k++)
+        lc[k] *= acc[k];
+}
+
+/* POV-Ray's TracePointLightShadowRay: walks the segment to the light,
+** filtering 'lc' by every object met, until it is black. */
+static void point_shadow(struct trace_ctx *c, const struct interior_stack *st,
+                         vec3 origin, vec3 L, double depth, double lc[3])
+{
+    const struct tracer *t = c->t;
+    double eps = t->q.eps;
+    for (int guard = 0; guard < 1024; guard++) {
+        ray r = { origin, L };
+        struct hit h;
+        c->rays++;
+        if (!t->q.intersect(t->q.impl, &r, eps, depth - eps,
+                            ACCEL_SKIP_NO_SHADOW, &h))
+            return;
+        if (!(h.t > eps) || !(h.t < depth - eps))
+            return;
+        shadow_colour(c, st, &h, L, lc);
+        if (rgb_zero(lc)) {
+            lc[0] = lc[1] = lc[2] = 0.0;
+            return;
+        }
+        depth -= h.t;
+        origin = h.p;
+    }
+}
+
+static double colour_distance(const double a[3], const double b[3])
+{
+    return fabs(a[0] - b[0]) + fabs(a[1] - b[1]) + fabs(a[2] - b[2]);
+}
+
+struct area_job {
+    const struct rlight *l;
+    const struct interior_stack *st;
+    vec3 p, a1, a2;
+    double lc[3];              /* the light colour entering the test */
+};
+
+/* One grid sample (u, v): a point-light shadow test from a (jittered)
+** position on the light, cached in the grid. */
+static void area_sample(struct trace_ctx *c, const struct area_job *j,
+                        int u, int v, double out[3])
+{
+    const struct rlight *l = j->l;
+    int idx = u * l->size2 + v;
+    if (c->grid_set[idx]) {
+        memcpy(out, c->grid[idx], sizeof c->grid[idx]);
+        return;
+    }
+    double ju = u, jv = v;
+    if (l->src->jitter) {
+        ju += rng_uniform(&c->rng) - 0.5;
+        jv += rng_uniform(&c->rng) - 0.5;
+    }
+    vec3 off = light_area_offset(l, j->a1, j->a2, ju, jv);
+    vec3 L;
+    double depth;
+    light_ray(l, j->p, off, &L, &depth);
+    memcpy(out, j->lc, sizeof j->lc);
+    point_shadow(c, j->st, j->p, L, depth, out);
+    memcpy(c->grid[idx], out, sizeof c->grid[idx]);
+    c->grid_set[idx] = true;
+}
+
+/* POV-Ray's TraceAreaLightSubsetShadowRay: the four corners of the
+** rectangle (u1,v1)-(u2,v2), subdivided while 'level' < adaptive or the
+** corners differ, the result being the mean of the four parts. */
+static void area_subset(struct trace_ctx *c, const struct area_job *j,
+                        int u1, int v1, int u2, int v2, int level,
+                        double out[3])
+{
+    double s[4][3];
+    area_sample(c, j, u1, v1, s[0]);
+    area_sample(c, j, u2, v1, s[1]);
+    area_sample(c, j, u1, v2, s[2]);
+    area_sample(c, j, u2, v2, s[3]);
+    int adaptive = j->l->src->adaptive;
+    if ((u2 - u1 > 1 || v2 - v1 > 1) && level < 64 &&
+        (level < adaptive || colour_distance(s[0], s[1]) > 0.1 ||
+         colour_distance(s[1], s[3]) > 0.1 ||
+         colour_distance(s[3], s[2]) > 0.1 ||
+         colour_distance(s[2], s[0]) > 0.1)) {
+        int um0 = (int)floor((u1 + u2) / 2.0), um1 = (int)ceil((u1 + u2) / 2.0);
+        int vm0 = (int)floor((v1 + v2) / 2.0), vm1 = (int)ceil((v1 + v2) / 2.0);
+        area_subset(c, j, u1, v1, um0, vm0, level + 1, s[0]);
+        area_subset(c, j, um1, v1, u2, vm0, level + 1, s[1]);
+        area_subset(c, j, u1, vm1, um0, v2, level + 1, s[2]);
+        area_subset(c, j, um1, vm1, u2, v2, level + 1, s[3]);
+    }
+    for (int k = 0; k < 3; k++)
+        out[k] = (s[0][k] + s[1][k] + s[2][k] + s[3][k]) * 0.25;
+}
+
+/* The area-light axes, rebuilt perpendicular to the light ray for
+** 'orient' (both with axis1's length). */
+static void area_axes(const struct rlight *l, vec3 p, vec3 *a1, vec3 *a2)
+{
+    *a1 = l->axis1;
+    *a2 = l->axis2;
+    if (!l->src->orient)
+        return;
+    vec3 L;
+    double depth;
+    light_ray(l, p, v3(0, 0, 0), &L, &depth);
+    double len = v3_len(l->axis1);
+    vec3 tmp = fabs(fabs(L.z) - 1.0) < 0.01 ? v3(0, 1, 0) : v3(0, 0, 1);
+    *a1 = v3_scale(v3_norm(v3_cross(L, tmp)), len);
+    *a2 = v3_scale(v3_norm(v3_cross(L, v3_norm(*a1))), len);
+}
+
+/* POV-Ray's TraceShadowRay: past max_trace_level the light is black. */
+static void trace_shadow(struct trace_ctx *c, const struct interior_stack *st,
+                         const struct rlight *l, vec3 p, vec3 L, double depth,
+                         double lc[3])
+{
+    const struct tracer *t = c->t;
+    if (c->level > t->max_level) {
+        lc[0] = lc[1] = lc[2] = 0.0;
+        return;
+    }
+    c->level++;
+    if (l->area && (t->quality & TQ_AREA_LIGHT)) {
+        struct area_job j = { l, st, p, v3(0, 0, 0), v3(0, 0, 0),
+                              { lc[0], lc[1], lc[2] } };
+        area_axes(l, p, &j.a1, &j.a2);
+        memset(c->grid_set, 0,
+               (size_t)(l->size1 * l->size2) * sizeof *c->grid_set);
+        area_subset(c, &j, 0, 0, l->size1 - 1, l->size2 - 1, 0, lc);
+    } else {
+        point_shadow(c, st, p, L, depth, lc);
+    }
+    c->level--;
+}
+
+/* ------------------------------------------------------------------ */
+/* Local illumination                                                   */
+/* ------------------------------------------------------------------ */
+
+/* What the per-light shading of one layer needs. */
+struct layer_shade {
+    const struct mat_layer *l;
+    const struct tray *eye;
+    const struct hit *h;
+    double att;                /* layer opacity */
+};
+
+static void irid_colour(const struct tracer *t, const iris_finish *f,
+                        vec3 light, vec3 eye, vec3 n, vec3 p, double col[3])
+{
+    double thick = f->irid_thickness;
+    if (f->irid_turbulence.x != 0) {
+        struct noise_turb turb = { 5, 0.5, 2.0 };
+        double nz = noise_turbulence(p, &turb, mat_noise_generator(t->mat));
+        thick *= 1.0 + (2.0 * nz - 1.0) * f->irid_turbulence.x;
+    }
+    iris_vec3 wl = t->scene->settings.irid_wavelength;
+    if (wl.x <= 0 || wl.y <= 0 || wl.z <= 0)
+        wl = v3(0.70, 0.52, 0.48);
+    double inter = 2.0 * M_PI * thick *
+                   (fabs(v3_dot(n, light)) + fabs(v3_dot(n, eye)));
+    col[0] *= 1.0 + f->irid * cos(inter / wl.x);
+    col[1] *= 1.0 + f->irid * cos(inter / wl.y);
+    col[2] *= 1.0 + f->irid * cos(inter / wl.z);
+}
+
+/* Diffuse, phong and specular of one light colour 'lc' along 'L'. */
+static void light_terms(struct trace_ctx *c, const struct layer_shade *s,
+                        vec3 L, const double lc[3], bool backside, bool fill,
+                        double out[3])
+{
+    const iris_finish *f = s->l->finish;
+    const iris_colour *P = &s->l->pigment;
+    vec3 n = s->l->n, d = s->eye->r.d;
+    double diffuse = backside ? f->diffuse_back : f->diffuse;
+    if (diffuse > 0.0) {
+        double cosi = v3_dot(n, L);
+        double in = f->brilliance != 1.0 ? pow(fabs(cosi), f->brilliance)
+                                         : fabs(cosi);
+        in *= diffuse * s->att;
+        if (f->crand > 0.0)
+            in -= rng_uniform(&c->rng) * f->crand;
+        out[0] += in * P->r * lc[0];
+        out[1] += in * P->g * lc[1];
+        out[2] += in * P->b * lc[2];
+    }
+    if (fill || backside)
+        return;
+    double tint[3] = { 1, 1, 1 };
+    if (f->metallic > 0.0 && (f->phong > 0.0 || f->specular > 0.0))
+        mat_metallic_tint(f->metallic, v3_dot(n, L), P, tint);
+    if (f->phong > 0.0) {
+        vec3 R = v3_madd(d, n, -2.0 * v3_dot(d, n));
+        double cr = v3_dot(R, L);
+        if (cr > 0.0) {
+            double in = (f->phong_size < 60 || cr > 0.0008)
+                            ? f->phong * pow(cr, f->phong_size) : 0.0;
+            for (int k = 0; k < 3; k++)
+                out[k] += in * lc[k] * tint[k];
+        }
+    }
+    if (f->specular > 0.0) {
+        vec3 H = v3_scale(v3_add(v3_neg(d), L), 0.5);
+        double hl = v3_len(H);
+        if (hl > 0.0) {
+            double ch = v3_dot(H, n) / hl;
+            if (ch > 0.0) {
+                double rough = f->roughness > 0 ? f->roughness : 0.05;
+                double in = f->specular * pow(ch, 1.0 / rough);
+                for (int k = 0; k < 3; k++)
+                    out[k] += in * lc[k] * tint[k];
+            }
+        }
+    }
+}
+
+/* Shadow colours of one intersection, shared by all its layers (POV-Ray's
+** light colour cache). */
+struct light_cache {
+    bool tested[MAX_CACHED_LIGHTS];
+    double colour[MAX_CACHED_LIGHTS][3];
+};
+
+/* area_illumination: every sub-light shades on its own with C_L/(n1 n2). */
+static void full_area_light(struct trace_ctx *c, const struct layer_shade *s,
+                            const struct rlight *l, double out[3])
+{
+    const iris_colour *col = &l->src->colour;
+    int n1 = l->size1, n2 = l->size2;
+    vec3 a1, a2;
+    area_axes(l, s->h->p, &a1, &a2);
+    for (int u = 0; u < n1; u++)
+        for (int v = 0; v < n2; v++) {
+            double ju = u, jv = v;
+            if (l->src->jitter) {
+                ju += rng_uniform(&c->rng) - 0.5;
+                jv += rng_uniform(&c->rng) - 0.5;
+            }
+            vec3 L;
+            double depth;
+            light_ray(l, s->h->p, light_area_offset(l, a1, a2, ju, jv), &L,
+                      &depth);
+            double a = light_attenuation(l, s->h->p, L, depth) / (n1 * n2);
+            double lc[3] = { col->r * a, col->g * a, col->b * a };
+            if (rgb_zero(lc))
+                continue;
+            if ((c->t->quality & TQ_SHADOW) && !l->fill) {
+                c->level++;
+                point_shadow(c, &s->eye->st, s->h->p, L, depth, lc);
+                c->level--;
+            }
+            if (rgb_zero(lc))
+                continue;
+            double tmp[3] = { 0, 0, 0 };
+            bool back = v3_dot(s->l->n, L) < T_EPSILON;
+            if (back && s->l->finish->diffuse_back == 0.0 &&
+                !s->h->obj->double_illuminate)
+                continue;
+            light_terms(c, s, L, lc, back && !s->h->obj->double_illuminate,
+                        l->fill, tmp);
+            for (int k = 0; k < 3; k++)
+                out[k] += tmp[k];
+        }
+}
+
+/* POV-Ray's ComputeDiffuseLight over every light. */
+static void diffuse_light(struct trace_ctx *c, const struct layer_shade *s,
+                          struct light_cache *cache, double out[3])
+{
+    const struct tracer *t = c->t;
+    const iris_finish *f = s->l->finish;
+    vec3 p = s->h->p;
+    bool dbl = s->h->obj && s->h->obj->double_illuminate;
+    for (int i = 0; i < t->n_lights; i++) {
+        const struct rlight *l = &t->lights[i];
+        bool full_area = l->area && l->src->area_illumination &&
+                         (t->quality & TQ_AREA_LIGHT);
+        vec3 L;
+        double depth;
+        light_ray(l, p, v3(0, 0, 0), &L, &depth);
+        double a = full_area ? 1.0 : light_attenuation(l, p, L, depth);
+        double lc[3] = { l->src->colour.r * a, l->src->colour.g * a,
+                         l->src->colour.b * a };
+        if (rgb_zero(lc))
+            continue;
+        bool backside = false;
+        if (!dbl && !full_area && v3_dot(s->l->n, L) < T_EPSILON) {
+            if (f->diffuse_back != 0.0)
+                backside = true;
+            else
+                continue;
+        }
+        if ((t->quality & TQ_SHADOW) && !l->fill) {
+            if (i < MAX_CACHED_LIGHTS && cache->tested[i]) {
+                memcpy(lc, cache->colour[i], sizeof lc);
+            } else {
+                trace_shadow(c, &s->eye->st, l, p, L, depth, lc);
+                if (i < MAX_CACHED_LIGHTS) {
+                    cache->tested[i] = true;
+                    memcpy(cache->colour[i], lc, sizeof lc);
+                }
+            }
+        }
+        if (rgb_zero(lc))
+            continue;
+        if (full_area) {
+            full_area_light(c, s, l, out);
+            continue;
+        }
+        double tmp[3] = { 0, 0, 0 };
+        light_terms(c, s, L, lc, backside, l->fill, tmp);
+        if (f->irid > 0.0)
+            irid_colour(t, f, L, s->eye->r.d, s->l->n, p, tmp);
+        for (int k = 0; k < 3; k++)
+            out[k] += tmp[k];
+    }
+}
+
+/* ------------------------------------------------------------------ */
+/* Reflection and refraction                                            */
+/* ------------------------------------------------------------------ */
+
+/* POV-Ray's ComputeReflection: the mirror ray about 'n', kept above the
+** surface with the raw normal. */
+static void reflect(struct trace_ctx *c, const struct tray *eye,
+                    const struct hit *h, const iris_finish *f, vec3 n,
+                    vec3 raw, double weight, double out[3])
+{
+    vec3 d = eye->r.d;
+    vec3 R = v3_madd(d, n, -2.0 * v3_dot(d, n));
+    double k = v3_dot(R, raw);
+    if (k < 0.0) {
+        if (v3_dot(R, n) < 0.0)
+            R = v3_madd(d, raw, -2.0 * v3_dot(d, raw));
+        else
+            R = v3_madd(R, raw, -2.0 * k);
+    }
+    struct tray nr = *eye;
+    nr.r.o = h->p;
+    nr.r.d = v3_norm(R);
+    nr.reflected = true;
+    trace_ray(c, &nr, weight, false, out);
+    if (f && f->irid > 0.0)
+        irid_colour(c->t, f, nr.r.d, d, n, h->p, out);
+}
+
+bool trace_refract_dir(vec3 d, vec3 n, double eta, vec3 *out)
+{
+    double c = -v3_dot(d, n);
+    double t2 = 1.0 + eta * eta * (c * c - 1.0);
+    if (t2 < 0.0)
+        return false;
+    *out = v3_norm(v3_madd(v3_scale(d, eta), n, eta * c - sqrt(t2)));
+    return true;
+}
+
+/* One refracted ray with relative index 'eta'; TIR reflects. */
+static bool refract_one(struct trace_ctx *c, const struct tray *eye,
+                        const struct tray *nr_in, const struct hit *h,
+                        const iris_finish *f, vec3 n_top, vec3 raw,
+                        vec3 local, double eta, double weight, double out[3])
+{
+    vec3 T;
+    if (!trace_refract_dir(eye->r.d, local, eta, &T)) {
+        double tmp[3] = { 0, 0, 0 };
+        reflect(c, eye, h, f, n_top, raw, weight, tmp);
+        for (int k = 0; k < 3; k++)
+            out[k] += tmp[k];
+        return true;
+    }
+    struct tray nr = *nr_in;
+    nr.r.o = h->p;
+    nr.r.d = T;
+    out[0] = out[1] = out[2] = 0.0;
+    trace_ray(c, &nr, weight, false, out);
+    return false;
+}
+
+/* The wavelength-split refraction of a camera ray at a dispersive
+** interface (DESIGN.md: chromatic aberration). */
+static void refract_spectral(struct trace_ctx *c, const struct tray *eye,
+                             const struct tray *nr, const struct hit *h,
+                             const iris_finish *f, vec3 n_top, vec3 raw,
+                             vec3 local, const iris_interior *from,
+                             const iris_interior *to, int n_samples,
+                             double weight, double out[3])
+{
+    double sum[3] = { 0, 0, 0 };
+    for (int i = 0; i < n_samples; i++) {
+        double lambda = SPEC_LAMBDA_MIN + SPEC_LAMBDA_RANGE *
+                        (i + rng_uniform(&c->rng)) / n_samples;
+        double eta = ior_eval(from, lambda) / ior_eval(to, lambda);
+        struct tray band = *nr;
+        band.lambda = lambda;
+        double col[3] = { 0, 0, 0 };
+        (void)refract_one(c, eye, &band, h, f, n_top, raw, local, eta,
+                          weight, col);
+        double w[3];
+        spec_lambda_rgb_weight(lambda, w);
+        double r = spec_reflectance(col, lambda);
+        for (int k = 0; k < 3; k++)
+            sum[k] += r * w[k];
+    }
+    for (int k = 0; k < 3; k++)
+        out[k] = sum[k] / n_samples;
+}
+
+/* POV-Ray's ComputeRefraction with the interior stack of §1.2. Returns
+** whether total internal reflection happened. */
+static bool refraction(struct trace_ctx *c, const struct tray *eye,
+                       const struct hit *h, const iris_finish *f, vec3 n_top,
+                       vec3 raw, double weight, double out[3])
+{
+    const struct tracer *t = c->t;
+    const iris_interior *in = h->interior;
+    const void *key = interior_key(h);
+    bool hollow = h->obj ? h->obj->hollow : true;
+    struct tray nr = *eye;
+    struct interior_stack *st = &nr.st;
+    const iris_interior *from = NULL, *to = NULL;
+    bool straight = false;
+    int n_samples = in ? in->dispersion_samples : 7;
+    if (st->n == 0) {
+        stack_push(st, key, in, hollow);
+        to = in;
+    } else if (st->e[st->n - 1].key == key) {
+        st->n--;
+        from = in;
+        if (st->n > 0) {
+            to = st->e[st->n - 1].in;
+            if (to && to->dispersion_samples > n_samples)
+                n_samples = to->dispersion_samples;
+        }
+    } else {
+        int idx = stack_find(st, key);
+        if (idx >= 0) {
+            stack_remove(st, idx);
+            straight = true;
+        } else {
+            from = st->e[st->n - 1].in;
+            stack_push(st, key, in, hollow);
+            to = in;
+        }
+    }
+    double eta = 1.0;
+    bool dispersive = false;
+    if (!straight) {
+        if (eye->lambda > 0)
+            eta = ior_eval(from, eye->lambda) / ior_eval(to, eye->lambda);
+        else {
+            eta = ior_of(from) / ior_of(to);
+            dispersive = (from && ior_is_dispersive(from)) ||
+                         (to && ior_is_dispersive(to));
+        }
+    }
+    if (!isfinite(eta) || eta <= 0)
+        eta = 1.0;
+    if (fabs(eta - 1.0) < T_EPSILON && !dispersive) {
+        nr.r.o = h->p;
+        out[0] = out[1] = out[2] = 0.0;
+        trace_ray(c, &nr, weight, true, out);
+        return false;
+    }
+    vec3 local = v3_dot(eye->r.d, n_top) <= 0.0 ? n_top : v3_neg(n_top);
+    if (!dispersive)
+        return refract_one(c, eye, &nr, h, f, n_top, raw, local, eta, weight,
+                           out);
+    if (n_samples < 2)
+        n_samples = 2;
+    if (t->spectral_min > n_samples)
+        n_samples = t->spectral_min;
+    if (n_samples > 1000)
+        n_samples = 1000;
+    refract_spectral(c, eye, &nr, h, f, n_top, raw, local, from, to,
+                     n_samples, weight, out);
+    return false;
+}
+
+/* POV-Ray's ComputeRelativeIOR, the n of fresnel reflection. */
+static double relative_ior(const struct tray *eye, const struct hit *h)
+{
+    const iris_interior *in = h->interior;
+    if (!in)
+        return 1.0;
+    const struct interior_stack *st = &eye->st;
+    double n = ior_of(in);
+    if (st->n == 0)
+        return n;
+    if (stack_find(st, interior_key(h)) >= 0) {
+        if (st->n == 1)
+            return 1.0 / n;
+        return ior_of(st->e[st->n - 1].in) / n;
+    }
+    return n / ior_of(st->e[st->n - 1].in);
+}
+
+/* ------------------------------------------------------------------ */
+/* Texture colour                                                       */
+/* ------------------------------------------------------------------ */
+
+struct refl_entry {
+    double weight, refl[3], exponent;
+    vec3 n;
+    const iris_finish *f;
+};
+
+/* POV-Ray's ComputeLightedTexture for one stack of layers. */
+static void lighted_texture(struct trace_ctx *c, const struct tray *eye,
+                            const struct hit *h, const struct mat_eval *ev,
+                            const struct mat_stack *sk, vec3 raw,
+                            double weight, struct light_cache *cache,
+                            double out[3])
+{
+    const struct tracer *t = c->t;
+    const iris_scene *sc = t->scene;
+    double filcol[3] = { 1, 1, 1 }, trans = 1.0;
+    bool one_found = false;
+    struct refl_entry refl[MAT_MAX_LAYERS];
+    int n_done = 0;
+    vec3 n_top = raw;
+    out[0] = out[1] = out[2] = 0.0;
+    const double amb_light[3] = { sc->settings.ambient_light.r,
+                                  sc->settings.ambient_light.g,
+                                  sc->settings.ambient_light.b };
+    bool use_ambient = !sc->settings.radiosity || t->legacy;
+    double fres_n = relative_ior(eye, h);
+
+    for (int i = 0; i < sk->n && trans > t->adc; i++, n_done++) {
+        const struct mat_layer *l = &ev->layers[sk->first + i];
+        const iris_colour *P = &l->pigment;
+        const iris_finish *f = l->finish;
+        if (i == 0)
+            n_top = l->n;
+        one_found = one_found || l->valid;
+        double new_weight = weight * trans;
+        if (t->quality & TQ_FULL_AMBIENT) {
+            out[0] = P->r;
+            out[1] = P->g;
+            out[2] = P->b;
+        } else {
+            double cosi = -v3_dot(eye->r.d, l->n);
+            struct refl_entry *re = &refl[i];
+            re->n = l->n;
+            re->f = f;
+            re->exponent = f->reflection_exponent > 0
+                               ? 1.0 / f->reflection_exponent : 1.0;
+            double wf;
+            if (!mat_layer_reflectivity(l, cosi, fres_n, re->refl, &wf)) {
+                re->refl[0] = re->refl[1] = re->refl[2] = 0.0;
+            }
+            re->weight = new_weight * wf;
+            double att = mat_opacity(t->mat, P);
+            double tmp[3] = { 0, 0, 0 };
+            const double col[3] = { P->r, P->g, P->b };
+            const double amb[3] = { f->ambient.r, f->ambient.g, f->ambient.b };
+            const double emi[3] = { f->emission.r, f->emission.g,
+                                    f->emission.b };
+            for (int k = 0; k < 3; k++) {
+                if (use_ambient)
+                    tmp[k] += col[k] * amb[k] * amb_light[k] * att;
+                tmp[k] += col[k] * emi[k] * att;
+            }
+            struct layer_shade s = { l, eye, h, att };
+            if (f->diffuse != 0.0 || f->diffuse_back != 0.0 ||
+                f->specular != 0.0 || f->phong != 0.0)
+                diffuse_light(c, &s, cache, tmp);
+            if (t->photon_shade && t->photon_map &&
+                !(h->obj && !h->obj->photon_collect)) {
+                struct trace_photon_input pi = { h->p, l->n, raw, eye->r.d,
+                                                 f, *P, att, h->obj };
+                t->photon_shade(t->photon_map, &pi, tmp);
+            }
+            for (int k = 0; k < 3; k++)
+                out[k] += tmp[k] * filcol[k];
+        }
+        if (l->valid) {
+            double tr[3];
+            mat_rgb_transm(P, tr);
+            for (int k = 0; k < 3; k++)
+                filcol[k] *= tr[k];
+            if (f->conserve_energy && !(t->quality & TQ_FULL_AMBIENT))
+                for (int k = 0; k < 3; k++)
+                    filcol[k] *= fmin(1.0, 1.0 - refl[i].refl[k]);
+        }
+        trans = fmin(1.0, fabs(mat_greyscale(filcol)));
+    }
+    if (t->quality & TQ_FULL_AMBIENT)
+        return;
+
+    /* Transmission: every object has an interior in POV-Ray (NULL here
+    ** stands for the default one, ior 1). */
+    bool tir = false;
+    if (trans > t->adc && (t->quality & TQ_REFRACT)) {
+        double w1 = fmax(fabs(filcol[0]), fmax(fabs(filcol[1]),
+                                               fabs(filcol[2])));
+        const iris_finish *ftop = sk->n > 0 ? ev->layers[sk->first].finish
+                                            : NULL;
+        double rfr[3] = { 0, 0, 0 };
+        tir = refraction(c, eye, h, ftop, n_top, raw, weight * w1, rfr);
+        double att[3] = { 1, 1, 1 };
+        if (h->interior && stack_find(&eye->st, interior_key(h)) >= 0)
+            interior_fade(h->interior, h->t, true, att);
+        for (int k = 0; k < 3; k++) {
+            if (tir || !one_found)
+                out[k] += att[k] * rfr[k];
+            else
+                out[k] += att[k] * rfr[k] * filcol[k];
+        }
+    }
+
+    /* Reflection, unfiltered by the layers above. */
+    if (t->quality & TQ_REFLECT) {
+        for (int i = 0; i < n_done; i++) {
+            struct refl_entry *re = &refl[i];
+            if (tir && fabs(n_top.x - re->n.x) <= T_EPSILON &&
+                fabs(n_top.y - re->n.y) <= T_EPSILON &&
+                fabs(n_top.z - re->n.z) <= T_EPSILON)
+                continue;
+            if (rgb_zero(re->refl))
+                continue;
+            double rfl[3] = { 0, 0, 0 };
+            reflect(c, eye, h, re->f, re->n, raw, re->weight, rfl);
+            for (int k = 0; k < 3; k++) {
+                double v = re->exponent != 1.0 ? pow(fmax(rfl[k], 0.0),
+                                                     re->exponent)
+                                               : rfl[k];
+                out[k] += re->refl[k] * v;
+            }
+        }
+    }
+}
+
+/* POV-Ray's ComputeTextureColour: the texture stacks blended. */
+static void texture_colour(struct trace_ctx *c, const struct tray *eye,
+                           const struct hit *h, double weight, double out[3])
+{
+    const struct tracer *t = c->t;
+    vec3 raw = h->shading_n;
+    double nd = v3_dot(raw, eye->r.d);
+    if (nd > 0.0)
+        raw = v3_neg(raw);
+    struct mat_point pt = { h->p, raw, eye->r.d, h->uv, h->obj,
+                            !(t->quality & TQ_NORMAL) };
+    struct mat_eval *ev = iris_malloc(sizeof *ev);
+    out[0] = out[1] = out[2] = 0.0;
+    if (!ev)
+        return;
+    mat_eval_texture(t->mat, hit_texture(h, nd > 0.0), &pt, ev);
+    struct light_cache cache;
+    memset(cache.tested, 0, sizeof cache.tested);
+    for (int s = 0; s < ev->n_stacks; s++) {
+        const struct mat_stack *sk = &ev->stacks[s];
+        if (sk->weight < t->adc)
+            continue;
+        double col[3];
+        lighted_texture(c, eye, h, ev, sk, raw, weight, &cache, col);
+        for (int k = 0; k < 3; k++)
+            out[k] += sk->weight * col[k];
+    }
+    iris_free(ev);
+}
+
+/* ------------------------------------------------------------------ */
+/* Sky and fog                                                          */
+/* ------------------------------------------------------------------ */
+
+static void sky_colour(struct trace_ctx *c, vec3 d, double out[3])
+{
+    const struct tracer *t = c->t;
+    const iris_scene *sc = t->scene;
+    const iris_sky_sphere *sky = sc->sky_sphere;
+    double col[3] = { 0, 0, 0 }, filcol[3] = { 1, 1, 1 };
+    const iris_colour *bg = &sc->background;
+    if (t->legacy) {
+        /* POV-Ray's pre-3.7 compositing: background shows through the
+        ** sky by the accumulated filter and transmit. */
+        out[0] = bg->r; out[1] = bg->g; out[2] = bg->b;
+        if (!sky || sky->n_pigments == 0)
+            return;
+        iris_colour fc = { 1, 1, 1, 1, 1 };
+        double trans = 1.0;
+        vec3 p = sky->has_transform ? xf_inv_point(&sky->transform, d) : d;
+        for (int i = sky->n_pigments - 1; i >= 0; i--) {
+            iris_colour pc;
+            struct mat_point pt = { p, v3(0, 0, 0), d, { 0, 0 }, NULL, true };
+            mat_eval_pigment(t->mat, sky->pigments[i], &pt, &pc);
+            double att = trans * (1.0 - pc.f - pc.t);
+            col[0] += pc.r * att; col[1] += pc.g * att; col[2] += pc.b * att;
+            fc.r *= pc.r; fc.g *= pc.g; fc.b *= pc.b; fc.f *= pc.f;
+            fc.t *= pc.t;
+            trans = fabs(fc.f) + fabs(fc.t);
+        }
+        double em = sky->emission != 0 ? sky->emission : 1.0;
+        out[0] = col[0] * em + bg->r * (fc.r * fc.f + fc.t);
+        out[1] = col[1] * em + bg->g * (fc.g * fc.f + fc.t);
+        out[2] = col[2] * em + bg->b * (fc.b * fc.f + fc.t);
+        return;
+    }
+    if (sky && sky->n_pigments > 0) {
+        vec3 p = sky->has_transform ? xf_inv_point(&sky->transform, d) : d;
+        double em = sky->emission != 0 ? sky->emission : 1.0;
+        for (int i = sky->n_pigments - 1; i >= 0; i--) {
+            iris_colour pc;
+            struct mat_point pt = { p, v3(0, 0, 0), d, { 0, 0 }, NULL, true };
+            mat_eval_pigment(t->mat, sky->pigments[i], &pt, &pc);
+            double att = 1.0 - pc.f - pc.t;
+            col[0] += pc.r * att * filcol[0] * em;
+            col[1] += pc.g * att * filcol[1] * em;
+            col[2] += pc.b * att * filcol[2] * em;
+            double tr[3];
+            mat_rgb_transm(&pc, tr);
+            for (int k = 0; k < 3; k++)
+                filcol[k] *= tr[k];
+        }
+    }
+    /* The background's filter and transmit count only for alpha output. */
+    out[0] = col[0] + bg->r * filcol[0];
+    out[1] = col[1] + bg->g * filcol[1];
+    out[2] = col[2] + bg->b * filcol[2];
+}
+
+static double fog_turbulence(const struct tracer *t, const iris_fog *fog,
+                             vec3 p, double width)
+{
+    if (fog->turbulence.x == 0 && fog->turbulence.y == 0 &&
+        fog->turbulence.z == 0)
+        return width;
+    struct noise_turb turb = { fog->octaves > 0 ? fog->octaves : 6,
+                               fog->omega != 0 ? fog->omega : 0.5,
+                               fog->lambda != 0 ? fog->lambda : 2.0 };
+    p = v3_mul(p, fog->turbulence);
+    double k = exp(-width / fog->distance);
+    double depth = fog->turb_depth != 0 ? fog->turb_depth : 0.5;
+    double n = noise_turbulence(p, &turb, mat_noise_generator(t->mat));
+    return width * (1.0 - k * fmin(1.0, n * depth));
+}
+
+/* POV-Ray's ComputeFog over every fog of the scene. */
+static void apply_fog(struct trace_ctx *c, const ray *r, double depth,
+                      double col[3])
+{
+    const struct tracer *t = c->t;
+    const iris_scene *sc = t->scene;
+    double sum_att[3] = { 1, 1, 1 }, sum_col[3] = { 0, 0, 0 };
+    for (int i = 0; i < sc->n_fogs; i++) {
+        const iris_fog *fog = sc->fogs[i];
+        if (!(fabs(fog->distance) > T_EPSILON))
+            continue;
+        double width = depth, att;
+        if (fog->kind == IRIS_FOG_GROUND) {
+            vec3 up = v3_len2(fog->up) > 0 ? v3_norm(fog->up) : v3(0, 1, 0);
+            vec3 p1 = r->o, p2 = v3_madd(r->o, r->d, width);
+            double alt = fog->alt != 0 ? fog->alt : 1.0;
+            double y1 = v3_dot(p1, up), y2 = v3_dot(p2, up);
+            double s = (y1 - fog->offset) / alt, e = (y2 - fog->offset) / alt;
+            double dens;
+            if (s <= 0.0)
+                dens = e <= 0.0 ? 1.0 : (atan(e) - s) / (e - s);
+            else if (e <= 0.0)
+                dens = (atan(s) - e) / (s - e);
+            else {
+                double dl = s - e;
+                dens = fabs(dl) > T_EPSILON ? (atan(s) - atan(e)) / dl
+                                            : 1.0 / (s * s + 1.0);
+            }
+            width = fog_turbulence(t, fog, v3_scale(v3_add(p1, p2), 0.5),
+                                   width);
+            att = exp(-width * dens / fog->distance);
+        } else {
+            width = fog_turbulence(t, fog, v3_madd(r->o, r->d, width / 2.0),
+                                   width);
+            att = exp(-width / fog->distance);
+        }
+        const iris_colour *fc = &fog->colour;
+        if (att < fc->t)
+            att = fc->t;
+        const double rgb[3] = { fc->r, fc->g, fc->b };
+        for (int k = 0; k < 3; k++) {
+            sum_att[k] *= att * ((1.0 - fc->f) + fc->f * rgb[k]);
+            sum_col[k] += (1.0 - att) * rgb[k];
+        }
+    }
+    for (int k = 0; k < 3; k++)
+        col[k] = sum_col[k] + sum_att[k] * col[k];
+}
+
+/* ------------------------------------------------------------------ */
+/* TraceRay                                                             */
+/* ------------------------------------------------------------------ */
+
+double trace_ray(struct trace_ctx *c, const struct tray *r, double weight,
+                 bool continued, double rgb[3])
+{
+    const struct tracer *t = c->t;
+    rgb[0] = rgb[1] = rgb[2] = 0.0;
+    if (c->level >= t->max_level || weight < t->adc)
+        return HUGE_VAL;
+    struct hit h;
+    c->rays++;
+    bool found = t->q.intersect(t->q.impl, &r->r, t->q.eps, HUGE_VAL,
+                                skip_flags(r), &h);
+    if (found && !(h.t > 0 && isfinite(h.t)))
+        found = false;
+    if (!continued)
+        c->level++;
+    if (found)
+        texture_colour(c, r, &h, weight, rgb);
+    else
+        sky_colour(c, r->r.d, rgb);
+    if (t->scene->n_fogs > 0 && is_hollow_ray(&r->st))
+        apply_fog(c, &r->r, found ? h.t : HUGE_DEPTH, rgb);
+    if (!continued)
+        c->level--;
+    return found ? h.t : HUGE_VAL;
+}

@@ -1,0 +1,133 @@
+/* SPDX-License-Identifier: MIT */
+/*
+** trace.h: the recursive ray tracer of the eye pass, POV-Ray 3.7's RGB
+** shading model (povray-3.7-semantics.md §3): layered textures, ambient,
+** emission, diffuse, phong, specular, iridescence, reflection with
+** fresnel and metallic, refraction through an interior stack with total
+** internal reflection and fade, shadows through filtering objects with
+** fake caustics, area lights sampled as POV-Ray samples them, fog, sky
+** sphere and background, max_trace_level and adc_bailout.
+**
+** A 'tracer' is built once per render and shared read-only by all
+** threads; a 'trace_ctx' is one thread's scratch space (area-light grid,
+** random stream, counters). Camera rays that meet a dispersive interior
+** split into wavelengths (DESIGN.md: chromatic aberration) and carry their
+** wavelength from then on.
+**
+** Depends on: util, math, accel (through query.h), material, spectrum.
+** Used by: render.c.
+*/
+#ifndef IRIS_RENDER_TRACE_H
+#define IRIS_RENDER_TRACE_H
+
+#include <stdbool.h>
+#include <stdint.h>
+
+#include "iris/scene.h"
+#include "material/material.h"
+#include "render/light.h"
+#include "render/query.h"
+#include "util/rng.h"
+
+/* Quality switches of POV-Ray's +Q levels (povrayold.h). */
+enum trace_quality {
+    TQ_FULL_AMBIENT = 1, TQ_SHADOW = 2, TQ_AREA_LIGHT = 4, TQ_REFRACT = 8,
+    TQ_REFLECT = 16, TQ_NORMAL = 32, TQ_VOLUME = 64, TQ_ADVANCED = 128
+};
+
+/* The quality flags of +Q 'q' (clipped to 0..9). */
+unsigned trace_quality_flags(int q);
+
+/* What the photon estimate needs at one texture layer (semantics §2.7). */
+struct trace_photon_input {
+    vec3 p;                    /* world point */
+    vec3 layer_n, raw_n;       /* unit normals facing the eye ray */
+    vec3 d;                    /* unit eye ray direction */
+    const iris_finish *finish;
+    iris_colour pigment;
+    double att;                /* layer opacity */
+    const iris_object *obj;
+};
+
+/* Adds the photon light of one layer to 'rgb'. Wired by render.c once a
+** photon map exists; NULL when the plan has no photon pass. */
+typedef void (*trace_photon_fn)(const void *map,
+                                const struct trace_photon_input *in,
+                                double rgb[3]);
+
+struct tracer {
+    const iris_scene *scene;
+    const struct mat_ctx *mat;
+    struct rquery q;
+    int n_lights;
+    struct rlight *lights;
+    int max_level;             /* max_trace_level */
+    double adc;                /* adc_bailout */
+    unsigned quality;          /* TQ_* flags */
+    bool legacy;               /* #version < 3.7 paths */
+    int spectral_min;          /* floor of dispersion samples */
+    int max_area_grid;         /* largest size1*size2 of any area light */
+    uint64_t seed;
+    trace_photon_fn photon_shade;
+    const void *photon_map;
+};
+
+/* The interiors a ray is inside, innermost last (semantics §1.2). */
+#define TRACE_MAX_INTERIORS 32
+struct interior_entry {
+    const void *key;           /* the interior, or the object without one */
+    const iris_interior *in;   /* NULL: an interior with POV's defaults */
+    bool hollow;
+};
+struct interior_stack {
+    int n;
+    struct interior_entry e[TRACE_MAX_INTERIORS];
+};
+
+/* A ray with what POV-Ray's Ray class carries besides geometry. */
+struct tray {
+    ray r;
+    struct interior_stack st;
+    bool reflected;            /* once reflected, no longer an image ray */
+    double lambda;             /* wavelength in nm, 0 = RGB */
+};
+
+/* One thread's scratch space. */
+struct trace_ctx {
+    const struct tracer *t;
+    rng rng;                   /* re-seeded per pixel sample by the caller */
+    int level;                 /* current trace level */
+    uint64_t rays;
+    double (*grid)[3];         /* area-light samples, max_area_grid */
+    bool *grid_set;
+};
+
+/* Prepares 't' (lights) for 'scene'; 'q', 'mat' borrowed. Returns false
+** when memory runs out. */
+bool tracer_init(struct tracer *t, const iris_scene *scene,
+                 const struct mat_ctx *mat, const struct rquery *q,
+                 int quality);
+void tracer_fini(struct tracer *t);
+
+bool trace_ctx_init(struct trace_ctx *c, const struct tracer *t);
+void trace_ctx_fini(struct trace_ctx *c);
+
+/* Fills 'st' with the interiors of the top-level objects containing 'p'
+** (POV-Ray's InitRayContainerState). */
+void trace_containing(const struct tracer *t, vec3 p,
+                      struct interior_stack *st);
+
+/*
+** Traces 'r' and writes its linear colour to rgb[3]. 'continued' rays
+** (straight through an ior-1 interface) do not count as a trace level.
+** Returns the hit distance, or HUGE_VAL.
+*/
+double trace_ray(struct trace_ctx *c, const struct tray *r, double weight,
+                 bool continued, double rgb[3]);
+
+/* Refraction direction (Heckbert) of unit 'd' through unit normal 'n'
+** facing the incident side, relative index 'eta' = n_from/n_to. Returns
+** false on total internal reflection. */
+bool trace_refract_dir(vec3 d, vec3 n, double eta, vec3 *out);
+
+#endif

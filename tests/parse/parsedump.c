@@ -1,0 +1,77 @@
+/* SPDX-License-Identifier: MIT */
+/*
+** parsedump.c: parses a scene and prints its dump (or its diagnostics),
+** the driver of the golden tests in tests/parse/cases.
+**
+** usage: parsedump [-w] [-L dir] [-D name=value] [-n max_while] file.pov
+** Prints every diagnostic with iris_diag_format(), then the scene dump
+** when the parse succeeded; exits 0 on success, 2 on a parse error.
+** -w hides warnings.
+*/
+#include "config.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "iris/parse.h"
+
+int main(int argc, char **argv)
+{
+    iris_parse_options opt;
+    memset(&opt, 0, sizeof opt);
+    const char *paths[16];
+    iris_declare decl[16];
+    int np = 0, nd = 0;
+    bool no_warn = false, dump = true;
+    int i;
+    for (i = 1; i < argc - 1; i++) {
+        if (!strcmp(argv[i], "-w")) {
+            no_warn = true;
+        } else if (!strcmp(argv[i], "-q")) {
+            dump = false;
+        } else if (!strcmp(argv[i], "-L") && np < 16) {
+            paths[np++] = argv[++i];
+        } else if (!strcmp(argv[i], "-n")) {
+            opt.max_while_iterations = atol(argv[++i]);
+        } else if (!strcmp(argv[i], "-m")) {
+            opt.max_memory = (size_t)atol(argv[++i]) << 20;
+        } else if (!strcmp(argv[i], "-D") && nd < 16) {
+            char *s = argv[++i];
+            char *eq = strchr(s, '=');
+            if (!eq)
+                return 64;
+            *eq = 0;
+            decl[nd].name = s;
+            decl[nd].value = eq + 1;
+            nd++;
+        } else {
+            break;
+        }
+    }
+    if (i != argc - 1) {
+        fprintf(stderr, "usage: parsedump [-w] [-q] [-L dir] [-D n=v] "
+                "[-n max] [-m MiB] file.pov\n");
+        return 64;
+    }
+    opt.include_paths = paths;
+    opt.n_include_paths = np;
+    opt.declares = decl;
+    opt.n_declares = nd;
+    opt.debug_stream = stdout;
+    iris_diag_list diags;
+    iris_diag_list_init(&diags);
+    iris_scene *scene = NULL;
+    enum iris_status st = iris_parse_file(argv[argc - 1], &opt, &scene,
+                                          &diags);
+    for (int k = 0; k < diags.n; k++)
+        if (!no_warn || diags.items[k].sev == IRIS_SEV_ERROR)
+            iris_diag_format(&diags.items[k], stdout);
+    iris_diag_list_fini(&diags);
+    if (st != IRIS_OK)
+        return 2;
+    if (dump)
+        iris_scene_dump(scene, stdout);
+    iris_scene_destroy(scene);
+    return 0;
+}

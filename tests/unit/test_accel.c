@@ -1,0 +1,838 @@
+/* SPDX-License-Identifier: MIT */
+/*
+** test_accel.c: ray queries through the Embree scene: transformed shapes,
+** CSG, inside tests, skip flags, meshes, scale invariance and robustness.
+** Scenes are built by hand in an arena, as the parser would build them.
+*/
+#include "config.h"
+
+#include "testutil.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "accel/accel.h"
+#include "iris/fn.h"
+#include "math/transform.h"
+#include "util/arena.h"
+#include "util/rng.h"
+
+static iris_texture tex_a, tex_b;
+static iris_interior glass;
+
+/* A scene with room for 64 top-level objects. */
+static iris_scene *scene_new(void)
+{
+    iris_arena *ar = arena_create(0);
+    iris_scene *sc = arena_alloc(ar, sizeof *sc);
+    sc->arena = ar;
+    sc->objects = arena_array(ar, 64, sizeof *sc->objects);
+    return sc;
+}
+
+static void scene_free(iris_scene *sc)
+{
+    arena_destroy(sc->arena);
+}
+
+static iris_object *obj(iris_scene *sc, enum iris_object_kind k)
+{
+    iris_object *o = arena_alloc(sc->arena, sizeof *o);
+    o->kind = k;
+    o->texture = &tex_a;
+    iris_transform_identity(&o->transform);
+    return o;
+}
+
+static iris_object *add(iris_scene *sc, iris_object *o)
+{
+    sc->objects[sc->n_objects++] = o;
+    return o;
+}
+
+static iris_object *sphere(iris_scene *sc, vec3 c, double r)
+{
+    iris_object *o = obj(sc, IRIS_OBJ_SPHERE);
+    o->u.sphere.centre = c;
+    o->u.sphere.radius = r;
+    return o;
+}
+
+static iris_object *box(iris_scene *sc, vec3 lo, vec3 hi)
+{
+    iris_object *o = obj(sc, IRIS_OBJ_BOX);
+    o->u.box.lo = lo;
+    o->u.box.hi = hi;
+    return o;
+}
+
+static iris_object *csg(iris_scene *sc, enum iris_object_kind k,
+                        iris_object *a, iris_object *b)
+{
+    iris_object *o = obj(sc, k);
+    o->texture = NULL;
+    o->u.csg.n_children = 2;
+    o->u.csg.children = arena_array(sc->arena, 2, sizeof(iris_object *));
+    o->u.csg.children[0] = a;
+    o->u.csg.children[1] = b;
+    return o;
+}
+
+/* Appends transform 'x' after the object's own (POV-Ray order). */
+static void apply(iris_object *o, const xform *x)
+{
+    xf_compose(&o->transform, &o->transform, x);
+    o->has_transform = true;
+}
+
+static struct accel *build(const iris_scene *sc)
+{
+    struct accel *a = NULL;
+    char err[256];
+    assert_int_equal(accel_build(sc, &a, NULL, err, sizeof err), IRIS_OK);
+    assert_non_null(a);
+    return a;
+}
+
+static bool shoot(const struct accel *a, vec3 o, vec3 d, struct hit *h)
+{
+    ray r = { o, v3_norm(d) };
+    return accel_intersect(a, &r, accel_epsilon(a), INFINITY, 0, h);
+}
+
+static void assert_vec(vec3 v, vec3 want, double tol)
+{
+    assert_near(v.x, want.x, tol);
+    assert_near(v.y, want.y, tol);
+    assert_near(v.z, want.z, tol);
+}
+
+/* Sphere: t = distance - radius, unit outward normal, and the hit names
+** the object, its texture and its interior. Tolerances: 1e-12 is a few
+** thousand ulps of the numbers involved. */
+static void test_sphere_hit(void **state)
+{
+    (void)state;
+    iris_scene *sc = scene_new();
+    iris_object *s = add(sc, sphere(sc, v3(1, 2, 3), 1.5));
+    s->interior = &glass;
+    struct accel *a = build(sc);
+    struct hit h;
+    assert_true(shoot(a, v3(1, 2, -7), v3(0, 0, 1), &h));
+    assert_near(h.t, 10 - 1.5, 1e-12);
+    assert_vec(h.p, v3(1, 2, 1.5), 1e-12);
+    assert_vec(h.n, v3(0, 0, -1), 1e-12);
+    assert_vec(h.shading_n, v3(0, 0, -1), 1e-12);
+    assert_ptr_equal(h.obj, s);
+    assert_ptr_equal(h.top, s);
+    assert_ptr_equal(h.texture, &tex_a);
+    assert_ptr_equal(h.interior, &glass);
+    /* From inside: the far wall, normal still outward */
+    assert_true(shoot(a, v3(1, 2, 3), v3(1, 0, 0), &h));
+    assert_near(h.t, 1.5, 1e-12);
+    assert_vec(h.n, v3(1, 0, 0), 1e-12);
+    /* Misses, and tmax is respected */
+    assert_false(shoot(a, v3(1, 4, -7), v3(0, 0, 1), &h));
+    ray r = { v3(1, 2, -7), v3(0, 0, 1) };
+    assert_false(accel_intersect(a, &r, 0, 8, 0, &h));
+    /* Bounds */
+    vec3 lo, hi;
+    accel_bounds(a, &lo, &hi);
+    assert_vec(lo, v3(-0.5, 0.5, 1.5), 1e-12);
+    assert_vec(hi, v3(2.5, 3.5, 4.5), 1e-12);
+    assert_true(accel_object_bounds(a, s, &lo, &hi));
+    accel_destroy(a);
+    scene_free(sc);
+}
+
+/* A unit sphere scaled by <2,1,1> then rotated 90 degrees about y is the
+** ellipsoid z²/4 + x² + y² = 1: its normal at p is along (x, y, z/4). */
+static void test_transformed(void **state)
+{
+    (void)state;
+    iris_scene *sc = scene_new();
+    iris_object *s = add(sc, sphere(sc, v3(0, 0, 0), 1));
+    xform x;
+    xf_scale(&x, v3(2, 1, 1));
+    apply(s, &x);
+    xf_rotate(&x, v3(0, 90, 0));
+    apply(s, &x);
+    struct accel *a = build(sc);
+    struct hit h;
+    assert_true(shoot(a, v3(0, 0, -10), v3(0, 0, 1), &h));
+    assert_near(h.t, 8, 1e-12);
+    assert_vec(h.n, v3(0, 0, -1), 1e-12);
+    /* An oblique ray: check the point is on the ellipsoid and the normal */
+    assert_true(shoot(a, v3(0.3, 0.2, -10), v3(0.01, 0.02, 1), &h));
+    vec3 p = h.p;
+    assert_near(p.z * p.z / 4 + p.x * p.x + p.y * p.y, 1, 1e-12);
+    assert_vec(h.n, v3_norm(v3(p.x, p.y, p.z / 4)), 1e-12);
+    /* Translation */
+    iris_scene *sc2 = scene_new();
+    iris_object *t = add(sc2, obj(sc2, IRIS_OBJ_TORUS));
+    t->u.torus.major = 2;
+    t->u.torus.minor = 0.5;
+    xf_rotate(&x, v3(90, 0, 0)); /* the torus now lies in the xy plane */
+    apply(t, &x);
+    xf_translate(&x, v3(0, 0, 5));
+    apply(t, &x);
+    struct accel *b = build(sc2);
+    assert_true(shoot(b, v3(2, 0, 0), v3(0, 0, 1), &h));
+    assert_near(h.t, 4.5, 1e-9);
+    assert_vec(h.n, v3(0, 0, -1), 1e-9);
+    accel_destroy(b);
+    scene_free(sc2);
+    accel_destroy(a);
+    scene_free(sc);
+}
+
+/* difference { sphere r=2 at 0, sphere r=1 at z=-2 }: the bite in front.
+** Along +z from z=-5 the big sphere's front (z=-2) is inside the small
+** one and the small one's front (z=-3) is outside the big one, so the
+** first surface is the small sphere's back at z=-1, normal flipped to -z,
+** with the small sphere's texture. */
+static void test_difference(void **state)
+{
+    (void)state;
+    iris_scene *sc = scene_new();
+    iris_object *big = sphere(sc, v3(0, 0, 0), 2);
+    iris_object *bite = sphere(sc, v3(0, 0, -2), 1);
+    bite->texture = &tex_b;
+    iris_object *d = add(sc, csg(sc, IRIS_OBJ_DIFFERENCE, big, bite));
+    struct accel *a = build(sc);
+    struct hit h;
+    assert_true(shoot(a, v3(0, 0, -5), v3(0, 0, 1), &h));
+    assert_near(h.t, 4, 1e-12);
+    assert_vec(h.n, v3(0, 0, -1), 1e-12);
+    assert_ptr_equal(h.obj, bite);
+    assert_ptr_equal(h.top, d);
+    assert_ptr_equal(h.texture, &tex_b);
+    /* Continue: out through the big sphere's back at z=2 */
+    assert_true(shoot(a, h.p, v3(0, 0, 1), &h));
+    assert_near(h.t, 3, 1e-12);
+    assert_ptr_equal(h.obj, big);
+    assert_vec(h.n, v3(0, 0, 1), 1e-12);
+    /* Inside tests of the difference */
+    assert_true(accel_inside(a, d, v3(0, 0, 1)));
+    assert_false(accel_inside(a, d, v3(0, 0, -1.5)));
+    assert_false(accel_inside(a, d, v3(0, 0, 3)));
+    /* The subtracted child still answers for itself */
+    assert_true(accel_inside(a, bite, v3(0, 0, -2)));
+    assert_false(accel_inside(a, bite, v3(0, 0, 0)));
+    accel_destroy(a);
+    scene_free(sc);
+}
+
+/* intersection { box [-1,1]³, sphere r=1.2 }: a ray along the axis meets
+** the box face (inside the sphere) at z=-1; one at y=0.9 meets the sphere
+** at z = -sqrt(1.44 - 0.81) because the box face there is outside the
+** sphere; one at x=y=0.9 misses (0.81·2 > 1.44). */
+static void test_intersection(void **state)
+{
+    (void)state;
+    iris_scene *sc = scene_new();
+    iris_object *b = box(sc, v3(-1, -1, -1), v3(1, 1, 1));
+    iris_object *s = sphere(sc, v3(0, 0, 0), 1.2);
+    iris_object *i = add(sc, csg(sc, IRIS_OBJ_INTERSECTION, b, s));
+    struct accel *a = build(sc);
+    struct hit h;
+    assert_true(shoot(a, v3(0, 0, -5), v3(0, 0, 1), &h));
+    assert_near(h.t, 4, 1e-12);
+    assert_ptr_equal(h.obj, b);
+    assert_true(shoot(a, v3(0, 0.9, -5), v3(0, 0, 1), &h));
+    assert_near(h.t, 5 - sqrt(1.44 - 0.81), 1e-12);
+    assert_ptr_equal(h.obj, s);
+    assert_false(shoot(a, v3(0.9, 0.9, -5), v3(0, 0, 1), &h));
+    vec3 lo, hi;
+    assert_true(accel_object_bounds(a, i, &lo, &hi));
+    assert_vec(hi, v3(1, 1, 1), 1e-12); /* the box ∩ the sphere's box */
+    assert_true(accel_inside(a, i, v3(0.5, 0.5, 0.5)));
+    assert_false(accel_inside(a, i, v3(0.95, 0.95, 0)));
+    accel_destroy(a);
+    scene_free(sc);
+}
+
+/* Two overlapping spheres (centres x=±0.5, r=1): after the first surface
+** at x=-1.5, a union shows the second sphere's inner wall at x=-0.5, a
+** merge does not (next is x=1.5). */
+static void test_merge(void **state)
+{
+    (void)state;
+    for (int merge = 0; merge < 2; merge++) {
+        iris_scene *sc = scene_new();
+        add(sc, csg(sc, merge ? IRIS_OBJ_MERGE : IRIS_OBJ_UNION,
+                    sphere(sc, v3(-0.5, 0, 0), 1),
+                    sphere(sc, v3(0.5, 0, 0), 1)));
+        struct accel *a = build(sc);
+        struct hit h;
+        assert_true(shoot(a, v3(-5, 0, 0), v3(1, 0, 0), &h));
+        assert_near(h.p.x, -1.5, 1e-12);
+        assert_true(shoot(a, h.p, v3(1, 0, 0), &h));
+        assert_near(h.p.x, merge ? 1.5 : -0.5, 1e-12);
+        accel_destroy(a);
+        scene_free(sc);
+    }
+}
+
+/* inverse: the normal points into the sphere's centre and the inside is
+** the outside; an inverted union is the intersection of the inverses. */
+static void test_inverse(void **state)
+{
+    (void)state;
+    iris_scene *sc = scene_new();
+    iris_object *s = add(sc, sphere(sc, v3(0, 0, 0), 1));
+    s->inverse = true;
+    struct accel *a = build(sc);
+    struct hit h;
+    assert_true(shoot(a, v3(0, 0, -5), v3(0, 0, 1), &h));
+    assert_vec(h.n, v3(0, 0, 1), 1e-12);
+    assert_false(accel_inside(a, s, v3(0, 0, 0)));
+    assert_true(accel_inside(a, s, v3(0, 0, 3)));
+    accel_destroy(a);
+    scene_free(sc);
+
+    sc = scene_new();
+    iris_object *u = add(sc, csg(sc, IRIS_OBJ_UNION,
+                                 sphere(sc, v3(-0.5, 0, 0), 1),
+                                 sphere(sc, v3(0.5, 0, 0), 1)));
+    u->inverse = true;
+    a = build(sc);
+    assert_false(accel_inside(a, u, v3(-1, 0, 0)));
+    assert_true(accel_inside(a, u, v3(0, 3, 0)));
+    /* Its surfaces: only the outer ones remain (x = -1.5 first) */
+    assert_true(shoot(a, v3(-5, 0, 0), v3(1, 0, 0), &h));
+    assert_near(h.p.x, -1.5, 1e-12);
+    assert_vec(h.n, v3(1, 0, 0), 1e-12);
+    assert_true(shoot(a, h.p, v3(1, 0, 0), &h));
+    assert_near(h.p.x, 1.5, 1e-12);
+    accel_destroy(a);
+    scene_free(sc);
+}
+
+/* clipped_by: a sphere clipped by the plane y < 0 (its lower half). From
+** above, the first surface is the inside of the bowl at y = -1. */
+static void test_clip(void **state)
+{
+    (void)state;
+    iris_scene *sc = scene_new();
+    iris_object *s = add(sc, sphere(sc, v3(0, 0, 0), 1));
+    iris_object *pl = obj(sc, IRIS_OBJ_PLANE);
+    pl->u.plane.normal = v3(0, 1, 0);
+    pl->u.plane.distance = 0;
+    s->n_clipped_by = 1;
+    s->clipped_by = arena_array(sc->arena, 1, sizeof(iris_object *));
+    s->clipped_by[0] = pl;
+    struct accel *a = build(sc);
+    struct hit h;
+    assert_true(shoot(a, v3(0, 5, 0), v3(0, -1, 0), &h));
+    assert_near(h.t, 6, 1e-12);
+    assert_vec(h.n, v3(0, -1, 0), 1e-12);
+    assert_true(accel_inside(a, s, v3(0, -0.5, 0)));
+    assert_false(accel_inside(a, s, v3(0, 0.5, 0)));
+    /* The clipped sphere's box is only the lower half */
+    vec3 lo, hi;
+    assert_true(accel_object_bounds(a, s, &lo, &hi));
+    assert_near(hi.y, 0, 1e-12);
+    accel_destroy(a);
+    scene_free(sc);
+}
+
+/* Inside tests of closed shapes, including POV-Ray's plane half-space and
+** a mesh with inside_vector. */
+static void test_inside(void **state)
+{
+    (void)state;
+    iris_scene *sc = scene_new();
+    iris_object *pl = add(sc, obj(sc, IRIS_OBJ_PLANE));
+    pl->u.plane.normal = v3(0, 1, 0);
+    pl->u.plane.distance = -1;
+    iris_object *cy = add(sc, obj(sc, IRIS_OBJ_CYLINDER));
+    cy->u.cylinder.base = v3(0, 0, 0);
+    cy->u.cylinder.cap = v3(0, 0, 2);
+    cy->u.cylinder.radius = 0.5;
+
+    /* A unit cube mesh [0,1]³ offset to x = 3, 12 triangles */
+    static vec3 cv[8];
+    for (int i = 0; i < 8; i++)
+        cv[i] = v3(3 + (i & 1), (i >> 1) & 1, (i >> 2) & 1);
+    static int32_t ci[36] = { 0, 1, 3, 0, 3, 2, 4, 6, 7, 4, 7, 5,
+                              0, 4, 5, 0, 5, 1, 2, 3, 7, 2, 7, 6,
+                              0, 2, 6, 0, 6, 4, 1, 5, 7, 1, 7, 3 };
+    iris_object *m = add(sc, obj(sc, IRIS_OBJ_MESH));
+    m->u.mesh.n_vertices = 8;
+    m->u.mesh.vertices = cv;
+    m->u.mesh.n_triangles = 12;
+    m->u.mesh.tri_vertices = ci;
+    m->u.mesh.inside_vector = v3(0.2, 0.3, 1);
+    iris_object *m2 = add(sc, obj(sc, IRIS_OBJ_MESH));
+    m2->u.mesh = m->u.mesh;
+    m2->u.mesh.inside_vector = v3(0, 0, 0);
+
+    struct accel *a = build(sc);
+    assert_true(accel_inside(a, pl, v3(5, -2, 7)));
+    assert_false(accel_inside(a, pl, v3(5, 0, 7)));
+    assert_true(accel_inside(a, cy, v3(0.3, 0, 1)));
+    assert_false(accel_inside(a, cy, v3(0.3, 0, 2.5)));
+    assert_true(accel_inside(a, m, v3(3.5, 0.5, 0.5)));
+    assert_true(accel_inside(a, m, v3(3.9, 0.1, 0.8)));
+    assert_false(accel_inside(a, m, v3(2.5, 0.5, 0.5)));
+    assert_false(accel_inside(a, m, v3(3.5, 1.5, 0.5)));
+    /* Without inside_vector a mesh has no inside (POV-Ray) */
+    assert_false(accel_inside(a, m2, v3(3.5, 0.5, 0.5)));
+    /* An object the accel was not built with still answers */
+    iris_object *free_sphere = sphere(sc, v3(0, 0, 0), 1);
+    assert_true(accel_inside(a, free_sphere, v3(0.5, 0, 0)));
+    /* The plane is unbounded: no object box, and not in the scene box */
+    vec3 lo, hi;
+    assert_false(accel_object_bounds(a, pl, &lo, &hi));
+    accel_bounds(a, &lo, &hi);
+    assert_near(lo.y, -0.5, 1e-6);
+    /* Mesh hit from outside: face x = 3 (Embree triangles, double t) */
+    struct hit h;
+    assert_true(shoot(a, v3(0, 0.5, 0.5), v3(1, 0, 0), &h));
+    assert_near(h.t, 3, 1e-12);
+    assert_ptr_equal(h.obj, m);
+    accel_destroy(a);
+    scene_free(sc);
+}
+
+/* Smooth triangle: uv and shading normal interpolated with barycentrics;
+** a degenerate triangle is dropped. */
+static void test_mesh_attrs(void **state)
+{
+    (void)state;
+    iris_scene *sc = scene_new();
+    iris_object *t = add(sc, obj(sc, IRIS_OBJ_TRIANGLE));
+    t->u.triangle.p[0] = v3(0, 0, 0);
+    t->u.triangle.p[1] = v3(1, 0, 0);
+    t->u.triangle.p[2] = v3(0, 1, 0);
+    t->u.triangle.smooth = true;
+    t->u.triangle.n[0] = v3(0, 0, -1);
+    t->u.triangle.n[1] = v3(1, 0, -1);
+    t->u.triangle.n[2] = v3(0, 1, -1);
+    t->u.triangle.has_uv = true;
+    t->u.triangle.uv[1].u = 1;
+    t->u.triangle.uv[2].v = 1;
+    iris_object *bad = add(sc, obj(sc, IRIS_OBJ_TRIANGLE));
+    bad->u.triangle.p[0] = v3(5, 0, 0);
+    bad->u.triangle.p[1] = v3(6, 0, 0);
+    bad->u.triangle.p[2] = v3(7, 0, 0); /* collinear */
+    char *buf = NULL;
+    size_t len = 0;
+    FILE *log = open_memstream(&buf, &len);
+    const char *files[2] = { "", "scene.pov" };
+    sc->files = files;
+    sc->n_files = 2;
+    bad->loc.file = 1;
+    bad->loc.line = 12;
+    bad->loc.col = 3;
+    struct accel *a = NULL;
+    char err[128];
+    assert_int_equal(accel_build(sc, &a, log, err, sizeof err), IRIS_OK);
+    fclose(log);
+    assert_non_null(strstr(buf, "scene.pov:12:3: warning: triangle"));
+    free(buf);
+    struct hit h;
+    assert_true(shoot(a, v3(0.25, 0.5, -3), v3(0, 0, 1), &h));
+    assert_near(h.t, 3, 1e-12);
+    assert_near(h.uv.u, 0.25, 1e-12);
+    assert_near(h.uv.v, 0.5, 1e-12);
+    /* geometric normal faces the vertex normals' side */
+    assert_vec(h.n, v3(0, 0, -1), 1e-12);
+    /* the unit vertex normals weighted by the barycentrics (.25,.25,.5);
+    ** 1e-6: the triangle is stored in float */
+    vec3 want = v3_add(v3_add(v3_scale(v3(0, 0, -1), 0.25),
+                              v3_scale(v3_norm(v3(1, 0, -1)), 0.25)),
+                       v3_scale(v3_norm(v3(0, 1, -1)), 0.5));
+    assert_vec(h.shading_n, v3_norm(want), 1e-6);
+    assert_false(shoot(a, v3(6, 0, -3), v3(0, 0, 1), &h));
+    accel_destroy(a);
+    scene_free(sc);
+}
+
+/* Skip flags: a no_shadow sphere in front is passed through by a query
+** that skips no_shadow objects, and seen by one that does not. */
+static void test_skip(void **state)
+{
+    (void)state;
+    iris_scene *sc = scene_new();
+    iris_object *front = add(sc, sphere(sc, v3(0, 0, 0), 1));
+    front->no_shadow = true;
+    iris_object *back = add(sc, sphere(sc, v3(0, 0, 5), 1));
+    iris_object *u = add(sc, csg(sc, IRIS_OBJ_MERGE,
+                                 sphere(sc, v3(5, 0, 0), 1),
+                                 sphere(sc, v3(5, 0, 5), 1)));
+    u->no_image = true;
+    struct accel *a = build(sc);
+    struct hit h;
+    ray r = { v3(0, 0, -5), v3(0, 0, 1) };
+    assert_true(accel_intersect(a, &r, 0, INFINITY, 0, &h));
+    assert_ptr_equal(h.obj, front);
+    assert_true(accel_intersect(a, &r, 0, INFINITY, ACCEL_SKIP_NO_SHADOW, &h));
+    assert_ptr_equal(h.obj, back);
+    assert_true(accel_intersect(a, &r, 0, INFINITY, ACCEL_SKIP_NO_IMAGE, &h));
+    assert_ptr_equal(h.obj, front);
+    ray r2 = { v3(5, 0, -5), v3(0, 0, 1) };
+    assert_true(accel_intersect(a, &r2, 0, INFINITY, 0, &h));
+    assert_ptr_equal(h.top, u);
+    assert_false(accel_intersect(a, &r2, 0, INFINITY, ACCEL_SKIP_NO_IMAGE,
+                                 &h));
+    accel_destroy(a);
+    scene_free(sc);
+}
+
+/* A mixed scene with every object scaled by 's' about the origin. */
+static iris_scene *mixed_scene(double s)
+{
+    iris_scene *sc = scene_new();
+    iris_object *o[8];
+    int n = 0;
+    o[n++] = add(sc, sphere(sc, v3(-2, 0, 0), 1));
+    o[n++] = add(sc, box(sc, v3(1, -1, -1), v3(2.5, 0.5, 1)));
+    iris_object *t = add(sc, obj(sc, IRIS_OBJ_TORUS));
+    t->u.torus.major = 1;
+    t->u.torus.minor = 0.3;
+    xform x;
+    xf_rotate(&x, v3(70, 0, 0));
+    apply(t, &x);
+    xf_translate(&x, v3(0, 1.5, 0));
+    apply(t, &x);
+    o[n++] = t;
+    o[n++] = add(sc, csg(sc, IRIS_OBJ_DIFFERENCE, sphere(sc, v3(0, -1.5, 0), 1),
+                         box(sc, v3(-2, -1.5, -2), v3(0, 0, 0))));
+    iris_object *tri = add(sc, obj(sc, IRIS_OBJ_TRIANGLE));
+    tri->u.triangle.p[0] = v3(-3, -3, 2);
+    tri->u.triangle.p[1] = v3(3, -3, 2);
+    tri->u.triangle.p[2] = v3(0, 3, 2.5);
+    o[n++] = tri;
+    iris_object *pl = add(sc, obj(sc, IRIS_OBJ_PLANE));
+    pl->u.plane.normal = v3(0, 1, 0);
+    pl->u.plane.distance = -3;
+    o[n++] = pl;
+    xf_scale(&x, v3(s, s, s));
+    for (int i = 0; i < n; i++) {
+        apply(o[i], &x);
+        if (o[i]->kind == IRIS_OBJ_DIFFERENCE)
+            for (int k = 0; k < 2; k++)
+                apply(o[i]->u.csg.children[k], &x);
+    }
+    return sc;
+}
+
+/*
+** Scale invariance (issue 7): the scene scaled by 1e-6 and 1e6 gives the
+** same hits over a grid of rays, each followed by a continuation ray from
+** the hit point (which exercises the epsilon): same object, t/scale equal
+** to 1e-9 relative, same normals.
+*/
+static void test_scale_invariance(void **state)
+{
+    (void)state;
+    const double scales[3] = { 1, 1e-6, 1e6 };
+    struct accel *a[3];
+    iris_scene *sc[3];
+    for (int k = 0; k < 3; k++) {
+        sc[k] = mixed_scene(scales[k]);
+        a[k] = build(sc[k]);
+    }
+    /* 1e-6 relative: the triangle's vertices (and so the scene box) are
+    ** floats, rounded to 2^-24 ~ 6e-8 relative */
+    assert_rel(accel_epsilon(a[1]), accel_epsilon(a[0]) * 1e-6, 1e-6);
+    assert_rel(accel_epsilon(a[2]), accel_epsilon(a[0]) * 1e6, 1e-6);
+    int n_hits = 0;
+    for (int iy = 0; iy < 24; iy++)
+        for (int ix = 0; ix < 24; ix++) {
+            vec3 d = v3_norm(v3((ix - 11.5) / 24.0, (iy - 11.5) / 24.0, 1));
+            int kinds[3][2];
+            double ts[3][2];
+            vec3 ns[3][2];
+            for (int k = 0; k < 3; k++) {
+                double s = scales[k];
+                ray r = { v3(0.1 * s, 0.05 * s, -8 * s), d };
+                for (int bounce = 0; bounce < 2; bounce++) {
+                    struct hit h;
+                    kinds[k][bounce] = -1;
+                    if (!accel_intersect(a[k], &r, accel_epsilon(a[k]),
+                                         INFINITY, 0, &h))
+                        break;
+                    kinds[k][bounce] = (int)h.obj->kind;
+                    ts[k][bounce] = h.t / s;
+                    ns[k][bounce] = h.n;
+                    r.o = h.p;
+                }
+            }
+            for (int k = 1; k < 3; k++)
+                for (int b = 0; b < 2; b++) {
+                    assert_int_equal(kinds[k][b], kinds[0][b]);
+                    if (kinds[0][b] < 0)
+                        break;
+                    n_hits++;
+                    /* Analytic shapes are solved in double: 1e-9. The
+                    ** triangle is stored in float, whose rounding of the
+                    ** scaled vertices differs by up to 2^-24: 1e-6 for
+                    ** its hits and for rays starting on it */
+                    bool via_tri = kinds[0][b] == IRIS_OBJ_TRIANGLE ||
+                                   (b > 0 && kinds[0][0] == IRIS_OBJ_TRIANGLE);
+                    double tol = via_tri ? 1e-6 : 1e-9;
+                    assert_rel(ts[k][b], ts[0][b], tol);
+                    assert_vec(ns[k][b], ns[0][b], tol);
+                }
+        }
+    assert_true(n_hits > 500); /* the grid really sees the objects */
+    for (int k = 0; k < 3; k++) {
+        accel_destroy(a[k]);
+        scene_free(sc[k]);
+    }
+}
+
+/* Random rays, from anywhere including inside objects, at a scene of
+** every analytic kind: every hit is finite with a unit normal, t > tmin,
+** and the point lies on the ray. */
+static void test_no_nan(void **state)
+{
+    (void)state;
+    iris_scene *sc = mixed_scene(1);
+    iris_object *c = add(sc, obj(sc, IRIS_OBJ_CONE));
+    c->u.cone.base = v3(0, 0, 3);
+    c->u.cone.cap = v3(0, 2, 3);
+    c->u.cone.base_radius = 1;
+    iris_object *se = add(sc, obj(sc, IRIS_OBJ_SUPERELLIPSOID));
+    se->u.superellipsoid.e = 0.3;
+    se->u.superellipsoid.n = 2.5;
+    xform x;
+    xf_translate(&x, v3(3, 2, 3));
+    apply(se, &x);
+    iris_object *bl = add(sc, obj(sc, IRIS_OBJ_BLOB));
+    iris_blob_component *bc = arena_array(sc->arena, 2, sizeof *bc);
+    bc[0].a = v3(-3, 2, 3);
+    bc[0].radius = 1;
+    bc[0].strength = 1;
+    bc[1].kind = 1;
+    bc[1].a = v3(-3, 2, 3);
+    bc[1].b = v3(-3, 3, 4);
+    bc[1].radius = 0.7;
+    bc[1].strength = -0.5;
+    bl->u.blob.threshold = 0.2;
+    bl->u.blob.n_components = 2;
+    bl->u.blob.components = bc;
+    struct accel *a = build(sc);
+    rng g;
+    rng_seed(&g, 7, 0, 0);
+    int n_hit = 0;
+    for (int i = 0; i < 20000; i++) {
+        vec3 o = v3(8 * rng_uniform(&g) - 4, 8 * rng_uniform(&g) - 4,
+                    8 * rng_uniform(&g) - 4);
+        vec3 d = v3_norm(v3(rng_uniform(&g) - 0.5, rng_uniform(&g) - 0.5,
+                            rng_uniform(&g) - 0.5));
+        ray r = { o, d };
+        struct hit h;
+        if (!accel_intersect(a, &r, 1e-9, INFINITY, 0, &h))
+            continue;
+        n_hit++;
+        assert_true(isfinite(h.t) && h.t > 1e-9);
+        assert_near(v3_len(h.n), 1, 1e-9);
+        assert_near(v3_len(h.shading_n), 1, 1e-9);
+        assert_true(isfinite(h.uv.u) && isfinite(h.uv.v));
+        assert_near(v3_len(v3_sub(h.p, v3_madd(o, d, h.t))), 0, 1e-9);
+        assert_non_null(h.texture);
+    }
+    assert_true(n_hit > 10000); /* the plane and the rest are hit */
+    /* Degenerate queries: zero direction, NaN origin, empty interval */
+    struct hit h;
+    ray bad = { v3(NAN, 0, 0), v3(0, 0, 1) };
+    assert_false(accel_intersect(a, &bad, 0, INFINITY, 0, &h));
+    ray zero = { v3(0, 0, -5), v3(0, 0, 0) };
+    assert_false(accel_intersect(a, &zero, 0, INFINITY, 0, &h));
+    ray ok = { v3(0, 0, -5), v3(0, 0, 1) };
+    assert_false(accel_intersect(a, &ok, 5, 5, 0, &h));
+    accel_destroy(a);
+    scene_free(sc);
+}
+
+/* Grazing rays at a sphere never return garbage: a ray tangent within
+** rounding may hit or miss, but a hit has t near the tangent point. */
+static void test_grazing(void **state)
+{
+    (void)state;
+    iris_scene *sc = scene_new();
+    add(sc, sphere(sc, v3(0, 0, 0), 1));
+    struct accel *a = build(sc);
+    for (int k = -3; k <= 3; k++) {
+        double y = 1 + k * 1e-15;
+        struct hit h;
+        if (shoot(a, v3(0, y, -5), v3(0, 0, 1), &h)) {
+            assert_near(h.t, 5, 1e-6);
+            assert_near(v3_len(h.n), 1, 1e-12);
+        }
+    }
+    /* Unsupported shapes and empty CSG are skipped, never fatal */
+    add(sc, obj(sc, IRIS_OBJ_JULIA_FRACTAL));
+    iris_object *e = add(sc, obj(sc, IRIS_OBJ_UNION));
+    (void)e;
+    accel_destroy(a);
+    a = build(sc);
+    accel_destroy(a);
+    accel_destroy(NULL);
+    scene_free(sc);
+}
+
+/* x² + y² + z² - c as a compiled function (fn.h stack code). */
+static iris_fn *sphere_fn(iris_scene *sc, double c)
+{
+    static const enum iris_fn_op ops[13] = {
+        IRIS_FN_PARAM, IRIS_FN_PARAM, IRIS_FN_MUL, IRIS_FN_PARAM,
+        IRIS_FN_PARAM, IRIS_FN_MUL, IRIS_FN_ADD, IRIS_FN_PARAM,
+        IRIS_FN_PARAM, IRIS_FN_MUL, IRIS_FN_ADD, IRIS_FN_CONST, IRIS_FN_SUB
+    };
+    static const int args[13] = { 0, 0, 0, 1, 1, 0, 0, 2, 2, 0, 0, 0, 0 };
+    iris_fn *f = arena_alloc(sc->arena, sizeof *f);
+    f->n_params = 3;
+    f->n_code = 13;
+    f->code = arena_array(sc->arena, 13, sizeof *f->code);
+    for (int i = 0; i < 13; i++) {
+        f->code[i].op = ops[i];
+        f->code[i].arg = args[i];
+    }
+    f->code[11].value = c;
+    f->max_stack = 4;
+    f->n_results = 1;
+    return f;
+}
+
+/* Isosurface x²+y²+z² = 1 in the box [-2,2]³ (|grad| <= 2·sqrt(12) < 7):
+** the root is refined to double precision, so t = 4 within 1e-9. With
+** x²+y²+z² = 9 the whole box is inside and its wall at z=-2 shows. */
+static void test_isosurface(void **state)
+{
+    (void)state;
+    iris_scene *sc = scene_new();
+    iris_object *iso = add(sc, obj(sc, IRIS_OBJ_ISOSURFACE));
+    iso->u.isosurface.fn = sphere_fn(sc, 1);
+    iso->u.isosurface.lo = v3(-2, -2, -2);
+    iso->u.isosurface.hi = v3(2, 2, 2);
+    iso->u.isosurface.max_gradient = 7;
+    iso->u.isosurface.accuracy = 1e-3;
+    iso->u.isosurface.max_trace = 1;
+    struct accel *a = build(sc);
+    struct hit h;
+    assert_true(shoot(a, v3(0, 0, -5), v3(0, 0, 1), &h));
+    assert_near(h.t, 4, 1e-9);
+    assert_vec(h.n, v3(0, 0, -1), 1e-5);
+    assert_true(shoot(a, v3(0.6, 0, -5), v3(0, 0, 1), &h));
+    assert_near(h.t, 5 - 0.8, 1e-9);
+    assert_true(accel_inside(a, iso, v3(0.5, 0.5, 0.5)));
+    assert_false(accel_inside(a, iso, v3(0.5, 1, 0.5)));
+    /* From the surface outwards nothing is found again */
+    assert_false(shoot(a, v3(0, 0, -1), v3(0, 0, -1), &h));
+    accel_destroy(a);
+
+    iso->u.isosurface.fn = sphere_fn(sc, 9);
+    a = build(sc);
+    assert_true(shoot(a, v3(0, 0, -5), v3(0, 0, 1), &h));
+    assert_near(h.t, 3, 1e-12);
+    assert_vec(h.n, v3(0, 0, -1), 0);
+    accel_destroy(a);
+    iso->open = true;
+    a = build(sc);
+    assert_false(shoot(a, v3(0, 0, -5), v3(0, 0, 1), &h));
+    accel_destroy(a);
+    scene_free(sc);
+}
+
+/* A 3x3 grey image, white in the middle, is a height field pyramid of
+** height 1 in the unit square; its inside is below the surface. */
+static void test_height_field(void **state)
+{
+    (void)state;
+    char path[] = "/tmp/iris-hf-XXXXXX.pgm";
+    int fd = mkstemps(path, 4);
+    assert_true(fd >= 0);
+    FILE *f = fdopen(fd, "wb");
+    const unsigned char px[9] = { 0, 0, 0, 0, 255, 0, 0, 0, 0 };
+    fprintf(f, "P5\n3 3\n255\n");
+    fwrite(px, 1, 9, f);
+    fclose(f);
+    iris_scene *sc = scene_new();
+    iris_object *hf = add(sc, obj(sc, IRIS_OBJ_HEIGHT_FIELD));
+    iris_image_ref ref = { .path = path };
+    hf->u.height_field.image = &ref;
+    struct accel *a = NULL;
+    char err[128];
+    enum iris_status st = accel_build(sc, &a, NULL, err, sizeof err);
+    remove(path);
+    assert_int_equal(st, IRIS_OK);
+    struct hit h;
+    /* Straight down onto the peak, and halfway down its slope (the
+    ** triangles are planar: height 0.5 at x = 0.25 on the z = 0.5 line) */
+    assert_true(shoot(a, v3(0.5, 5, 0.5), v3(0, -1, 0), &h));
+    assert_near(h.t, 4, 1e-6);
+    assert_true(shoot(a, v3(0.25, 5, 0.5), v3(0, -1, 0), &h));
+    assert_near(h.p.y, 0.5, 1e-6);
+    assert_true(accel_inside(a, hf, v3(0.5, 0.8, 0.5)));
+    assert_false(accel_inside(a, hf, v3(0.25, 0.6, 0.5)));
+    assert_false(accel_inside(a, hf, v3(1.5, 0.1, 0.5)));
+    accel_destroy(a);
+    scene_free(sc);
+}
+
+/* A mesh inside CSG: intersection of a unit-cube mesh (with
+** inside_vector) and a sphere of radius 0.6 at the cube's corner (0,0,0):
+** along the cube's edge direction the first surface is the sphere. */
+static void test_mesh_csg(void **state)
+{
+    (void)state;
+    iris_scene *sc = scene_new();
+    static vec3 cv[8];
+    for (int i = 0; i < 8; i++)
+        cv[i] = v3(i & 1, (i >> 1) & 1, (i >> 2) & 1);
+    static int32_t ci[36] = { 0, 1, 3, 0, 3, 2, 4, 6, 7, 4, 7, 5,
+                              0, 4, 5, 0, 5, 1, 2, 3, 7, 2, 7, 6,
+                              0, 2, 6, 0, 6, 4, 1, 5, 7, 1, 7, 3 };
+    iris_object *m = obj(sc, IRIS_OBJ_MESH);
+    m->u.mesh.n_vertices = 8;
+    m->u.mesh.vertices = cv;
+    m->u.mesh.n_triangles = 12;
+    m->u.mesh.tri_vertices = ci;
+    m->u.mesh.inside_vector = v3(0.3, 0.2, 1);
+    iris_object *s = sphere(sc, v3(0, 0, 0), 0.6);
+    add(sc, csg(sc, IRIS_OBJ_INTERSECTION, m, s));
+    struct accel *a = build(sc);
+    struct hit h;
+    /* Along z at x=y=0.2: enters the cube at z=0 (inside the sphere) */
+    assert_true(shoot(a, v3(0.2, 0.2, -3), v3(0, 0, 1), &h));
+    assert_near(h.t, 3, 1e-9);
+    assert_ptr_equal(h.obj, m);
+    /* ... and leaves through the sphere */
+    assert_true(shoot(a, h.p, v3(0, 0, 1), &h));
+    assert_near(h.p.z, sqrt(0.36 - 0.08), 1e-9);
+    assert_ptr_equal(h.obj, s);
+    /* At x=y=0.5 the cube's face is outside the sphere: miss */
+    assert_false(shoot(a, v3(0.5, 0.5, -3), v3(0, 0, 1), &h));
+    accel_destroy(a);
+    scene_free(sc);
+}
+
+int main(void)
+{
+    glass.ior = 1.5;
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_sphere_hit),
+        cmocka_unit_test(test_transformed),
+        cmocka_unit_test(test_difference),
+        cmocka_unit_test(test_intersection),
+        cmocka_unit_test(test_merge),
+        cmocka_unit_test(test_inverse),
+        cmocka_unit_test(test_clip),
+        cmocka_unit_test(test_inside),
+        cmocka_unit_test(test_mesh_attrs),
+        cmocka_unit_test(test_skip),
+        cmocka_unit_test(test_scale_invariance),
+        cmocka_unit_test(test_no_nan),
+        cmocka_unit_test(test_grazing),
+        cmocka_unit_test(test_isosurface),
+        cmocka_unit_test(test_height_field),
+        cmocka_unit_test(test_mesh_csg),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

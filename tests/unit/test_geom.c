@@ -1,0 +1,565 @@
+/* SPDX-License-Identifier: MIT */
+/*
+** test_geom.c: polynomial roots and the analytic shapes of src/geometry
+** in object space, against closed-form answers.
+*/
+#include "config.h"
+
+#include "testutil.h"
+
+#include <stdio.h>
+#include <string.h>
+
+#include "geometry/geom.h"
+#include "geometry/roots.h"
+
+/* Expands prod (t - r_i) into ascending coefficients. */
+static void from_roots(const double *r, int n, double *c)
+{
+    c[0] = 1;
+    for (int i = 1; i <= n; i++)
+        c[i] = 0;
+    for (int k = 0; k < n; k++) {
+        for (int i = k + 1; i > 0; i--)
+            c[i] = c[i - 1] - r[k] * c[i];
+        c[0] = -r[k] * c[0];
+    }
+}
+
+/* Known simple roots come back to 1e-10: the coefficients themselves are
+** exact in double for these small integers, so the only error is the
+** refinement's, which stops at a few ulps. */
+static void test_roots_known(void **state)
+{
+    (void)state;
+    double r4[4] = { 1, 2, 3, 4 }, c[8], out[8];
+    from_roots(r4, 4, c);
+    int n = roots_in_interval(c, 4, -100, 100, out);
+    assert_int_equal(n, 4);
+    for (int i = 0; i < 4; i++)
+        assert_near(out[i], r4[i], 1e-10);
+
+    /* Only the roots inside the interval */
+    n = roots_in_interval(c, 4, 1.5, 3.5, out);
+    assert_int_equal(n, 2);
+    assert_near(out[0], 2, 1e-10);
+    assert_near(out[1], 3, 1e-10);
+
+    /* Close roots and a far one; relative 1e-9 (conditioning of the
+    ** pair 1, 1.001 costs ~3 digits of the 16) */
+    double rc[4] = { -5, 1, 1.001, 100 };
+    from_roots(rc, 4, c);
+    n = roots_in_interval(c, 4, -INFINITY, INFINITY, out);
+    assert_int_equal(n, 4);
+    for (int i = 0; i < 4; i++)
+        assert_rel(out[i], rc[i], 1e-9);
+
+    /* Degree 6 */
+    double r6[6] = { -3, -1, 0.5, 2, 7, 11 };
+    from_roots(r6, 6, c);
+    n = roots_in_interval(c, 6, -INFINITY, INFINITY, out);
+    assert_int_equal(n, 6);
+    for (int i = 0; i < 6; i++)
+        assert_near(out[i], r6[i], 1e-8);
+
+    /* (t² + 1)(t² + 4) has no real roots */
+    double cc[5] = { 4, 0, 5, 0, 1 };
+    assert_int_equal(roots_in_interval(cc, 4, -1e9, 1e9, out), 0);
+
+    /* Leading zero coefficients reduce the degree: 2t - 1 */
+    double lin[5] = { -1, 2, 0, 0, 0 };
+    assert_int_equal(roots_in_interval(lin, 4, -10, 10, out), 1);
+    assert_near(out[0], 0.5, 1e-15);
+
+    /* NaN coefficients give no roots rather than garbage */
+    double bad[3] = { 1, NAN, 1 };
+    assert_int_equal(roots_in_interval(bad, 2, -10, 10, out), 0);
+}
+
+static iris_object mk(enum iris_object_kind k)
+{
+    iris_object o;
+    memset(&o, 0, sizeof o);
+    o.kind = k;
+    return o;
+}
+
+/* Collects crossings sorted by t. */
+static int hits(const iris_object *o, const struct geom_profile *p, vec3 ro,
+                vec3 rd, struct geom_isect *out, int max)
+{
+    struct isect_list l;
+    isect_list_init(&l);
+    geom_intersect(o, p, ro, rd, 0, INFINITY, &l);
+    int n = l.n < max ? l.n : max;
+    for (int i = 0; i < l.n; i++)
+        for (int j = i + 1; j < l.n; j++)
+            if (l.v[j].t < l.v[i].t) {
+                struct geom_isect s = l.v[i];
+                l.v[i] = l.v[j];
+                l.v[j] = s;
+            }
+    memcpy(out, l.v, (size_t)n * sizeof *out);
+    int total = l.n;
+    isect_list_fini(&l);
+    return total;
+}
+
+static void assert_dir(vec3 n, vec3 want, double tol)
+{
+    n = v3_norm(n);
+    assert_near(n.x, want.x, tol);
+    assert_near(n.y, want.y, tol);
+    assert_near(n.z, want.z, tol);
+}
+
+/* Sphere: t = distance - r and distance + r; normals radial. */
+static void test_sphere(void **state)
+{
+    (void)state;
+    iris_object s = mk(IRIS_OBJ_SPHERE);
+    s.u.sphere.centre = v3(0, 0, 0);
+    s.u.sphere.radius = 1;
+    struct geom_isect h[4];
+    assert_int_equal(hits(&s, NULL, v3(0, 0, -5), v3(0, 0, 1), h, 4), 2);
+    assert_near(h[0].t, 4, 1e-12);
+    assert_near(h[1].t, 6, 1e-12);
+    assert_dir(h[0].n, v3(0, 0, -1), 1e-12);
+    assert_dir(h[1].n, v3(0, 0, 1), 1e-12);
+    /* Far away origin (1e8) keeps the precision of the closest-approach
+    ** form: 1e-8 absolute is 1e-16 relative to the distance */
+    assert_int_equal(hits(&s, NULL, v3(0, 0.6, -1e8), v3(0, 0, 1), h, 4), 2);
+    assert_near(h[0].t, 1e8 - 0.8, 1e-7);
+    assert_true(geom_inside(&s, NULL, v3(0.5, 0.5, 0.5)));
+    assert_false(geom_inside(&s, NULL, v3(0.6, 0.6, 0.6)));
+}
+
+/* Box: entry and exit faces with their normals. */
+static void test_box(void **state)
+{
+    (void)state;
+    iris_object b = mk(IRIS_OBJ_BOX);
+    b.u.box.lo = v3(1, 1, 1); /* corners in either order */
+    b.u.box.hi = v3(-1, -2, -3);
+    struct geom_isect h[4];
+    assert_int_equal(hits(&b, NULL, v3(-5, 0, 0), v3(1, 0, 0), h, 4), 2);
+    assert_near(h[0].t, 4, 1e-12);
+    assert_near(h[1].t, 6, 1e-12);
+    assert_dir(h[0].n, v3(-1, 0, 0), 0);
+    assert_dir(h[1].n, v3(1, 0, 0), 0);
+    /* Diagonal ray enters through -z (z extent 3 is deepest) */
+    assert_int_equal(hits(&b, NULL, v3(0, 0, -5), v3(0, 0, 1), h, 4), 2);
+    assert_near(h[0].t, 2, 1e-12);
+    assert_dir(h[0].n, v3(0, 0, -1), 0);
+    assert_int_equal(hits(&b, NULL, v3(0, 5, -5), v3(0, 0, 1), h, 4), 0);
+    assert_true(geom_inside(&b, NULL, v3(0, -1.5, -2.5)));
+    assert_false(geom_inside(&b, NULL, v3(0, 1.5, 0)));
+}
+
+/* Cylinder: side at radius, caps with axial normals; open has no caps. */
+static void test_cylinder(void **state)
+{
+    (void)state;
+    iris_object c = mk(IRIS_OBJ_CYLINDER);
+    c.u.cylinder.base = v3(0, 0, 0);
+    c.u.cylinder.cap = v3(0, 1, 0);
+    c.u.cylinder.radius = 1;
+    struct geom_isect h[4];
+    assert_int_equal(hits(&c, NULL, v3(-5, 0.5, 0), v3(1, 0, 0), h, 4), 2);
+    assert_near(h[0].t, 4, 1e-12);
+    assert_dir(h[0].n, v3(-1, 0, 0), 1e-12);
+    assert_int_equal(hits(&c, NULL, v3(0.5, 5, 0), v3(0, -1, 0), h, 4), 2);
+    assert_near(h[0].t, 4, 1e-12);
+    assert_near(h[1].t, 5, 1e-12);
+    assert_dir(h[0].n, v3(0, 1, 0), 1e-12);
+    assert_dir(h[1].n, v3(0, -1, 0), 1e-12);
+    c.open = true;
+    assert_int_equal(hits(&c, NULL, v3(0.5, 5, 0), v3(0, -1, 0), h, 4), 0);
+    assert_true(geom_inside(&c, NULL, v3(0.5, 0.5, 0)));
+    assert_false(geom_inside(&c, NULL, v3(0.5, 1.5, 0)));
+}
+
+/* Cone r = 1 - y/2 from y=0 to 2: at y=1 the radius is 0.5 and the
+** outward normal is along (-1, 0.5, 0) at x = -0.5. */
+static void test_cone(void **state)
+{
+    (void)state;
+    iris_object c = mk(IRIS_OBJ_CONE);
+    c.u.cone.base = v3(0, 0, 0);
+    c.u.cone.cap = v3(0, 2, 0);
+    c.u.cone.base_radius = 1;
+    c.u.cone.cap_radius = 0;
+    struct geom_isect h[4];
+    assert_int_equal(hits(&c, NULL, v3(-5, 1, 0), v3(1, 0, 0), h, 4), 2);
+    assert_near(h[0].t, 4.5, 1e-12);
+    assert_near(h[1].t, 5.5, 1e-12);
+    assert_dir(h[0].n, v3_norm(v3(-1, 0.5, 0)), 1e-12);
+    /* Above the apex the mirrored nappe must not be hit */
+    assert_int_equal(hits(&c, NULL, v3(-5, 3, 0), v3(1, 0, 0), h, 4), 0);
+    /* Base cap */
+    assert_int_equal(hits(&c, NULL, v3(0.2, -5, 0), v3(0, 1, 0), h, 4), 2);
+    assert_near(h[0].t, 5, 1e-12);
+    assert_dir(h[0].n, v3(0, -1, 0), 1e-12);
+}
+
+/* Torus R=2, r=0.5 about y: a ray along x meets radii 2.5, 1.5, 1.5, 2.5.
+** Edge-on it is a thin quartic case; 1e-9 is far above double rounding of
+** the refined roots. */
+static void test_torus(void **state)
+{
+    (void)state;
+    iris_object t = mk(IRIS_OBJ_TORUS);
+    t.u.torus.major = 2;
+    t.u.torus.minor = 0.5;
+    struct geom_isect h[4];
+    assert_int_equal(hits(&t, NULL, v3(-10, 0, 0), v3(1, 0, 0), h, 4), 4);
+    assert_near(h[0].t, 7.5, 1e-9);
+    assert_near(h[1].t, 8.5, 1e-9);
+    assert_near(h[2].t, 11.5, 1e-9);
+    assert_near(h[3].t, 12.5, 1e-9);
+    assert_dir(h[0].n, v3(-1, 0, 0), 1e-9);
+    assert_dir(h[1].n, v3(1, 0, 0), 1e-9);
+    /* Through the tube vertically at x = 2: y = ±0.5 */
+    assert_int_equal(hits(&t, NULL, v3(2, 10, 0), v3(0, -1, 0), h, 4), 2);
+    assert_near(h[0].t, 9.5, 1e-9);
+    assert_dir(h[0].n, v3(0, 1, 0), 1e-9);
+    /* Through the hole: nothing */
+    assert_int_equal(hits(&t, NULL, v3(0, 10, 0), v3(0, -1, 0), h, 4), 0);
+    /* A very thin torus far away: r/R = 1e-4 at distance 1e4 */
+    t.u.torus.minor = 2e-4;
+    assert_int_equal(hits(&t, NULL, v3(-1e4, 0, 0), v3(1, 0, 0), h, 4), 4);
+    assert_near(h[0].t, 1e4 - 2 - 2e-4, 1e-8);
+    assert_true(geom_inside(&t, NULL, v3(2, 0, 1e-4)));
+    assert_false(geom_inside(&t, NULL, v3(0, 0, 0)));
+}
+
+/* A poly equal to the unit sphere (POV-Ray order: x², xy, xz, x, y², yz,
+** y, z², z, 1) and the quartic torus in poly form give the same hits as
+** the dedicated shapes. */
+static void test_poly(void **state)
+{
+    (void)state;
+    double qc[10] = { 1, 0, 0, 0, 1, 0, 0, 1, 0, -1 };
+    iris_object q = mk(IRIS_OBJ_QUADRIC);
+    q.u.poly.order = 2;
+    q.u.poly.n_coeffs = 10;
+    q.u.poly.coeffs = qc;
+    assert_null(geom_validate(&q));
+    struct geom_isect h[4];
+    assert_int_equal(hits(&q, NULL, v3(0, 0.6, -5), v3(0, 0, 1), h, 4), 2);
+    assert_near(h[0].t, 4.2, 1e-12);
+    assert_dir(h[0].n, v3(0, 0.6, -0.8), 1e-12);
+    assert_true(geom_inside(&q, NULL, v3(0, 0, 0)));
+
+    /* Torus R=2, r=0.5: (x²+y²+z²+R²-r²)² - 4R²(x²+z²), order 4:
+    ** x⁴+y⁴+z⁴+2x²y²+2x²z²+2y²z² + 2(R²-r²)(x²+y²+z²) - 4R²(x²+z²)
+    ** + (R²-r²)² */
+    double R2 = 4, r2 = 0.25, k = R2 - r2;
+    double c4[35] = { 0 };
+    /* index of x^i y^j z^k in POV-Ray's order */
+    int idx = 0, map[5][5][5];
+    for (int i = 4; i >= 0; i--)
+        for (int j = 4 - i; j >= 0; j--)
+            for (int l = 4 - i - j; l >= 0; l--)
+                map[i][j][l] = idx++;
+    assert_int_equal(idx, 35);
+    c4[map[4][0][0]] = 1;
+    c4[map[0][4][0]] = 1;
+    c4[map[0][0][4]] = 1;
+    c4[map[2][2][0]] = 2;
+    c4[map[2][0][2]] = 2;
+    c4[map[0][2][2]] = 2;
+    c4[map[2][0][0]] = 2 * k - 4 * R2;
+    c4[map[0][2][0]] = 2 * k;
+    c4[map[0][0][2]] = 2 * k - 4 * R2;
+    c4[map[0][0][0]] = k * k;
+    iris_object p = mk(IRIS_OBJ_POLY);
+    p.u.poly.order = 4;
+    p.u.poly.n_coeffs = 35;
+    p.u.poly.coeffs = c4;
+    assert_int_equal(hits(&p, NULL, v3(-10, 0, 0), v3(1, 0, 0), h, 4), 4);
+    assert_near(h[0].t, 7.5, 1e-9);
+    assert_near(h[2].t, 11.5, 1e-9);
+    assert_dir(h[0].n, v3(-1, 0, 0), 1e-9);
+}
+
+/* Blob of one sphere component R=2, strength 1, threshold 1/4: the
+** surface is where (1 - r²/4)² = 1/4, r = 2·sqrt(1/2). A cylinder
+** component of the same radius gives the same distance from its axis. */
+static void test_blob(void **state)
+{
+    (void)state;
+    iris_blob_component comp[2];
+    memset(comp, 0, sizeof comp);
+    comp[0].kind = 0;
+    comp[0].a = v3(0, 0, 0);
+    comp[0].radius = 2;
+    comp[0].strength = 1;
+    iris_object b = mk(IRIS_OBJ_BLOB);
+    b.u.blob.threshold = 0.25;
+    b.u.blob.n_components = 1;
+    b.u.blob.components = comp;
+    double rs = 2 * sqrt(0.5);
+    struct geom_isect h[8];
+    assert_int_equal(hits(&b, NULL, v3(-10, 0, 0), v3(1, 0, 0), h, 8), 2);
+    assert_near(h[0].t, 10 - rs, 1e-9);
+    assert_near(h[1].t, 10 + rs, 1e-9);
+    assert_dir(h[0].n, v3(-1, 0, 0), 1e-9);
+    assert_true(geom_inside(&b, NULL, v3(0, 1.4, 0)));
+    assert_false(geom_inside(&b, NULL, v3(0, 1.5, 0)));
+
+    comp[0].kind = 1;
+    comp[0].a = v3(0, -1, 0);
+    comp[0].b = v3(0, 1, 0);
+    assert_int_equal(hits(&b, NULL, v3(-10, 0.3, 0), v3(1, 0, 0), h, 8), 2);
+    assert_near(h[0].t, 10 - rs, 1e-9);
+    /* Beyond the end, the hemisphere: distance to the end point */
+    assert_int_equal(hits(&b, NULL, v3(-10, 1.5, 0), v3(1, 0, 0), h, 8), 2);
+    assert_near(h[0].t, 10 - sqrt(rs * rs - 0.25), 1e-9);
+
+    /* Two equal spheres: symmetric crossings */
+    comp[0].kind = 0;
+    comp[0].a = v3(-1, 0, 0);
+    comp[1] = comp[0];
+    comp[1].a = v3(1, 0, 0);
+    b.u.blob.n_components = 2;
+    b.u.blob.threshold = 0.6;
+    int n = hits(&b, NULL, v3(-10, 0, 0), v3(1, 0, 0), h, 8);
+    assert_int_equal(n, 2);
+    assert_near(h[0].t - 10, -(h[1].t - 10), 1e-9);
+}
+
+/* superellipsoid <1, 1> is the unit sphere; <0.1, 0.1> nearly a cube. */
+static void test_superellipsoid(void **state)
+{
+    (void)state;
+    iris_object s = mk(IRIS_OBJ_SUPERELLIPSOID);
+    s.u.superellipsoid.e = 1;
+    s.u.superellipsoid.n = 1;
+    struct geom_isect h[8];
+    assert_int_equal(hits(&s, NULL, v3(0.3, 0.4, -5), v3(0, 0, 1), h, 8), 2);
+    assert_near(h[0].t, 5 - sqrt(0.75), 1e-9);
+    assert_dir(h[0].n, v3(0.3, 0.4, -sqrt(0.75)), 1e-6);
+    s.u.superellipsoid.e = 0.1;
+    s.u.superellipsoid.n = 0.1;
+    assert_int_equal(hits(&s, NULL, v3(0.3, 0.4, -5), v3(0, 0, 1), h, 8), 2);
+    /* |z|^20 = 1 - ((0.3^20+0.4^20)^(1)) ~ 1: z within 1e-8 of the face */
+    assert_near(h[0].t, 4, 1e-6);
+    assert_dir(h[0].n, v3(0, 0, -1), 1e-6);
+}
+
+/* Lathe, sor and prism that are all the unit cylinder of height 1. */
+static void test_sweeps(void **state)
+{
+    (void)state;
+    iris_vec2 lp[4] = { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 } };
+    iris_object l = mk(IRIS_OBJ_LATHE);
+    l.u.lathe.spline = IRIS_SPLINE_LINEAR;
+    l.u.lathe.n_points = 4;
+    l.u.lathe.points = lp;
+    const char *why;
+    struct geom_profile *p = geom_prepare(&l, &why);
+    assert_non_null(p);
+    struct geom_isect h[8];
+    assert_int_equal(hits(&l, p, v3(-5, 0.5, 0), v3(1, 0, 0), h, 8), 2);
+    assert_near(h[0].t, 4, 1e-12);
+    assert_dir(h[0].n, v3(-1, 0, 0), 1e-12);
+    assert_int_equal(hits(&l, p, v3(0.3, 5, 0), v3(0, -1, 0), h, 8), 2);
+    assert_near(h[0].t, 4, 1e-12);
+    assert_dir(h[0].n, v3(0, 1, 0), 1e-12);
+    assert_true(geom_inside(&l, p, v3(0.5, 0.5, 0.5)));
+    assert_false(geom_inside(&l, p, v3(0.8, 0.5, 0.8)));
+    geom_profile_free(p);
+
+    /* sor: r² constant 1 between y=0 and y=1, closed by caps */
+    iris_vec2 sp[4] = { { 1, -1 }, { 1, 0 }, { 1, 1 }, { 1, 2 } };
+    iris_object s = mk(IRIS_OBJ_SOR);
+    s.u.lathe.n_points = 4;
+    s.u.lathe.points = sp;
+    p = geom_prepare(&s, &why);
+    assert_non_null(p);
+    assert_int_equal(hits(&s, p, v3(-5, 0.5, 0), v3(1, 0, 0), h, 8), 2);
+    assert_near(h[0].t, 4, 1e-12);
+    assert_int_equal(hits(&s, p, v3(0.3, 5, 0), v3(0, -1, 0), h, 8), 2);
+    assert_near(h[1].t, 5, 1e-12);
+    geom_profile_free(p);
+
+    /* prism: a square with a square hole, linear sweep 0..1 */
+    iris_vec2 pp[10] = { { -1, -1 }, { 1, -1 }, { 1, 1 }, { -1, 1 },
+                         { -1, -1 }, { -0.5, -0.5 }, { 0.5, -0.5 },
+                         { 0.5, 0.5 }, { -0.5, 0.5 }, { -0.5, -0.5 } };
+    iris_object pr = mk(IRIS_OBJ_PRISM);
+    pr.u.prism.spline = IRIS_SPLINE_LINEAR;
+    pr.u.prism.height1 = 1;
+    pr.u.prism.height2 = 0;
+    pr.u.prism.n_points = 10;
+    pr.u.prism.points = pp;
+    p = geom_prepare(&pr, &why);
+    assert_non_null(p);
+    /* Along x at z = 0: outer wall, hole wall, hole wall, outer wall */
+    assert_int_equal(hits(&pr, p, v3(-5, 0.5, 0), v3(1, 0, 0), h, 8), 4);
+    assert_near(h[0].t, 4, 1e-12);
+    assert_near(h[1].t, 4.5, 1e-12);
+    assert_dir(h[0].n, v3(-1, 0, 0), 1e-12);
+    assert_dir(h[1].n, v3(1, 0, 0), 1e-12); /* the hole's wall faces in */
+    /* Down through the solid part: top cap then bottom cap */
+    assert_int_equal(hits(&pr, p, v3(0.75, 5, 0), v3(0, -1, 0), h, 8), 2);
+    assert_dir(h[0].n, v3(0, 1, 0), 0);
+    assert_int_equal(hits(&pr, p, v3(0, 5, 0), v3(0, -1, 0), h, 8), 0);
+    assert_true(geom_inside(&pr, p, v3(0.75, 0.5, 0)));
+    assert_false(geom_inside(&pr, p, v3(0, 0.5, 0)));
+    geom_profile_free(p);
+}
+
+/* Conic sweep: the square [-1,1]² scaled by the height y, for y in
+** [0.5, 1]. Along x at y = 0.75 the walls are at x = ±0.75 and the +x
+** wall is the plane x = y, outward normal (1, -1, 0)/sqrt(2). */
+static void test_conic_prism(void **state)
+{
+    (void)state;
+    iris_vec2 pp[5] = { { -1, -1 }, { 1, -1 }, { 1, 1 }, { -1, 1 },
+                        { -1, -1 } };
+    iris_object pr = mk(IRIS_OBJ_PRISM);
+    pr.u.prism.spline = IRIS_SPLINE_LINEAR;
+    pr.u.prism.sweep = 1;
+    pr.u.prism.height1 = 0.5;
+    pr.u.prism.height2 = 1;
+    pr.u.prism.n_points = 5;
+    pr.u.prism.points = pp;
+    const char *why;
+    struct geom_profile *p = geom_prepare(&pr, &why);
+    assert_non_null(p);
+    struct geom_isect h[4];
+    assert_int_equal(hits(&pr, p, v3(-5, 0.75, 0), v3(1, 0, 0), h, 4), 2);
+    assert_near(h[0].t, 5 - 0.75, 1e-12);
+    assert_near(h[1].t, 5 + 0.75, 1e-12);
+    assert_dir(h[1].n, v3_norm(v3(1, -1, 0)), 1e-12);
+    /* Down the axis: top cap at y = 1, bottom cap at y = 0.5 */
+    assert_int_equal(hits(&pr, p, v3(0.2, 5, 0), v3(0, -1, 0), h, 4), 2);
+    assert_near(h[1].t, 4.5, 1e-12);
+    /* x = 0.6 is inside at y = 0.75 but outside at y = 0.55 */
+    assert_true(geom_inside(&pr, p, v3(0.6, 0.75, 0)));
+    assert_false(geom_inside(&pr, p, v3(0.6, 0.55, 0)));
+    vec3 lo, hi;
+    assert_true(geom_bounds(&pr, p, &lo, &hi));
+    assert_near(hi.x, 1, 0);
+    geom_profile_free(p);
+}
+
+/* Quadratic-spline lathe through (2,-1), (1,0), (2,1): POV-Ray's segment
+** polynomial between the last two points is r = 1 + y², y in [0, 1].
+** Flattened to 16 chords, the radius is within (1/16)²/8·2 < 1e-3. */
+static void test_spline_lathe(void **state)
+{
+    (void)state;
+    iris_vec2 lp[3] = { { 2, -1 }, { 1, 0 }, { 2, 1 } };
+    iris_object l = mk(IRIS_OBJ_LATHE);
+    l.u.lathe.spline = IRIS_SPLINE_QUADRATIC;
+    l.u.lathe.n_points = 3;
+    l.u.lathe.points = lp;
+    const char *why;
+    struct geom_profile *p = geom_prepare(&l, &why);
+    assert_non_null(p);
+    struct geom_isect h[8];
+    for (double y = 0.1; y < 1; y += 0.2) {
+        int n = hits(&l, p, v3(-5, y, 0), v3(1, 0, 0), h, 8);
+        assert_int_equal(n, 2);
+        assert_near(5 - h[0].t, 1 + y * y, 1e-3);
+        /* The smooth normal follows the curve: (1, -dr/dy) = (1, -2y) */
+        vec3 want = v3_norm(v3(-1, -2 * y, 0));
+        assert_dir(h[0].n, want, 2e-2);
+    }
+    geom_profile_free(p);
+}
+
+/* Polygon with a hole, and a disc with a hole. */
+static void test_flat(void **state)
+{
+    (void)state;
+    vec3 pts[10] = { { 0, 0, 0 }, { 4, 0, 0 }, { 4, 4, 0 }, { 0, 4, 0 },
+                     { 0, 0, 0 }, { 1, 1, 0 }, { 3, 1, 0 }, { 3, 3, 0 },
+                     { 1, 3, 0 }, { 1, 1, 0 } };
+    iris_object p = mk(IRIS_OBJ_POLYGON);
+    p.u.polygon.n_points = 10;
+    p.u.polygon.points = pts;
+    struct geom_isect h[4];
+    assert_int_equal(hits(&p, NULL, v3(0.5, 0.5, -5), v3(0, 0, 1), h, 4), 1);
+    assert_near(h[0].t, 5, 1e-12);
+    assert_int_equal(hits(&p, NULL, v3(2, 2, -5), v3(0, 0, 1), h, 4), 0);
+    assert_int_equal(hits(&p, NULL, v3(5, 2, -5), v3(0, 0, 1), h, 4), 0);
+
+    iris_object d = mk(IRIS_OBJ_DISC);
+    d.u.disc.centre = v3(0, 1, 0);
+    d.u.disc.normal = v3(0, 2, 0);
+    d.u.disc.radius = 2;
+    d.u.disc.hole_radius = 1;
+    assert_int_equal(hits(&d, NULL, v3(1.5, 5, 0), v3(0, -1, 0), h, 4), 1);
+    assert_near(h[0].t, 4, 1e-12);
+    assert_dir(h[0].n, v3(0, 1, 0), 0);
+    assert_int_equal(hits(&d, NULL, v3(0.5, 5, 0), v3(0, -1, 0), h, 4), 0);
+    /* POV-Ray: the disc's inside is the half-space behind its normal */
+    assert_true(geom_inside(&d, NULL, v3(10, 0, 0)));
+    assert_false(geom_inside(&d, NULL, v3(0, 2, 0)));
+
+    iris_object pl = mk(IRIS_OBJ_PLANE);
+    pl.u.plane.normal = v3(0, 2, 0);
+    pl.u.plane.distance = 1;
+    assert_int_equal(hits(&pl, NULL, v3(0, 5, 0), v3(0, -1, 0), h, 4), 1);
+    assert_near(h[0].t, 4, 1e-12); /* unit normal, distance as given */
+    assert_true(geom_inside(&pl, NULL, v3(0, 0.5, 0)));
+    assert_false(geom_inside(&pl, NULL, v3(0, 1.5, 0)));
+}
+
+/* Text: the stem of "I" in POV-Ray's timrom.ttf, extruded 0..1 along z. */
+static void test_text(void **state)
+{
+    (void)state;
+    const char *font = "/usr/share/povray-3.7/include/timrom.ttf";
+    FILE *f = fopen(font, "rb");
+    if (!f)
+        skip();
+    fclose(f);
+    iris_object t = mk(IRIS_OBJ_TEXT);
+    t.u.text.font = "timrom.ttf"; /* bare name: found in POV-Ray's dir */
+    t.u.text.string = "I";
+    t.u.text.thickness = 1;
+    const char *why;
+    struct geom_profile *p = geom_prepare(&t, &why);
+    assert_non_null(p);
+    /* An em is 1 unit: a capital is about 0.6-0.7 high */
+    assert_true(p->hi.v - p->lo.v > 0.5 && p->hi.v - p->lo.v < 0.8);
+    double cx = 0.5 * (p->lo.u + p->hi.u), cy = 0.5 * (p->lo.v + p->hi.v);
+    struct geom_isect h[4];
+    assert_int_equal(hits(&t, p, v3(cx, cy, -5), v3(0, 0, 1), h, 4), 2);
+    assert_near(h[0].t, 5, 1e-12);
+    assert_near(h[1].t, 6, 1e-12);
+    assert_dir(h[0].n, v3(0, 0, -1), 0);
+    assert_true(geom_inside(&t, p, v3(cx, cy, 0.5)));
+    assert_false(geom_inside(&t, p, v3(cx + 1, cy, 0.5)));
+    geom_profile_free(p);
+
+    t.u.text.font = "/nonexistent/font.ttf";
+    assert_null(geom_prepare(&t, &why));
+    assert_non_null(why);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_roots_known),
+        cmocka_unit_test(test_sphere),
+        cmocka_unit_test(test_box),
+        cmocka_unit_test(test_cylinder),
+        cmocka_unit_test(test_cone),
+        cmocka_unit_test(test_torus),
+        cmocka_unit_test(test_poly),
+        cmocka_unit_test(test_blob),
+        cmocka_unit_test(test_superellipsoid),
+        cmocka_unit_test(test_sweeps),
+        cmocka_unit_test(test_conic_prism),
+        cmocka_unit_test(test_spline_lathe),
+        cmocka_unit_test(test_flat),
+        cmocka_unit_test(test_text),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

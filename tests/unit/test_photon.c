@@ -1,0 +1,603 @@
+/* SPDX-License-Identifier: MIT */
+/*
+** test_photon.c: photon storage, estimate and spectral transport against
+** brute force and exact optics.
+**
+** Transport runs against the analytic test double of photon_world.c
+** (spheres, planes, boxes, convex solids), so each expectation below is
+** computed independently here: Fresnel's equations, Snell's law, a
+** deterministic fan of rays through a sphere.
+*/
+#include "config.h"
+
+#include "testutil.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "photon/pmap.h"
+#include "photon/trace.h"
+#include "photon_world.h"
+#include "spectrum/ior.h"
+#include "spectrum/spectrum.h"
+#include "util/rng.h"
+
+static const iris_colour WHITE = { 1, 1, 1, 0, 0 };
+static const iris_colour CLEAR = { 1, 1, 1, 0, 1 };
+
+/* Unpolarised Fresnel reflectance from n1 to n2 at incidence cosine ci,
+** written out independently of the library's (Hecht, eq. 4.42/4.43). */
+static double fresnel_ref(double n1, double n2, double ci)
+{
+    double si = sqrt(fmax(0, 1 - ci * ci)), st = n1 / n2 * si;
+    if (st >= 1)
+        return 1;
+    double ct = sqrt(1 - st * st);
+    double rs = (n1 * ci - n2 * ct) / (n1 * ci + n2 * ct);
+    double rp = (n2 * ci - n1 * ct) / (n2 * ci + n1 * ct);
+    return 0.5 * (rs * rs + rp * rp);
+}
+
+/* The photon light on a white, diffuse 1, brilliance 1 surface at p. */
+static void shade_white(const struct photon_map *m, vec3 p, vec3 n,
+                        double rgb[3])
+{
+    static iris_finish fin;
+    fin.diffuse = 1;
+    fin.brilliance = 1;
+    struct photon_shade_input in = { p, n, n, v3_neg(n), { 1, 1, 1 }, 1.0,
+                                     &fin, NULL };
+    photon_map_shade(m, &in, rgb);
+}
+
+/* ------------------------------------------------------------------ */
+
+static int cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* The kd-tree's k nearest equal brute force over the decoded positions,
+** on a mix of volume, planar (degenerate axis) and duplicate photons. */
+static void test_knn_brute_force(void **state)
+{
+    (void)state;
+    assert_int_equal(sizeof(struct pstore_photon), 16);
+    enum { N = 6000 };
+    static struct pstore_raw raw[N];
+    rng r;
+    rng_seed(&r, 7, 0, 0);
+    for (int i = 0; i < N; i++) {
+        double x = rng_uniform(&r) * 2 - 1, y = rng_uniform(&r) * 2 - 1;
+        double z = rng_uniform(&r) * 2 - 1;
+        if (i % 3 == 1)
+            y = 0.25; /* a floor */
+        if (i % 7 == 2 && i > 0)
+            x = raw[i - 1].p[0], y = raw[i - 1].p[1], z = raw[i - 1].p[2];
+        raw[i].p[0] = (float)x;
+        raw[i].p[1] = (float)y;
+        raw[i].p[2] = (float)z;
+        raw[i].power = 1;
+        raw[i].lambda = (float)(380 + 400 * rng_uniform(&r));
+        vec3 d = v3_norm(v3(rng_uniform(&r) - .5, rng_uniform(&r) - .5,
+                            rng_uniform(&r) - .5));
+        raw[i].dir[0] = (float)d.x;
+        raw[i].dir[1] = (float)d.y;
+        raw[i].dir[2] = (float)d.z;
+    }
+    /* keep the wavelengths and directions to check the packing */
+    struct pstore s;
+    assert_int_equal(pstore_build(&s, raw, N), IRIS_OK);
+    for (int i = 0; i < N; i++) {
+        /* raw[] is in tree order after the build */
+        assert_near(pstore_lambda(&s, i), raw[i].lambda, 0.01);
+        vec3 d = pstore_direction(&s, i);
+        vec3 e = v3(raw[i].dir[0], raw[i].dir[1], raw[i].dir[2]);
+        assert_true(v3_dot(d, e) > cos(1.5 * M_PI / 180)); /* 1.5 deg */
+        vec3 p = pstore_position(&s, i);
+        assert_near(p.x, raw[i].p[0], 2.0 / (1 << 20));
+    }
+    static double dist[N];
+    struct pstore_found found[64];
+    const int ks[3] = { 1, 9, 64 };
+    const double radii[2] = { INFINITY, 0.02 };
+    for (int q = 0; q < 150; q++) {
+        vec3 p = v3(rng_uniform(&r) * 2.4 - 1.2, rng_uniform(&r) * 2 - 1,
+                    rng_uniform(&r) * 2 - 1);
+        if (q % 4 == 0)
+            p.y = 0.25;
+        for (int i = 0; i < N; i++)
+            dist[i] = v3_len2(v3_sub(pstore_position(&s, i), p));
+        qsort(dist, N, sizeof dist[0], cmp_double);
+        for (int ki = 0; ki < 3; ki++)
+            for (int ri = 0; ri < 2; ri++) {
+                double r2;
+                int n = pstore_knn(&s, p, ks[ki], radii[ri], found, &r2);
+                int expect = 0;
+                while (expect < ks[ki] && dist[expect] < radii[ri])
+                    expect++;
+                assert_int_equal(n, expect);
+                double got[64];
+                for (int i = 0; i < n; i++)
+                    got[i] = found[i].d2;
+                qsort(got, (size_t)n, sizeof got[0], cmp_double);
+                for (int i = 0; i < n; i++)
+                    assert_near(got[i], dist[i], 1e-6 * (1 + dist[i]));
+                if (n > 0)
+                    assert_near(r2, dist[n - 1], 1e-6 * (1 + dist[n - 1]));
+            }
+    }
+    pstore_fini(&s);
+}
+
+/* ------------------------------------------------------------------ */
+
+/* A map over raw photons, with the build's estimate settings. */
+static struct photon_map *map_from_raw(struct pstore_raw *raw, size_t n,
+                                       int k, double radius)
+{
+    static struct photon_map m;
+    pstore_fini(&m.store);
+    memset(&m, 0, sizeof m);
+    assert_int_equal(pstore_build(&m.store, raw, n), IRIS_OK);
+    m.gather_min = 20;
+    m.gather_max = k;
+    m.radius = radius;
+    m.expand_tol = 0.2;
+    m.expand_min = 35;
+    m.cone_k = 1;
+    return &m;
+}
+
+/*
+** The cone filter's normalisation: over a disc of uniform density the
+** weights 1 - d/(k r) average to 1 - 2/(3k) (midpoint rule, 1e5 rings).
+** Then the estimator end to end: photons spread uniformly over a plane at
+** irradiance E = 1, white D65 light, give rgb (1,1,1) within 1% (mean of
+** 200 points; the per-point noise of 100 jittered photons is ~5%).
+** Photons arriving at 60 degrees: POV-Ray's a = 1/cos cancels the cosine
+** (brilliance 1); brilliance 2 leaves cos^2/cos = 0.5.
+*/
+static void test_cone_and_estimate(void **state)
+{
+    (void)state;
+    const double kc[3] = { 1, 1.5, 3 };
+    for (int i = 0; i < 3; i++) {
+        double s = 0, dr = 1e-5;
+        for (double d = dr / 2; d < 1; d += dr)
+            s += (1 - d / kc[i]) * 2 * M_PI * d * dr;
+        assert_near(s / (M_PI * (1 - 2 / (3 * kc[i]))), 1.0, 1e-6);
+    }
+    enum { SIDE = 400, N = SIDE * SIDE };
+    static struct pstore_raw raw[N];
+    rng r;
+    rng_seed(&r, 3, 0, 0);
+    double area = 100.0; /* [-5,5]^2 */
+    for (int pass = 0; pass < 3; pass++) {
+        vec3 dir = pass == 0 ? v3(0, 1, 0)
+                             : v3(sin(M_PI / 3), cos(M_PI / 3), 0);
+        for (int i = 0; i < N; i++) {
+            /* jittered grid, golden-ratio wavelengths as the shooter */
+            double x = -5 + 10.0 * ((i % SIDE) + rng_uniform(&r)) / SIDE;
+            double z = -5 + 10.0 * ((i / SIDE) + rng_uniform(&r)) / SIDE;
+            double u = 0.3 + 0.6180339887498949 * i;
+            raw[i].p[0] = (float)x;
+            raw[i].p[1] = 0;
+            raw[i].p[2] = (float)z;
+            raw[i].power = (float)(area / N);
+            raw[i].lambda = (float)spec_sample_uniform(u - floor(u));
+            raw[i].dir[0] = (float)dir.x;
+            raw[i].dir[1] = (float)dir.y;
+            raw[i].dir[2] = (float)dir.z;
+        }
+        struct photon_map *m = map_from_raw(raw, N, 100, 0.5);
+        double sum[3] = { 0, 0, 0 }, rgb[3];
+        for (int q = 0; q < 200; q++) {
+            vec3 p = v3(rng_uniform(&r) * 8 - 4, 0, rng_uniform(&r) * 8 - 4);
+            if (pass < 2) {
+                shade_white(m, p, v3(0, 1, 0), rgb);
+            } else {
+                iris_finish fin;
+                memset(&fin, 0, sizeof fin);
+                fin.diffuse = 1;
+                fin.brilliance = 2;
+                struct photon_shade_input in = {
+                    p, v3(0, 1, 0), v3(0, 1, 0), v3(0, -1, 0), { 1, 1, 1 },
+                    1.0, &fin, NULL
+                };
+                photon_map_shade(m, &in, rgb);
+            }
+            for (int c = 0; c < 3; c++)
+                sum[c] += rgb[c] / 200;
+        }
+        double expect = pass < 2 ? 1.0 : 0.5;
+        for (int c = 0; c < 3; c++)
+            assert_near(sum[c], expect, 0.01 * expect);
+    }
+}
+
+/* ------------------------------------------------------------------ */
+
+static struct tw_scene tw;
+
+static struct photon_map *build(struct tw_scene *t, int threads)
+{
+    struct pmap_world w = tw_world(t);
+    struct photon_options o = { threads, 12345, 0, 0 };
+    struct photon_map *m = NULL;
+    struct photon_stats st;
+    assert_int_equal(pmap_build(&t->scene, &w, &o, &m, &st), IRIS_OK);
+    assert_non_null(m);
+    assert_true(st.stored > 0);
+    return m;
+}
+
+/* Mean photon light over a grid of n x n points in [lo,hi]^2 on y = 0. */
+static void floor_mean(const struct photon_map *m, double lo, double hi,
+                       int n, double out[3])
+{
+    out[0] = out[1] = out[2] = 0;
+    for (int i = 0; i < n; i++)
+        for (int j = 0; j < n; j++) {
+            double rgb[3];
+            vec3 p = v3(lo + (hi - lo) * (i + 0.5) / n, 0,
+                        lo + (hi - lo) * (j + 0.5) / n);
+            shade_white(m, p, v3(0, 1, 0), rgb);
+            for (int c = 0; c < 3; c++)
+                out[c] += rgb[c] / (n * n);
+        }
+}
+
+/*
+** Flux conservation: a parallel white light straight down through a clear
+** slab (ior 1.5) onto a white floor. Transmitted irradiance at normal
+** incidence: T^2·(1 + R^2) with R = ((n-1)/(n+1))^2 = 0.04 (the second
+** term: one internal round trip, allowed by max_trace_level 5), 0.92307.
+** Tolerance 2%. A single estimate (100 photons, each of one wavelength)
+** has ~10% colour noise; 48 x 48 points closer than the gather diameter
+** use every photon of the region, and their mean is within 0.5%.
+*/
+static void test_slab_flux(void **state)
+{
+    (void)state;
+    tw_init(&tw, 0.01, 100);
+    tw_light(&tw, v3(0, 10, 0), v3(0, 0, 0), true);
+    iris_object *slab = tw_box(&tw, v3(-2, 1, -2), v3(2, 1.5, 2), CLEAR, 0,
+                               1.5);
+    slab->photon_target = true;
+    slab->photon_collect = false;
+    tw_plane(&tw, v3(0, 1, 0), 0, WHITE, 1);
+    struct photon_map *m = build(&tw, 2);
+    double R = fresnel_ref(1, 1.5, 1), T = 1 - R;
+    double expect = T * T * (1 + R * R);
+    assert_near(R, 0.04, 1e-12);
+    double rgb[3];
+    floor_mean(m, -1.5, 1.5, 48, rgb);
+    for (int c = 0; c < 3; c++)
+        assert_near(rgb[c], expect, 0.02 * expect);
+    /* outside the slab's shadow the floor gets no caustic photons */
+    double out[3];
+    shade_white(m, v3(3.5, 0, 0), v3(0, 1, 0), out);
+    assert_near(out[1], 0.0, 1e-12);
+
+    /* Same map for any thread count: compare the stored records */
+    struct photon_map *m1 = build(&tw, 1);
+    assert_int_equal(m1->store.n, m->store.n);
+    assert_memory_equal(m1->store.ph, m->store.ph,
+                        m->store.n * sizeof(struct pstore_photon));
+    photon_map_destroy(m1);
+    photon_map_destroy(m);
+}
+
+/* ------------------------------------------------------------------ */
+
+/*
+** Semi-analytic caustic of a glass ball: a dense fan of rays (impact
+** parameter b in (0, R), each standing for its annulus 2·pi·b·db of the
+** unit-irradiance beam) traced in the meridional plane with exact Fresnel
+** splitting (both branches, weights F and 1-F, to the same trace level as
+** the photons), histogrammed by radius on the floor.
+*/
+struct fan {
+    double yc, rad, n;
+    int max_level;
+    double edges[64];
+    double energy[64];
+    int n_bins;
+};
+
+static void fan_trace(struct fan *f, double ox, double oy, double dx,
+                      double dy, double w, int level, bool inside)
+{
+    if (w < 1e-7 || level > f->max_level)
+        return;
+    /* sphere */
+    double px = ox, py = oy - f->yc;
+    double b = px * dx + py * dy, c = px * px + py * py - f->rad * f->rad;
+    double disc = b * b - c, t = INFINITY;
+    if (disc >= 0) {
+        double s = sqrt(disc);
+        t = -b - s > 1e-9 ? -b - s : (-b + s > 1e-9 ? -b + s : INFINITY);
+    }
+    double tf = dy < 0 ? -oy / dy : INFINITY;
+    if (!inside && tf < t) {
+        if (level > 1) { /* floor: deposit */
+            double x = fabs(ox + tf * dx);
+            for (int i = 0; i < f->n_bins; i++)
+                if (x >= f->edges[i] && x < f->edges[i + 1])
+                    f->energy[i] += w;
+        }
+        return;
+    }
+    if (!isfinite(t))
+        return;
+    double hx = ox + t * dx, hy = oy + t * dy;
+    double nx = hx / f->rad, ny = (hy - f->yc) / f->rad;
+    if (inside)
+        nx = -nx, ny = -ny;
+    double ci = -(dx * nx + dy * ny);
+    double n1 = inside ? f->n : 1, n2 = inside ? 1 : f->n;
+    double F = fresnel_ref(n1, n2, ci);
+    /* reflected */
+    fan_trace(f, hx, hy, dx + 2 * ci * nx, dy + 2 * ci * ny, w * F,
+              level + 1, inside);
+    if (F < 1) {
+        double eta = n1 / n2, ct = sqrt(1 - eta * eta * (1 - ci * ci));
+        fan_trace(f, hx, hy, eta * dx + (eta * ci - ct) * nx,
+                  eta * dy + (eta * ci - ct) * ny, w * (1 - F), level + 1,
+                  !inside);
+    }
+}
+
+static void test_ball_caustic(void **state)
+{
+    (void)state;
+    const double yc = 2.5, rad = 1, n = 1.5;
+    tw_init(&tw, 0.004, 100);
+    tw.scene.settings.photons.max_trace_level = 6;
+    tw_light(&tw, v3(0, 10, 0), v3(0, 0, 0), true);
+    iris_object *ball = tw_sphere(&tw, v3(0, yc, 0), rad, CLEAR, 0, n);
+    ball->photon_target = true;
+    ball->photon_collect = false;
+    tw_plane(&tw, v3(0, 1, 0), 0, WHITE, 1);
+    struct photon_map *m = build(&tw, 2);
+
+    static struct fan f;
+    memset(&f, 0, sizeof f);
+    f.yc = yc;
+    f.rad = rad;
+    f.n = n;
+    f.max_level = 6;
+    f.n_bins = 8;
+    for (int i = 0; i <= f.n_bins; i++)
+        f.edges[i] = 0.05 + 0.05 * i; /* 0.05 .. 0.45 */
+    int nb = 400000;
+    for (int i = 0; i < nb; i++) {
+        double b = rad * (i + 0.5) / nb, db = rad / nb;
+        fan_trace(&f, b, 10, 0, -1, 2 * M_PI * b * db, 1, false);
+    }
+    for (int i = 0; i < f.n_bins; i++) {
+        double a = M_PI * (f.edges[i + 1] * f.edges[i + 1] -
+                           f.edges[i] * f.edges[i]);
+        double expect = f.energy[i] / a;
+        /* photon estimate averaged over the annulus (area-weighted) */
+        double sum = 0, wsum = 0;
+        for (int ri = 0; ri < 6; ri++) {
+            double rr = f.edges[i] + (f.edges[i + 1] - f.edges[i]) *
+                                         (ri + 0.5) / 6;
+            for (int k = 0; k < 128; k++) {
+                double ang = 2 * M_PI * (k + 0.5) / 128, rgb[3];
+                shade_white(m, v3(rr * cos(ang), 0, rr * sin(ang)),
+                            v3(0, 1, 0), rgb);
+                sum += rgb[1] * rr;
+                wsum += rr;
+            }
+        }
+        assert_rel(sum / wsum, expect, 0.05);
+    }
+    photon_map_destroy(m);
+}
+
+/* ------------------------------------------------------------------ */
+
+/*
+** Prism: a wedge of N-SF11 whose top face is normal to a vertical parallel
+** beam and whose bottom face (apex angle 30 degrees) refracts it onto a
+** screen at y = -3. Snell's law gives each wavelength's exit direction;
+** the landing x is linear in the entry x0 (uniform over the wedge,
+** x0 in [-1, 0.866]), so the mean landing x of each wavelength band is
+** the landing point of x0 = mean. Tolerance 0.015: each band's mean
+** carries ~0.005 of sampling noise (photons of a band sample x0 on a
+** jittered grid), while neighbouring bands land 0.01-0.1 apart and the
+** spectrum spans 0.53.
+*/
+static double prism_land(double lambda, double x0, double alpha,
+                         const iris_interior *in)
+{
+    double n = ior_eval(in, lambda);
+    double sa = sin(alpha), ca = cos(alpha);
+    /* inside: direction (0,-1); the face's normal towards the photon is
+    ** (-sa, ca); T = eta·I + (eta·c - cos_t)·N into air */
+    double ci = ca, eta = n;
+    double ct = sqrt(1 - eta * eta * (1 - ci * ci));
+    double dx = (eta * ci - ct) * -sa;
+    double dy = -eta + (eta * ci - ct) * ca;
+    double yb = 0.5 + x0 * tan(alpha);
+    double t = (yb + 3) / -dy;
+    return x0 + t * dx;
+}
+
+static void test_prism(void **state)
+{
+    (void)state;
+    const double alpha = 30 * M_PI / 180;
+    tw_init(&tw, 0.006, 50);
+    tw.scene.settings.photons.max_trace_level = 3;
+    tw_light(&tw, v3(0, 10, 0), v3(0, 0, 0), true);
+    vec3 nrm[6] = { v3(0, 1, 0), v3(sin(alpha), -cos(alpha), 0), v3(1, 0, 0),
+                    v3(-1, 0, 0), v3(0, 0, 1), v3(0, 0, -1) };
+    double d[6] = { 1, -0.5 * cos(alpha), 1, 1, 1, 1 };
+    iris_object *prism = tw_convex(&tw, 6, nrm, d, CLEAR, 1.5);
+    prism->photon_target = true;
+    prism->photon_collect = false;
+    iris_ior_spec *spec = &tw.spec[0];
+    spec->model = IRIS_IOR_SELLMEIER;
+    spec->glass_name = "N-SF11";
+    prism->interior->spectral_ior = spec;
+    tw_plane(&tw, v3(0, 1, 0), -3, WHITE, 1);
+    struct photon_map *m = build(&tw, 2);
+
+    enum { BANDS = 20 };
+    double sx[BANDS] = { 0 }, sl[BANDS] = { 0 };
+    double cnt[BANDS] = { 0 }, sx0 = 0, n0 = 0;
+    for (size_t i = 0; i < m->store.n; i++) {
+        vec3 p = pstore_position(&m->store, i);
+        double l = pstore_lambda(&m->store, i);
+        assert_near(p.y, -3, 1e-5); /* only the screen collects */
+        int b = (int)((l - 380) / 20);
+        b = b < 0 ? 0 : b >= BANDS ? BANDS - 1 : b;
+        sx[b] += p.x;
+        sl[b] += l;
+        cnt[b]++;
+        sx0 += p.z;
+        n0++;
+    }
+    const double x0_mean = 0.5 * (-1 + 0.5 / tan(alpha));
+    for (int b = 0; b < BANDS; b++) {
+        assert_true(cnt[b] > 300);
+        double l = sl[b] / cnt[b];
+        double expect = prism_land(l, x0_mean, alpha, prism->interior);
+        assert_near(sx[b] / cnt[b], expect, 0.015);
+    }
+    /* the spectrum is really spread: 400 nm and 700 nm land > 0.3 apart */
+    assert_true(prism_land(700, 0, alpha, prism->interior) -
+                    prism_land(400, 0, alpha, prism->interior) > 0.3);
+    assert_near(sx0 / n0, 0.0, 0.02); /* symmetric in z */
+    photon_map_destroy(m);
+}
+
+/* ------------------------------------------------------------------ */
+
+/*
+** White light through a dispersive element recombines to white: a thick
+** N-SF11 slab under a parallel beam at 40 degrees splits each ray into a
+** fan of wavelengths that exits parallel; well inside the beam every
+** wavelength arrives everywhere and the floor stays white. Expected, per
+** channel: cos 40 (the floor is tilted to the beam) times the mean over
+** lambda of T(lambda)·w_c(lambda), T = (1-R)^2·(1+R^2) with the exact
+** Fresnel R at n(lambda) (one internal round trip fits max_trace_level
+** 5). r/g and b/g must match within 1% (that is, the recombined light is
+** white to 1%: the expected ratios are 1.005 and 0.991), the level within
+** 2%. Noise: ~150 000 photons in the 3 x 4 region, gathered by 72 x 96
+** points closer than the gather diameter: ~0.4% colour noise.
+*/
+static void test_dispersive_white(void **state)
+{
+    (void)state;
+    const double th = 40 * M_PI / 180;
+    tw_init(&tw, 0.007, 100);
+    tw_light(&tw, v3(10 * sin(th), 10 * cos(th) + 1.5, 0), v3(0, 1.5, 0),
+             true);
+    iris_object *slab = tw_box(&tw, v3(-3, 1, -3), v3(3, 2, 3), CLEAR, 0,
+                               1.5);
+    slab->photon_target = true;
+    slab->photon_collect = false;
+    iris_ior_spec *spec = &tw.spec[0];
+    spec->model = IRIS_IOR_SELLMEIER;
+    spec->glass_name = "N-SF11";
+    slab->interior->spectral_ior = spec;
+    tw_plane(&tw, v3(0, 1, 0), 0, WHITE, 1);
+    struct photon_map *m = build(&tw, 2);
+    /* the region x in [-2.5, 0.5], z in [-2, 2] is lit through the top
+    ** face well away from the slab's sides (offset +1.2 in x) */
+    double rgb[3] = { 0, 0, 0 };
+    for (int i = 0; i < 72; i++)
+        for (int j = 0; j < 96; j++) {
+            double c[3];
+            shade_white(m, v3(-2.5 + 3.0 * (i + .5) / 72, 0,
+                              -2 + 4.0 * (j + .5) / 96), v3(0, 1, 0), c);
+            for (int k = 0; k < 3; k++)
+                rgb[k] += c[k] / (72 * 96);
+        }
+    double e[3] = { 0, 0, 0 }, w[3];
+    for (double l = 380.05; l < 780; l += 0.1) {
+        double R = fresnel_ref(1, ior_eval(slab->interior, l), cos(th));
+        double T = (1 - R) * (1 - R) * (1 + R * R);
+        spec_lambda_rgb_weight(l, w);
+        for (int c = 0; c < 3; c++)
+            e[c] += T * w[c] * cos(th) / 4000;
+    }
+    assert_near(e[0] / e[1], 1.0, 0.01);
+    assert_near(e[2] / e[1], 1.0, 0.01);
+    assert_near(rgb[0] / rgb[1], e[0] / e[1], 0.01);
+    assert_near(rgb[2] / rgb[1], e[2] / e[1], 0.01);
+    assert_rel(rgb[1], e[1], 0.02);
+    photon_map_destroy(m);
+}
+
+/* ------------------------------------------------------------------ */
+
+/* No photons{} block, or no light asking for refraction/reflection: no
+** map. The shooting rule and the shadow rule of semantics §2.2b/§2.5. */
+static void test_rules(void **state)
+{
+    (void)state;
+    tw_init(&tw, 0.05, 100);
+    iris_light *l = tw_light(&tw, v3(0, 10, 0), v3(0, 0, 0), false);
+    iris_object *ball = tw_sphere(&tw, v3(0, 2, 0), 1, CLEAR, 0, 1.5);
+    ball->photon_target = true;
+    iris_object *floor = tw_plane(&tw, v3(0, 1, 0), 0, WHITE, 1);
+    struct pmap_world w = tw_world(&tw);
+    struct photon_options o = { 1, 1, 0, 0 };
+    struct photon_map *m = (struct photon_map *)1;
+    tw.scene.settings.photons.enabled = false;
+    assert_int_equal(pmap_build(&tw.scene, &w, &o, &m, NULL), IRIS_OK);
+    assert_null(m);
+    tw.scene.settings.photons.enabled = true;
+    l->photon_refraction = IRIS_UNSET;
+    assert_false(pmap_shoots(l, ball));
+    assert_int_equal(pmap_build(&tw.scene, &w, &o, &m, NULL), IRIS_OK);
+    assert_null(m);
+    ball->photon_refraction = IRIS_ON;
+    assert_true(pmap_shoots(l, ball));
+    l->photon_refraction = IRIS_OFF;
+    assert_false(pmap_shoots(l, ball)); /* OFF anywhere wins */
+    l->photon_reflection = IRIS_ON;
+    assert_true(pmap_shoots(l, ball));
+    l->shadowless = true;
+    assert_false(pmap_shoots(l, ball));
+    l->shadowless = false;
+    l->photon_refraction = IRIS_UNSET;
+    l->photon_reflection = IRIS_UNSET;
+    /* A point light: caustic under the ball, and its shadow rule */
+    m = build(&tw, 2);
+    assert_true(photon_blocks_shadow(m, ball, l, floor));
+    floor->photon_collect = false;
+    assert_false(photon_blocks_shadow(m, ball, l, floor));
+    floor->photon_collect = true;
+    assert_false(photon_blocks_shadow(m, floor, l, ball)); /* not a target */
+    assert_false(photon_blocks_shadow(NULL, ball, l, floor));
+    /* Point light through a ball focuses: brighter than the direct
+    ** light (1) at the centre of the caustic */
+    double rgb[3];
+    shade_white(m, v3(0, 0, 0), v3(0, 1, 0), rgb);
+    assert_true(rgb[1] > 1.5);
+    photon_map_destroy(m);
+    photon_map_destroy(NULL);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_knn_brute_force),
+        cmocka_unit_test(test_cone_and_estimate),
+        cmocka_unit_test(test_slab_flux),
+        cmocka_unit_test(test_ball_caustic),
+        cmocka_unit_test(test_prism),
+        cmocka_unit_test(test_dispersive_white),
+        cmocka_unit_test(test_rules),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
