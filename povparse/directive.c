@@ -36,7 +36,9 @@ static void ident(pp_state *ps, const char *what)
 /* Parses '(' float ')' as the condition of #if/#while/#case. */
 static double cond_value(pp_state *ps)
 {
-    return pp_full_float(ps);
+    /* POV-Ray reads a float here: '#if (A < B)' compares inside the
+    ** parentheses, and a '<' after them starts a vector */
+    return pp_float(ps);
 }
 
 /* Assigns 'v' to array element [..] of 'arr'; reads the indices. */
@@ -84,7 +86,14 @@ static void do_declare(pp_state *ps, bool local)
         slot = array_slot(ps, s->val.u.arr);
     }
     pp_expect(ps, T_EQUALS, "'='");
+    /* #local writes to the table current at the '#local' (POV-Ray's
+    ** old_table_index): a macro called by the value may still be open
+    ** when the value is complete */
+    int scope = ps->n_scopes - 1;
     pp_value v = pp_rvalue(ps);
+    pp_next_is_directive(ps); /* returns from macros that just ended */
+    if (scope > ps->n_scopes - 1)
+        scope = ps->n_scopes - 1;
     if (slot) {
         if (slot->kind != V_NONE && slot->kind != v.kind &&
             !((slot->kind == V_FLOAT || slot->kind == V_VECTOR ||
@@ -95,7 +104,7 @@ static void do_declare(pp_state *ps, bool local)
         *slot = v;
     } else {
         if (local) {
-            target = sym_define(ps, ps->n_scopes - 1, text, name.len);
+            target = sym_define(ps, scope, text, name.len);
         } else {
             /* #declare writes where the name already lives (this is how a
             ** macro's by-reference parameters return values), else in the
@@ -318,10 +327,14 @@ void pp_call_macro(pp_state *ps, const pp_macro *m, const pp_token *call)
             if (ps->tok.kind == T_RPAREN)
                 break;
             if (ps->tok.kind != T_COMMA) {
-                char buf[80];
-                pp_error(ps, &ps->tok, "expected ',' or ')' in the call of "
-                         "macro '%s', found %s", m->name,
-                         pp_tok_name(ps, &ps->tok, buf, sizeof buf));
+                if (ps->tok.kind == T_EOF || ps->tok.kind == T_RBRACE ||
+                    ps->tok.kind == T_SEMI) {
+                    char buf[80];
+                    pp_error(ps, &ps->tok, "expected ',' or ')' in the call "
+                             "of macro '%s', found %s", m->name,
+                             pp_tok_name(ps, &ps->tok, buf, sizeof buf));
+                }
+                pp_unget(ps); /* POV-Ray's commas are optional */
             }
         }
     }
@@ -549,11 +562,13 @@ static void do_write(pp_state *ps)
 {
     pp_expect(ps, T_LPAREN, "'('");
     pp_fileh *fh = file_ident(ps);
-    while (pp_accept(ps, T_COMMA)) {
+    for (;;) {
+        pp_accept(ps, T_COMMA); /* optional */
+        if (pp_accept(ps, T_RPAREN))
+            return;
         pp_value v = pp_expr(ps);
         write_value(fh->write ? fh->fp : NULL, &v);
     }
-    pp_expect(ps, T_RPAREN, "')'");
 }
 
 /* #debug / #warning / #error / #render / #statistics "text" */
@@ -698,6 +713,17 @@ void pp_directive(pp_state *ps, const pp_token *hash)
     case T_MACRO: do_macro(ps, &at); return;
     case T_INCLUDE: {
         const char *name = pp_string(ps);
+        /* Tokens read ahead after the name belong after the #include:
+        ** read them again once the included file is done. */
+        pp_frame *fr = &ps->frames[ps->n_frames - 1];
+        if (ps->n_unget > 0 && ps->unget[0].file == fr->file) {
+            uint32_t pos = ps->unget[0].off;
+            for (int i = 1; i < ps->n_unget; i++)
+                if (ps->unget[i].off < pos)
+                    pos = ps->unget[i].off;
+            fr->pos = pos;
+            ps->n_unget = 0;
+        }
         pp_open_file(ps, name, true, &at);
         return;
     }

@@ -92,7 +92,9 @@ static int peek_op(pp_state *ps)
 {
     if (pp_next_is_directive(ps))
         return T_EOF;
+    ps->no_expand++;
     pp_next(ps);
+    ps->no_expand--;
     int k = ps->tok.kind;
     pp_unget(ps);
     return k;
@@ -329,6 +331,10 @@ static pp_value colour_body(pp_state *ps)
         bool srgb = false;
         switch (k) {
         case T_COLOR:
+            if (started) {
+                pp_unget(ps);
+                return c;
+            }
             break;
         case T_RED: c.v[0] = pp_float(ps); started = true; break;
         case T_GREEN: c.v[1] = pp_float(ps); started = true; break;
@@ -438,7 +444,7 @@ bool pp_starts_expr(pp_state *ps)
 }
 
 /* Reads the indices of an array reference; the '[' is next. */
-static pp_value array_elem(pp_state *ps, const pp_token *at, pp_array *arr)
+pp_value pp_array_element(pp_state *ps, const pp_token *at, pp_array *arr)
 {
     long idx = 0;
     for (int d = 0; d < arr->ndim; d++) {
@@ -540,7 +546,7 @@ static pp_value factor(pp_state *ps)
                 pp_error(ps, &at, "array '%.*s' used without an index",
                          (int)at.len, pp_tok_text(ps, &at));
             pp_unget(ps);
-            return array_elem(ps, &at, v.u.arr);
+            return pp_array_element(ps, &at, v.u.arr);
         case V_FUNCTION:
             return call_fn(ps, v.u.fn);
         case V_SPLINE: {
@@ -1020,11 +1026,21 @@ static pp_value expr_cmp(pp_state *ps)
     for (;;) {
         int op = peek_op(ps);
         if (op != T_LT && op != T_LE && op != T_EQUALS && op != T_NE &&
-            op != T_GE && !(op == T_GT && !ps->in_vector))
+            op != T_GE && op != T_GT)
+            return a;
+        if ((op == T_LT || op == T_GT) && ps->in_vector)
             return a;
         pp_next(ps);
         pp_token at = ps->tok;
         pp_value b = expr_add(ps);
+        if (a.kind == V_STRING && b.kind == V_STRING) {
+            /* POV-Ray compares strings as strcmp does */
+            int c = strcmp(a.u.str, b.u.str);
+            a = fval(op == T_LT ? c < 0 : op == T_LE ? c <= 0 :
+                     op == T_EQUALS ? c == 0 : op == T_NE ? c != 0 :
+                     op == T_GE ? c >= 0 : c > 0);
+            continue;
+        }
         need_numeric(ps, &at, &a);
         need_numeric(ps, &at, &b);
         double x = a.v[0], y = b.v[0];
@@ -1204,4 +1220,17 @@ double pp_full_float(pp_state *ps)
     pp_value v = expr_cond(ps);
     need_numeric(ps, &at, &v);
     return v.v[0];
+}
+
+pp_value pp_string_rvalue(pp_state *ps)
+{
+    /* No look-ahead after a string: 'S = "a"' then a macro call on the
+    ** next line must not run before S is assigned (POV-Ray's strings
+    ** have no operators). */
+    return factor(ps);
+}
+
+pp_value pp_factor_value(pp_state *ps)
+{
+    return postfix(ps);
 }

@@ -160,7 +160,21 @@ static void cfactor(fnc *c)
     case T_TAU: emit(c, IRIS_FN_CONST, 0, 0, 2 * M_PI, 1); return;
     case T_TRUE: case T_YES: case T_ON: emit(c, IRIS_FN_CONST, 0, 0, 1, 1); return;
     case T_FALSE: case T_NO: case T_OFF: emit(c, IRIS_FN_CONST, 0, 0, 0, 1); return;
-    case T_CLOCK: emit(c, IRIS_FN_CONST, 0, 0, ps->opt.clock, 1); return;
+    case T_CLOCK: case T_CLOCK_DELTA: case T_CLOCK_ON: case T_FRAME_NUMBER:
+    case T_INITIAL_FRAME: case T_FINAL_FRAME: case T_INITIAL_CLOCK:
+    case T_FINAL_CLOCK: case T_IMAGE_WIDTH: case T_IMAGE_HEIGHT:
+    case T_VERSION: {
+        /* constants of the parse, as in any expression */
+        double v = k == T_CLOCK ? ps->opt.clock :
+                   k == T_FRAME_NUMBER || k == T_INITIAL_FRAME ||
+                   k == T_FINAL_FRAME ? ps->opt.frame_number :
+                   k == T_FINAL_CLOCK ? 1 :
+                   k == T_IMAGE_WIDTH ? ps->opt.image_width :
+                   k == T_IMAGE_HEIGHT ? ps->opt.image_height :
+                   k == T_VERSION ? ps->version : 0;
+        emit(c, IRIS_FN_CONST, 0, 0, v, 1);
+        return;
+    }
     case T_LPAREN:
         cexpr(c);
         pp_expect(ps, T_RPAREN, "')'");
@@ -188,13 +202,21 @@ static void cfactor(fnc *c)
             int n = args(c);
             emit(c, IRIS_FN_CALL, 0, n, 0, 1 - n);
             c->code[c->n - 1].callee = v.u.fn;
+            /* F(x,y,z).gray and friends of colour functions: the
+            ** evaluator returns the first result only */
+            if (!pp_next_is_directive(ps) && pp_accept(ps, T_DOT)) {
+                pp_next(ps);
+                if (v.u.fn->n_results == 1)
+                    pp_warn_once(ps, &ps->tok, T_DOT, "'.' after a float "
+                                 "function call");
+            }
             return;
         }
         if (v.kind == V_FLOAT || v.kind == V_VECTOR || v.kind == V_COLOUR ||
             v.kind == V_ARRAY) {
             /* a captured value; vectors need .x etc. */
             pp_unget(ps);
-            pp_value e = pp_expr(ps);
+            pp_value e = pp_factor_value(ps);
             if (e.kind != V_FLOAT)
                 pp_error(ps, &at, "a function body needs float values, "
                          "'%.*s' is a vector (use .x, .y, .z)", (int)at.len,

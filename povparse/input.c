@@ -219,10 +219,32 @@ void pp_raw(pp_state *ps, pp_token *t)
     }
 }
 
+/* True when the next raw tokens are the #end that closes the macro being
+** read: running it only returns to the caller, which is always safe. */
+static bool at_macro_end(pp_state *ps)
+{
+    pp_frame *fr = &ps->frames[ps->n_frames - 1];
+    if (fr->kind != FR_MACRO || ps->n_conds != fr->cond_base + 1 ||
+        ps->conds[ps->n_conds - 1].kind != C_MACRO)
+        return false;
+    pp_token t;
+    uint32_t p = lex_scan(ps, fr->file, fr->pos, &t);
+    if (t.kind != T_HASH)
+        return false;
+    lex_scan(ps, fr->file, p, &t);
+    return t.kind == T_END;
+}
+
 bool pp_next_is_directive(pp_state *ps)
 {
     if (ps->n_unget > 0)
         return ps->unget[ps->n_unget - 1].kind == T_HASH;
+    /* A macro's closing #end does not end the expression being read:
+    ** 'M(1) * 2' goes on after the body of M. */
+    while (at_macro_end(ps)) {
+        ps->n_conds--;
+        pp_pop_frame(ps);
+    }
     for (int i = ps->n_frames - 1; i >= 0; i--) {
         pp_frame *fr = &ps->frames[i];
         pp_token t;
@@ -308,6 +330,13 @@ void pp_next(pp_state *ps)
     for (;;) {
         if (ps->n_unget > 0) {
             ps->tok = ps->unget[--ps->n_unget];
+            /* a macro name read by a look-ahead runs when it is used */
+            if (ps->tok.kind == T_IDENT && ps->tok.val.kind == V_MACRO &&
+                ps->no_expand == 0) {
+                pp_token call = ps->tok;
+                pp_call_macro(ps, call.val.u.macro, &call);
+                continue;
+            }
             return;
         }
         pp_raw(ps, &ps->tok);
@@ -326,6 +355,24 @@ void pp_next(pp_state *ps)
             return;
         }
         ps->tok.val = s->val;
+        if (s->val.kind == V_ARRAY && ps->no_expand == 0 &&
+            !pp_next_is_directive(ps)) {
+            /* A[i][j] stands for the element wherever it appears */
+            pp_token id = ps->tok;
+            pp_token nt;
+            pp_frame *fr = &ps->frames[ps->n_frames - 1];
+            lex_scan(ps, fr->file, fr->pos, &nt);
+            if (nt.kind == T_LBRACKET) {
+                pp_value v = pp_array_element(ps, &id, s->val.u.arr);
+                uint32_t end = ps->tok.off + ps->tok.len;
+                ps->tok = id;
+                ps->tok.val = v;
+                ps->tok.sym = NULL;
+                if (ps->tok.file == id.file && end > id.off)
+                    ps->tok.len = end - id.off;
+            }
+            return;
+        }
         if (s->val.kind == V_MACRO && ps->no_expand == 0) {
             pp_token call = ps->tok;
             pp_call_macro(ps, s->val.u.macro, &call);
@@ -337,7 +384,15 @@ void pp_next(pp_state *ps)
 
 bool pp_accept(pp_state *ps, int kind)
 {
+    /* Looking ahead must not run a directive before the current
+    ** statement is complete ('#declare A = array[2]' then '#declare
+    ** A[0] = 1'): a directive is never the optional token. */
+    if (pp_next_is_directive(ps))
+        return false;
+    /* and must not call a macro that is only looked at */
+    ps->no_expand++;
     pp_next(ps);
+    ps->no_expand--;
     if (ps->tok.kind == kind)
         return true;
     pp_unget(ps);

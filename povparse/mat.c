@@ -341,7 +341,7 @@ static bool pattern_kind(pp_state *ps, iris_pattern *p)
     case T_JULIA:
         p->kind = IRIS_PAT_JULIA;
         p->complex_c = pp_vector2(ps);
-        pp_expect(ps, T_COMMA, "','");
+        pp_accept(ps, T_COMMA);
         p->iterations = (int)pp_float(ps);
         break;
     case T_LEOPARD: p->kind = IRIS_PAT_LEOPARD; break;
@@ -416,7 +416,7 @@ static bool pattern_kind(pp_state *ps, iris_pattern *p)
             if (!p->object)
                 pp_error(ps, &ps->tok, "expected an object");
         }
-        pp_expect(ps, T_RBRACE, "'}'");
+        /* the list items and the '}' follow (see close_object_pattern) */
         break;
     }
     case T_PIGMENT_PATTERN: {
@@ -433,6 +433,13 @@ static bool pattern_kind(pp_state *ps, iris_pattern *p)
         return false;
     }
     return true;
+}
+
+/* object { OBJ item, item }: the items sit inside the braces. */
+static void close_object_pattern(pp_state *ps, const iris_pattern *p)
+{
+    if (p->kind == IRIS_PAT_OBJECT)
+        pp_expect(ps, T_RBRACE, "'}' to close the object pattern");
 }
 
 /* Pattern modifiers common to pigments, normals and textures. */
@@ -567,7 +574,12 @@ pp_map *pp_map_block(pp_state *ps, int kind)
             pp_error(ps, &at, "a map has at most 256 entries");
         iris_map_entry *en = &e[m->n];
         memset(en, 0, sizeof *en);
-        en->value = pp_float(ps);
+        /* average's pigment_map may leave out the weight (1) */
+        pp_next(ps);
+        bool has_value = pp_starts_expr(ps) && !(ps->tok.kind == T_IDENT &&
+                                                  !(ps->tok.val.kind == V_FLOAT));
+        pp_unget(ps);
+        en->value = has_value || kind == V_COLOUR_MAP ? pp_float(ps) : 1.0;
         switch (kind) {
         case V_COLOUR_MAP: {
             /* [v color C] or the old [v1, v2 color C1 color C2]; the comma
@@ -861,6 +873,7 @@ static iris_pigment *pigment_body(pp_state *ps, const iris_pigment *base,
                           p->pattern.kind == IRIS_PAT_SQUARE ? 4 :
                           p->pattern.kind == IRIS_PAT_TRIANGULAR ? 6 : 2;
                 pigment_list(ps, p, max);
+                close_object_pattern(ps, &p->pattern);
             }
             continue;
         }
@@ -980,6 +993,7 @@ static iris_normal *normal_body(pp_state *ps, const iris_normal *base,
                     e[cnt].value = cnt;
                     cnt++;
                 }
+                close_object_pattern(ps, &np);
                 if (cnt) {
                     n->n_entries = cnt;
                     n->entries = e;
@@ -1317,6 +1331,7 @@ static iris_texture *texture_body(pp_state *ps, int end)
                 }
                 t->n_entries = cnt;
                 t->entries = e;
+                close_object_pattern(ps, &np);
             }
             continue;
         }

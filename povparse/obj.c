@@ -624,8 +624,9 @@ static void mesh2(pp_state *ps, iris_object *o)
                     bool more = ps->tok.kind == T_COMMA;
                     if (more) {
                         pp_next(ps);
-                        more = ps->tok.kind != T_LT &&
-                               ps->tok.kind != T_RBRACE && pp_starts_expr(ps);
+                        more = ps->tok.kind == T_NUMBER ||
+                               (ps->tok.kind == T_IDENT &&
+                                ps->tok.val.kind == V_FLOAT);
                     }
                     pp_unget(ps);
                     if (more) {
@@ -634,9 +635,9 @@ static void mesh2(pp_state *ps, iris_object *o)
                             m->tri_texture[i] = t < m->n_textures ? t : 0;
                         if (pp_accept(ps, T_COMMA)) {
                             pp_next(ps);
-                            bool three = ps->tok.kind != T_LT &&
-                                         ps->tok.kind != T_RBRACE &&
-                                         pp_starts_expr(ps);
+                            bool three = ps->tok.kind == T_NUMBER ||
+                                         (ps->tok.kind == T_IDENT &&
+                                          ps->tok.val.kind == V_FLOAT);
                             pp_unget(ps);
                             if (three) {
                                 pp_float(ps);
@@ -1119,10 +1120,22 @@ static void shape_body(pp_state *ps, iris_object *o, int kw, const pp_token *at)
     }
     case T_TEXT: {
         pp_next(ps);
-        if (ps->tok.kind != T_TTF)
-            pp_unget(ps);
-        o->u.text.font = pp_string(ps);
-        o->u.text.string = pp_string(ps);
+        if (ps->tok.kind == T_INTERNAL) {
+            double k = pp_float(ps);
+            char buf[32];
+            snprintf(buf, sizeof buf, "internal %d", (int)k);
+            o->u.text.font = pp_strdup(ps, buf, strlen(buf));
+        } else {
+            if (ps->tok.kind != T_TTF)
+                pp_unget(ps);
+            const char *font = pp_string(ps);
+            o->u.text.font = pp_strdup(ps, font, strlen(font));
+        }
+        pp_accept(ps, T_COMMA);
+        {
+            const char *str = pp_string(ps);
+            o->u.text.string = pp_strdup(ps, str, strlen(str));
+        }
         pp_accept(ps, T_COMMA);
         o->u.text.thickness = pp_float(ps);
         pp_accept(ps, T_COMMA);
@@ -1221,8 +1234,7 @@ static void shape_body(pp_state *ps, iris_object *o, int kw, const pp_token *at)
         }
         pp_unget(ps);
         for (int i = 0; i < 16; i++) {
-            if (i)
-                pp_accept(ps, T_COMMA);
+            pp_accept(ps, T_COMMA);
             o->u.bicubic.points[i] = pp_vector(ps);
         }
         break;

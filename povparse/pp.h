@@ -365,6 +365,11 @@ double pp_srgb_decode(double c);
 /* True when the current token can start a float/vector expression. */
 bool pp_starts_expr(pp_state *ps);
 iris_colour pp_value_colour(const pp_value *v);
+/* The element A[i]...: the indices follow. */
+pp_value pp_array_element(pp_state *ps, const pp_token *at, pp_array *arr);
+pp_value pp_string_rvalue(pp_state *ps);
+/* One factor with its .x/.red suffixes, no operators after it. */
+pp_value pp_factor_value(pp_state *ps);
 
 /* ---- fnc.c: function { } compiler --------------------------------- */
 iris_fn *pp_function(pp_state *ps);   /* after 'function' */

@@ -21,11 +21,16 @@ static void array_init(pp_state *ps, pp_array *arr, int d, long base)
         stride *= arr->dims[k];
     for (int i = 0; i < arr->dims[d]; i++) {
         if (i > 0)
-            pp_expect(ps, T_COMMA, "','");
+            pp_accept(ps, T_COMMA); /* optional, as in POV-Ray */
         if (d + 1 < arr->ndim) {
             array_init(ps, arr, d + 1, base + i * stride);
         } else {
+            /* elements may be written without commas: a '<' after an
+            ** element starts the next one, it is no comparison */
+            bool iv = ps->in_vector;
+            ps->in_vector = true;
             pp_value v = pp_rvalue(ps);
+            ps->in_vector = iv;
             arr->items[base + i] = v;
         }
     }
@@ -190,12 +195,17 @@ pp_value pp_rvalue(pp_state *ps)
             pp_next(ps);
             int nk = ps->tok.kind;
             pp_unget(ps);
+            ps->tok = at;
             if (nk == T_LPAREN || nk == T_LBRACKET)
                 callable = false; /* a call or an element: an expression */
             else
                 return at.val;
         } else if (callable) {
             return at.val;
+        }
+        if (k == V_STRING) {
+            pp_unget(ps);
+            return pp_string_rvalue(ps);
         }
         if (!callable && k != V_FLOAT && k != V_VECTOR && k != V_COLOUR &&
             k != V_STRING && k != V_FUNCTION && k != V_SPLINE &&
@@ -205,6 +215,10 @@ pp_value pp_rvalue(pp_state *ps)
         }
         break;
     }
+    case T_STRING: case T_STR: case T_CONCAT: case T_CHR: case T_SUBSTR:
+    case T_STRUPR: case T_STRLWR: case T_VSTR: case T_DATETIME:
+        pp_unget(ps);
+        return pp_string_rvalue(ps);
     default:
         break;
     }

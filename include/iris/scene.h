@@ -303,6 +303,14 @@ typedef struct iris_mesh_data {
 enum iris_spline { IRIS_SPLINE_LINEAR = 0, IRIS_SPLINE_QUADRATIC,
                    IRIS_SPLINE_CUBIC, IRIS_SPLINE_BEZIER };
 
+/* The iteration function of a julia_fractal (quaternion: sqr, cube). */
+enum iris_julia_fn { IRIS_JULIA_SQR = 0, IRIS_JULIA_CUBE, IRIS_JULIA_EXP,
+                     IRIS_JULIA_RECIPROCAL, IRIS_JULIA_SIN, IRIS_JULIA_ASIN,
+                     IRIS_JULIA_SINH, IRIS_JULIA_ASINH, IRIS_JULIA_COS,
+                     IRIS_JULIA_ACOS, IRIS_JULIA_COSH, IRIS_JULIA_ACOSH,
+                     IRIS_JULIA_TAN, IRIS_JULIA_ATAN, IRIS_JULIA_TANH,
+                     IRIS_JULIA_ATANH, IRIS_JULIA_LN, IRIS_JULIA_PWR };
+
 typedef struct iris_blob_component {
     int kind;                  /* 0 sphere, 1 cylinder */
     iris_vec3 a, b;            /* centre, or the cylinder's ends */
@@ -371,7 +379,9 @@ struct iris_object {
         struct { int order; int n_coeffs; double *coeffs; } poly;
                /* QUADRIC stored as order-2 POLY; POV-Ray's term order */
         struct { double data[16]; int type; int iterations;
-                 double precision; iris_vec3 slice; double distance; } julia;
+                 double precision; iris_vec3 slice; double distance;
+                 int fn; /* enum iris_julia_fn; data[0..3] = the
+                            parameter, data[5] = slice w */ } julia;
         struct { int type; double flatness; int u_steps, v_steps;
                  iris_vec3 points[16]; } bicubic;
         struct { iris_fn *fx, *fy, *fz; iris_vec2 uv_lo, uv_hi;

@@ -85,6 +85,7 @@ struct accel {
     int n_inf;
 
     int cap_user, cap_inf;
+    const iris_object *stack[MAX_DEPTH + 2]; /* the objects being built */
 
     bool has_bounds;
     vec3 lo, hi;
@@ -273,6 +274,13 @@ static struct anode *build(struct accel *a, FILE *log, const iris_object *o,
         warn(a, log, o, "CSG nested too deeply");
         return NULL;
     }
+    /* An object inside itself (a cycle) would recurse without end */
+    for (int i = 0; i < depth; i++)
+        if (a->stack[i] == o) {
+            warn(a, log, o, "it contains itself");
+            return NULL;
+        }
+    a->stack[depth] = o;
     bool ninv = inv != o->inverse;
     struct anode *n = new_node(a);
     if (!n)
@@ -301,7 +309,7 @@ static struct anode *build(struct accel *a, FILE *log, const iris_object *o,
             n->op = ninv ? AN_INTERSECTION : AN_UNION;
             break;
         }
-        int nk = o->u.csg.n_children;
+        int nk = o->u.csg.children ? o->u.csg.n_children : 0;
         n->kids = nk > 0 ? iris_calloc((size_t)nk, sizeof *n->kids) : NULL;
         if (nk > 0 && !n->kids) {
             a->oom = true;
@@ -769,7 +777,7 @@ static bool plain_inside(const iris_object *o, vec3 p, int depth)
         return false;
     bool in;
     if (is_csg(o->kind)) {
-        int nk = o->u.csg.n_children;
+        int nk = o->u.csg.children ? o->u.csg.n_children : 0;
         bool isect = o->kind == IRIS_OBJ_INTERSECTION ||
                      o->kind == IRIS_OBJ_DIFFERENCE;
         in = isect && nk > 0;

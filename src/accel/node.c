@@ -74,6 +74,10 @@ static void shape_hits(const struct anode *n, vec3 o, vec3 d, double tmin,
         h.uv = l.v[i].uv;
         h.leaf = n;
         h.texture = NULL;
+        /* A blob component's own texture, where it has one */
+        if (obj->kind == IRIS_OBJ_BLOB && l.v[i].part >= 0 &&
+            l.v[i].part < obj->u.blob.n_components)
+            h.texture = obj->u.blob.components[l.v[i].part].texture;
         ahit_push(out, &h);
     }
     isect_list_fini(&l);

@@ -104,7 +104,7 @@ void amesh_hits(const struct anode *n, vec3 o, vec3 d, double tmin,
 bool amesh_inside(const struct anode *n, vec3 p);
 /*
 ** Builds the triangles of mesh leaf 'n' (mesh, mesh2, triangle,
-** smooth_triangle, height_field) in world space. 'private_scene' also
+** smooth_triangle, height_field, bicubic_patch) in world space. 'private_scene' also
 ** builds an Embree scene of its own, needed for CSG and inside tests.
 ** Returns NULL on success, else the reason to report.
 */

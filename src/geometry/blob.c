@@ -192,16 +192,29 @@ static double comp_field(const iris_blob_component *bc, vec3 p, vec3 *g)
     return bc->strength * w * w;
 }
 
-/* Density and its gradient in blob space. */
-static double density_grad(const iris_object *o, vec3 p, vec3 *grad)
+/*
+** Density and its gradient in blob space; '*part' (when not NULL) gets
+** the component whose field is largest there (its texture is the one a
+** hit shows: POV-Ray blends the component textures by field, which a
+** single texture per hit can only approximate by the dominant one).
+*/
+static double density_grad(const iris_object *o, vec3 p, vec3 *grad,
+                           int *part)
 {
-    double f = 0;
+    double f = 0, best = 0;
     vec3 g = v3(0, 0, 0);
+    if (part)
+        *part = -1;
     for (int i = 0; i < o->u.blob.n_components; i++) {
         const iris_blob_component *bc = &o->u.blob.components[i];
         vec3 q = bc->has_transform ? xf_inv_point(&bc->transform, p) : p;
         vec3 gi;
-        f += comp_field(bc, q, &gi);
+        double fi = comp_field(bc, q, &gi);
+        f += fi;
+        if (part && fi > best) {
+            best = fi;
+            *part = i;
+        }
         if (bc->has_transform)
             gi = xf_normal(&bc->transform, gi);
         g = v3_add(g, gi);
@@ -213,7 +226,7 @@ static double density_grad(const iris_object *o, vec3 p, vec3 *grad)
 double geom_blob_density(const iris_object *o, vec3 p)
 {
     vec3 g;
-    return density_grad(o, p, &g);
+    return density_grad(o, p, &g, NULL);
 }
 
 static int cmp_double(const void *a, const void *b)
@@ -274,8 +287,12 @@ void geom_blob_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
                 if (!(t > t0 && t < t1))
                     continue;
                 vec3 g;
-                density_grad(o, v3_madd(ro, rd, t), &g);
+                int part;
+                density_grad(o, v3_madd(ro, rd, t), &g, &part);
+                int at = out->n;
                 isect_push(out, t, v3_neg(g), 0, 0);
+                if (out->n > at)
+                    out->v[at].part = part;
             }
         }
         iris_free(bp);

@@ -50,6 +50,7 @@ void isect_push(struct isect_list *l, double t, vec3 n, double u, double v)
     e->n = n;
     e->uv.u = isfinite(u) ? u : 0;
     e->uv.v = isfinite(v) ? v : 0;
+    e->part = -1;
 }
 
 bool geom_is_analytic(enum iris_object_kind kind)
@@ -60,7 +61,7 @@ bool geom_is_analytic(enum iris_object_kind kind)
     case IRIS_OBJ_DISC: case IRIS_OBJ_POLYGON: case IRIS_OBJ_PRISM:
     case IRIS_OBJ_LATHE: case IRIS_OBJ_SOR: case IRIS_OBJ_SUPERELLIPSOID:
     case IRIS_OBJ_BLOB: case IRIS_OBJ_TEXT: case IRIS_OBJ_ISOSURFACE:
-    case IRIS_OBJ_QUADRIC: case IRIS_OBJ_POLY:
+    case IRIS_OBJ_QUADRIC: case IRIS_OBJ_POLY: case IRIS_OBJ_JULIA_FRACTAL:
         return true;
     default:
         return false;
@@ -116,6 +117,9 @@ void geom_intersect(const iris_object *o, const struct geom_profile *prof,
     case IRIS_OBJ_ISOSURFACE:
         geom_isosurface_hits(o, ro, rd, t0, t1, out);
         break;
+    case IRIS_OBJ_JULIA_FRACTAL:
+        geom_julia_hits(o, ro, rd, t0, t1, out);
+        break;
     case IRIS_OBJ_LATHE:
     case IRIS_OBJ_SOR:
         if (prof)
@@ -170,6 +174,8 @@ bool geom_inside(const iris_object *o, const struct geom_profile *prof,
         return geom_blob_density(o, p) > o->u.blob.threshold;
     case IRIS_OBJ_ISOSURFACE:
         return geom_isosurface_inside(o, p);
+    case IRIS_OBJ_JULIA_FRACTAL:
+        return geom_julia_inside(o, p);
     case IRIS_OBJ_LATHE:
     case IRIS_OBJ_SOR:
         return prof && geom_lathe_inside(prof, p);
@@ -257,6 +263,12 @@ bool geom_bounds(const iris_object *o, const struct geom_profile *prof,
             *hi = v3_max(o->u.isosurface.lo, o->u.isosurface.hi);
         }
         return true;
+    case IRIS_OBJ_JULIA_FRACTAL: {
+        double r = geom_julia_radius(o);
+        *lo = v3(-r, -r, -r);
+        *hi = v3(r, r, r);
+        return r > 0;
+    }
     case IRIS_OBJ_LATHE:
     case IRIS_OBJ_SOR:
         if (!prof)
@@ -333,6 +345,11 @@ const char *geom_validate(const iris_object *o)
     case IRIS_OBJ_BLOB:
         if (o->u.blob.n_components < 1 || !o->u.blob.components)
             return "blob has no components";
+        return NULL;
+    case IRIS_OBJ_JULIA_FRACTAL:
+        if (!geom_julia_ok(o))
+            return "julia_fractal: only quaternion sqr and cube are "
+                   "supported, with a slice that is not parallel to w";
         return NULL;
     case IRIS_OBJ_ISOSURFACE:
         if (!o->u.isosurface.fn)

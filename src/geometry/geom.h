@@ -26,6 +26,7 @@ struct geom_isect {
     double t;        /* ray parameter: the same in object and world space */
     vec3 n;          /* outward normal in object space, any length > 0 */
     iris_vec2 uv;    /* surface uv where the shape defines one, else 0 */
+    int part;        /* blob: the component contributing most, else -1 */
 };
 
 /*
@@ -68,6 +69,7 @@ struct geom_profile {
     iris_vec2 lo, hi;          /* box of every segment */
     double h1, h2;             /* extrusion range (prism: y, text: z) */
     bool conic;                /* prism conic_sweep */
+    bool open;                 /* prism 'open': no caps */
 };
 
 /*
@@ -158,6 +160,13 @@ void geom_isosurface_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
                           double t1, struct isect_list *out);
 bool geom_isosurface_inside(const iris_object *o, vec3 p);
 
+
+/* julia_fractal (quaternion sqr and cube). */
+bool geom_julia_ok(const iris_object *o);
+bool geom_julia_inside(const iris_object *o, vec3 p);
+double geom_julia_radius(const iris_object *o);
+void geom_julia_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
+                     double t1, struct isect_list *out);
 
 /* Whether the box lo..hi is hit by o + t·d for some t in [t0, t1];
 ** narrows [t0, t1] to the part inside the box. */

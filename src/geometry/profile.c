@@ -436,6 +436,7 @@ struct geom_profile *geom_prepare(const iris_object *o, const char **why)
             p->h1 = fmin(o->u.prism.height1, o->u.prism.height2);
             p->h2 = fmax(o->u.prism.height1, o->u.prism.height2);
             p->conic = o->u.prism.sweep == 1;
+            p->open = o->open;
         }
         break;
     case IRIS_OBJ_TEXT:

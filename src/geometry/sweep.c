@@ -205,7 +205,8 @@ void geom_extrude_hits(const struct geom_profile *p, int axis, vec3 ro,
         if (!(ta <= tb))
             return;
     }
-    cap_hits(p, axis, ro, rd, t0, t1, out);
+    if (!p->open)
+        cap_hits(p, axis, ro, rd, t0, t1, out);
 
     for (int g = 0; g < p->n_groups; g++) {
         int f = p->group_first[g], end = f + p->group_count[g];

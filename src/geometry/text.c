@@ -25,8 +25,12 @@
 ** about 1/(8·64) of the arc's bulge, invisible at text sizes. */
 #define ARC_STEPS 8
 
-/* Where POV-Ray's own fonts live on Debian (povray-includes). */
-#define POV_FONT_DIR "/usr/share/povray-3.7/include/"
+/* Where POV-Ray's own fonts live (configure finds povray-includes). */
+#ifdef POVRAY_INCLUDE_DIR
+#define POV_FONT_DIR POVRAY_INCLUDE_DIR
+#else
+#define POV_FONT_DIR "/usr/share/povray-3.7/include"
+#endif
 
 struct outline_ctx {
     struct geom_profile *p;
@@ -134,7 +138,9 @@ static FT_Error open_face(FT_Library lib, const char *path, FT_Face *face)
     const char *base = strrchr(path, '/');
     base = base ? base + 1 : path;
     char buf[1024];
-    snprintf(buf, sizeof buf, "%s%s", POV_FONT_DIR, base);
+    if (!POV_FONT_DIR[0])
+        return e;
+    snprintf(buf, sizeof buf, "%s/%s", POV_FONT_DIR, base);
     return FT_New_Face(lib, buf, 0, face);
 }
 
@@ -161,29 +167,53 @@ struct geom_profile *geom_text_profile(const iris_object *o, const char **why)
     c.scale = face->units_per_EM > 0 ? 1.0 / face->units_per_EM : 1.0 / 2048;
     FT_Outline_Funcs fns = { move_to, line_to, conic_to, cubic_to, 0, 0 };
 
+    /* POV-Ray's layout (truetype.cpp): the first glyph is moved so that
+    ** its left edge is at x = 0 and the pen then advances by its advance
+    ** less its left side bearing; every later glyph sits at the pen plus
+    ** kerning, and the pen advances by advance plus kerning; 'offset' is
+    ** added after each glyph. */
     double x = 0, y = 0;
     FT_UInt prev = 0;
+    bool first = true;
     const unsigned char *s = (const unsigned char *)o->u.text.string;
     while (*s && c.ok) {
         unsigned long ch = utf8_next(&s);
         FT_UInt gi = FT_Get_Char_Index(face, ch);
-        if (prev && gi && FT_HAS_KERNING(face)) {
+        double kern = 0;
+        if (!first && prev && gi && FT_HAS_KERNING(face)) {
             FT_Vector k;
             if (!FT_Get_Kerning(face, prev, gi, FT_KERNING_UNSCALED, &k))
-                x += k.x * c.scale;
+                kern = k.x * c.scale;
         }
         if (FT_Load_Glyph(face, gi, FT_LOAD_NO_SCALE | FT_LOAD_NO_HINTING))
             continue;
-        if (face->glyph->format == FT_GLYPH_FORMAT_OUTLINE) {
-            c.dx = x;
-            c.dy = y;
+        FT_GlyphSlot g = face->glyph;
+        double adv = g->advance.x * c.scale;
+        double lsb = g->metrics.horiBearingX * c.scale;
+        double xmin = lsb;
+        if (g->format == FT_GLYPH_FORMAT_OUTLINE) {
+            FT_BBox box;
+            FT_Outline_Get_CBox(&g->outline, &box);
+            if (g->outline.n_points > 0)
+                xmin = box.xMin * c.scale;
+        }
+        if (first) {
+            c.dx = -xmin;
+            x = adv - lsb;
+        } else {
+            c.dx = x + lsb - xmin + kern;
+            x += adv + kern;
+        }
+        c.dy = y;
+        if (g->format == FT_GLYPH_FORMAT_OUTLINE) {
             c.open = false;
-            FT_Outline_Decompose(&face->glyph->outline, &fns, &c);
+            FT_Outline_Decompose(&g->outline, &fns, &c);
             close_contour(&c);
         }
-        x += face->glyph->advance.x * c.scale + o->u.text.offset.x;
+        x += o->u.text.offset.x;
         y += o->u.text.offset.y;
         prev = gi;
+        first = false;
     }
     FT_Done_Face(face);
     FT_Done_FreeType(lib);

@@ -142,11 +142,13 @@ static void build_gradients(void)
     }
 }
 
+static vec3 dnoise(vec3 p);
+
 static void build_waves(void)
 {
     uint32_t st = (uint32_t)-560851967;
     for (int i = 0; i < WAVE_TABLE; i++) {
-        wave_sources[i] = v3_norm(noise_vector(v3((double)i, 0, 0)));
+        wave_sources[i] = v3_norm(dnoise(v3((double)i, 0, 0)));
         wave_freqs[i] = (double)lcg15(&st) * 0.000030518509476 + 0.01;
     }
 }
@@ -262,9 +264,16 @@ static void dcorner(vec3 *r, const double *mp, double s, double x, double y,
     r->z += corner(mp + 16, s, x, y, z);
 }
 
+
 vec3 noise_vector(vec3 p)
 {
     noise_init();
+    return dnoise(p);
+}
+
+/* The vector noise proper; the tables must be built. */
+static vec3 dnoise(vec3 p)
+{
     p = safe_point(p);
     int ix, iy, iz;
     double fx, fy, fz;

@@ -379,7 +379,7 @@ static double quilt_cubic(double t, double p1, double p2)
 {
     double it = 1 - t;
     double v = t * t * t + 3.0 * t * it * it * p1 + 3.0 * t * t * it * p2;
-    return v * 0.8660254037844386; /* POV-Ray's INV_SQRT_3_4 = sqrt(3)/2 */
+    return v * 1.154700538; /* POV-Ray: 1/sqrt(3/4) */
 }
 
 static double quilted(const iris_pattern *pat, vec3 p)

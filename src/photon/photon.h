@@ -30,6 +30,7 @@
 #include "math/vec3.h"
 
 struct accel;
+struct mat_ctx;
 struct photon_map;
 
 struct photon_options {
@@ -38,6 +39,8 @@ struct photon_options {
     int pass;                  /* progressive pass number, 0 first */
     double radius_scale;       /* gather radius multiplier (0 = 1); the
                                   progressive driver shrinks it per pass */
+    const struct mat_ctx *mat; /* texture evaluation (material.h); NULL:
+                                  solid top-layer pigments only */
 };
 
 /* What a build did, for -v and the benchmarks. */

@@ -173,6 +173,7 @@ static enum iris_status find_combos(struct shoot *s)
             c->tc.fade_distance = l->fade_distance;
             c->tc.fade_power = l->fade_power;
             c->tc.max_level = max_level;
+            c->tc.mat = s->opts->mat;
             spec_emitter_init(&c->em, l);
             c->ctr = v3_scale(v3_add(lo, hi), 0.5);
             c->rad = 0.5 * v3_len(v3_sub(hi, lo));

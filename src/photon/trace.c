@@ -31,6 +31,7 @@
 
 #include <math.h>
 
+#include "material/material.h"
 #include "spectrum/ior.h"
 #include "spectrum/spectrum.h"
 #include "util/mem.h"
@@ -54,26 +55,94 @@ double pmap_fresnel(double cos_i, double eta, double *cos_t)
     return f != f ? 1.0 : f;
 }
 
-/*
-** The solid colour of a texture's top layer. Until the material module
-** publishes mat_eval_texture(), patterned pigments use their first map
-** colour (an approximation noted in the report).
-*/
-static iris_colour surface_colour(const iris_texture *tex)
-{
-    iris_colour c = { 0, 0, 0, 0, 0 };
-    if (!tex || !tex->pigment)
-        return c;
-    const iris_pigment *p = tex->pigment;
-    if (p->pattern.kind != IRIS_PAT_NONE && p->n_entries > 0 &&
-        !p->is_pigment_map)
-        return p->entries[0].colour;
-    return p->colour;
-}
-
 static double clamp01(double x)
 {
     return x > 1.0 ? 1.0 : (x > 0.0 ? x : 0.0);
+}
+
+/* What a photon needs of the surface it hits. */
+struct psurf {
+    double transm;             /* spectral transmittance of the layers */
+    double opacity;            /* top layer: 1 - filter - transmit */
+    const iris_finish *fin;    /* top layer finish (NULL: none) */
+    vec3 n;                    /* top layer normal, facing the photon */
+    double refl[3];            /* top layer reflection colour */
+    bool reflects;
+};
+
+/*
+** Evaluates the texture at hit 'h' for a photon arriving along 'd' with
+** geometric normal 'nf' facing it: through mat_eval_texture() when the
+** build has a material context (a texture_map's stacks are chosen by
+** Russian roulette on their weights), otherwise from the top layer's solid
+** pigment (the unit tests). The transmittance is the product over the
+** layers of f·rho_rgb(lambda) + t.
+*/
+static void eval_surface(const struct ptrace_combo *c, const struct hit *h,
+                         vec3 d, vec3 nf, double lambda, rng *r,
+                         struct psurf *s)
+{
+    s->transm = 0.0;
+    s->opacity = 1.0;
+    s->fin = h->texture ? h->texture->finish : NULL;
+    s->n = nf;
+    s->reflects = false;
+    double cos_i = -v3_dot(d, nf);
+    if (!c->mat) {
+        iris_colour col = { 0, 0, 0, 0, 0 };
+        if (h->texture && h->texture->pigment)
+            col = h->texture->pigment->colour;
+        double rgb[3] = { col.r, col.g, col.b };
+        s->transm = clamp01(col.f * clamp01(spec_reflectance(rgb, lambda)) +
+                            col.t);
+        s->opacity = 1.0 - col.f - col.t;
+        if (s->fin) {
+            double fl = pow(1.0 - cos_i, s->fin->reflection_falloff);
+            s->refl[0] = fl * s->fin->reflection_max.r +
+                         (1 - fl) * s->fin->reflection_min.r;
+            s->refl[1] = fl * s->fin->reflection_max.g +
+                         (1 - fl) * s->fin->reflection_min.g;
+            s->refl[2] = fl * s->fin->reflection_max.b +
+                         (1 - fl) * s->fin->reflection_min.b;
+            s->reflects = s->refl[0] > 0 || s->refl[1] > 0 || s->refl[2] > 0;
+        }
+        return;
+    }
+    struct mat_eval ev;
+    struct mat_point pt = { h->p, nf, d, h->uv, h->obj, false };
+    mat_eval_texture(c->mat, h->texture, &pt, &ev);
+    if (ev.n_stacks <= 0)
+        return;
+    int k = 0;
+    if (ev.n_stacks > 1) {
+        double u = rng_uniform(r), acc = 0.0;
+        for (k = 0; k < ev.n_stacks - 1; k++) {
+            acc += ev.stacks[k].weight;
+            if (u < acc)
+                break;
+        }
+    }
+    const struct mat_stack *st = &ev.stacks[k];
+    double t = 1.0;
+    for (int i = st->first; i < st->first + st->n; i++) {
+        const struct mat_layer *ly = &ev.layers[i];
+        if (!ly->valid)
+            continue;
+        double rgb[3] = { ly->pigment.r, ly->pigment.g, ly->pigment.b };
+        t *= clamp01(ly->pigment.f * clamp01(spec_reflectance(rgb, lambda)) +
+                     ly->pigment.t);
+    }
+    s->transm = t;
+    if (st->n > 0 && ev.layers[st->first].valid) {
+        const struct mat_layer *top = &ev.layers[st->first];
+        s->opacity = mat_opacity(c->mat, &top->pigment);
+        s->fin = top->finish;
+        if (v3_dot(top->n, nf) > 0.0)
+            s->n = top->n;
+        double w;
+        s->reflects = mat_layer_reflectivity(top, -v3_dot(d, s->n), 1.0,
+                                             s->refl, &w);
+    }
 }
 
 /* Spectral transmittance of fade over a segment of length 'd'. */
@@ -151,13 +220,15 @@ void ptrace_photon(const struct pmap_world *w, const struct ptrace_combo *c,
         if (level == 1 && h.top != c->target && obj != c->target &&
             !obj->photon_pass_through)
             return;
-        iris_colour col = surface_colour(h.texture);
-        const iris_finish *fin = h.texture ? h.texture->finish : NULL;
-        double opacity = 1.0 - col.f - col.t;
+        bool entering = v3_dot(d, h.n) < 0.0;
+        vec3 nf = entering ? h.n : v3_neg(h.n); /* facing the photon */
+        struct psurf sf;
+        eval_surface(c, &h, d, nf, lambda, r, &sf);
+        const iris_finish *fin = sf.fin;
 
         /* Store caustic photons (after at least one bounce) */
         if (level > 1 && obj->photon_collect && fin && fin->diffuse > 0.0 &&
-            opacity > 0.0) {
+            sf.opacity > 0.0) {
             double p = power;
             if (!c->parallel)
                 p *= depth * depth;
@@ -168,17 +239,14 @@ void ptrace_photon(const struct pmap_world *w, const struct ptrace_combo *c,
                 return;
         }
 
-        double rgb[3] = { col.r, col.g, col.b };
-        double transm = clamp01(col.f * clamp01(spec_reflectance(rgb, lambda)) +
-                                col.t);
+        double transm = sf.transm;
         if (obj->photon_pass_through) {
             /* Straight on, filtered; POV-Ray counts the level too */
             power *= transm;
             o = h.p;
             continue;
         }
-        bool entering = v3_dot(d, h.n) < 0.0;
-        vec3 nf = entering ? h.n : v3_neg(h.n); /* facing the photon */
+        nf = sf.n; /* the perturbed normal bends and mirrors */
         double cos_i = -v3_dot(d, nf);
         bool refl_ok = allowed(obj->photon_reflection,
                                c->light->photon_reflection);
@@ -239,16 +307,10 @@ void ptrace_photon(const struct pmap_world *w, const struct ptrace_combo *c,
                     n_stack--;
                 }
             }
-        } else if (refl_ok && fin) {
-            /* A mirror: POV-Ray's reflection colour with its falloff,
+        } else if (refl_ok && sf.reflects) {
+            /* A mirror: POV-Ray's reflection colour (falloff, metallic),
             ** as a spectral reflectivity taken by Russian roulette */
-            double fl = pow(1.0 - cos_i, fin->reflection_falloff);
-            double refl[3] = {
-                fl * fin->reflection_max.r + (1 - fl) * fin->reflection_min.r,
-                fl * fin->reflection_max.g + (1 - fl) * fin->reflection_min.g,
-                fl * fin->reflection_max.b + (1 - fl) * fin->reflection_min.b
-            };
-            double p = clamp01(spec_reflectance(refl, lambda));
+            double p = clamp01(spec_reflectance(sf.refl, lambda));
             if (!(u < p))
                 return;
             d = v3_norm(v3_reflect(d, nf));

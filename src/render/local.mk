@@ -1,6 +1,5 @@
 ## src/render: see the file headers. Appends to the core library.
-libiris_core_la_SOURCES += %reldir%/render_placeholder.c \
+libiris_core_la_SOURCES += %reldir%/render.c \
 	%reldir%/camera.c %reldir%/camera.h %reldir%/light.c %reldir%/light.h \
 	%reldir%/query.h %reldir%/trace.c %reldir%/trace.h \
 	%reldir%/plan.c %reldir%/plan.h %reldir%/eyepass.c %reldir%/eyepass.h
-EXTRA_DIST += %reldir%/render.c

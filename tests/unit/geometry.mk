@@ -1,9 +1,14 @@
 ## tests/unit/geometry.mk: unit tests of this area.
-check_PROGRAMS += tests/unit/test_geom tests/unit/test_accel
-TESTS += tests/unit/test_geom tests/unit/test_accel
+check_PROGRAMS += tests/unit/test_geom tests/unit/test_accel \
+	tests/unit/test_accel_pov
+TESTS += tests/unit/test_geom tests/unit/test_accel \
+	tests/unit/test_accel_pov
 tests_unit_test_geom_SOURCES = tests/unit/test_geom.c tests/testutil.h
 tests_unit_test_geom_CFLAGS = $(TEST_CFLAGS)
 tests_unit_test_geom_LDADD = $(TEST_LDADD)
 tests_unit_test_accel_SOURCES = tests/unit/test_accel.c tests/testutil.h
 tests_unit_test_accel_CFLAGS = $(TEST_CFLAGS)
 tests_unit_test_accel_LDADD = $(TEST_LDADD)
+tests_unit_test_accel_pov_SOURCES = tests/unit/test_accel_pov.c tests/testutil.h
+tests_unit_test_accel_pov_CFLAGS = $(TEST_CFLAGS)
+tests_unit_test_accel_pov_LDADD = $(TEST_LDADD)

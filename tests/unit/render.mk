@@ -1,1 +1,14 @@
-## tests/unit/render.mk: unit tests of this area.
+## tests/unit/render.mk: unit tests of src/material and src/render, and
+## the POV-Ray parity suite (tests/render).
+check_PROGRAMS += tests/unit/test_material
+TESTS += tests/unit/test_material
+tests_unit_test_material_SOURCES = tests/unit/test_material.c tests/testutil.h
+tests_unit_test_material_CFLAGS = $(TEST_CFLAGS)
+tests_unit_test_material_LDADD = $(TEST_LDADD)
+
+check_PROGRAMS += tests/unit/test_render
+TESTS += tests/unit/test_render
+tests_unit_test_render_SOURCES = tests/unit/test_render.c \
+	tests/unit/render_double.c tests/unit/render_double.h tests/testutil.h
+tests_unit_test_render_CFLAGS = $(TEST_CFLAGS)
+tests_unit_test_render_LDADD = $(TEST_LDADD)

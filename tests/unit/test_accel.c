@@ -17,6 +17,7 @@
 #include "math/transform.h"
 #include "util/arena.h"
 #include "util/rng.h"
+#include "util/thread.h"
 
 static iris_texture tex_a, tex_b;
 static iris_interior glass;
@@ -776,6 +777,32 @@ static void test_height_field(void **state)
     scene_free(sc);
 }
 
+/* A blob hit shows the texture of the component that dominates there. */
+static void test_blob_texture(void **state)
+{
+    (void)state;
+    iris_scene *sc = scene_new();
+    iris_object *b = add(sc, obj(sc, IRIS_OBJ_BLOB));
+    iris_blob_component *bc = arena_array(sc->arena, 2, sizeof *bc);
+    bc[0].a = v3(-1, 0, 0);
+    bc[0].radius = 1.5;
+    bc[0].strength = 1;
+    bc[1] = bc[0];
+    bc[1].a = v3(1, 0, 0);
+    bc[1].texture = &tex_b;
+    b->u.blob.threshold = 0.3;
+    b->u.blob.n_components = 2;
+    b->u.blob.components = bc;
+    struct accel *a = build(sc);
+    struct hit h;
+    assert_true(shoot(a, v3(-1, 0, -5), v3(0, 0, 1), &h));
+    assert_ptr_equal(h.texture, &tex_a); /* no own texture: the blob's */
+    assert_true(shoot(a, v3(1, 0, -5), v3(0, 0, 1), &h));
+    assert_ptr_equal(h.texture, &tex_b);
+    accel_destroy(a);
+    scene_free(sc);
+}
+
 /* A mesh inside CSG: intersection of a unit-cube mesh (with
 ** inside_vector) and a sphere of radius 0.6 at the cube's corner (0,0,0):
 ** along the cube's edge direction the first surface is the sphere. */
@@ -813,6 +840,208 @@ static void test_mesh_csg(void **state)
     scene_free(sc);
 }
 
+/* Broken objects of every kind: the build warns and skips them, nothing
+** crashes, and queries through what remains stay finite. */
+static void test_bad_input(void **state)
+{
+    (void)state;
+    iris_scene *sc = scene_new();
+    add(sc, sphere(sc, v3(0, 0, 0), NAN));
+    add(sc, sphere(sc, v3(0, 0, 0), -1));
+    add(sc, sphere(sc, v3(INFINITY, 0, 0), 1));
+    add(sc, box(sc, v3(NAN, 0, 0), v3(1, 1, 1)));
+    iris_object *o = add(sc, obj(sc, IRIS_OBJ_CYLINDER));
+    o->u.cylinder.radius = 1; /* zero length */
+    o = add(sc, obj(sc, IRIS_OBJ_TORUS)); /* zero radii */
+    o = add(sc, sphere(sc, v3(0, 0, 0), 1));
+    xform x;
+    xf_identity(&x);
+    x.m[0][0] = 0; /* singular transform: its inverse is not finite */
+    x.inv[0][0] = INFINITY;
+    apply(o, &x);
+    o = add(sc, obj(sc, IRIS_OBJ_MESH));
+    static vec3 v[3] = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 } };
+    static int32_t ix[6] = { 0, 1, 7, -1, 2, 1 }; /* out of range */
+    o->u.mesh.n_vertices = 3;
+    o->u.mesh.vertices = v;
+    o->u.mesh.n_triangles = 2;
+    o->u.mesh.tri_vertices = ix;
+    o = add(sc, obj(sc, IRIS_OBJ_MESH)); /* no data at all */
+    o->u.mesh.n_triangles = 5;
+    o = add(sc, obj(sc, IRIS_OBJ_POLY));
+    o->u.poly.order = 20;
+    o = add(sc, obj(sc, IRIS_OBJ_PRISM));
+    o->u.prism.n_points = 2;
+    o = add(sc, obj(sc, IRIS_OBJ_LATHE));
+    o->u.lathe.n_points = 3;
+    o->u.lathe.points = arena_array(sc->arena, 3, sizeof(iris_vec2));
+    o->u.lathe.points[1].u = NAN;
+    o = add(sc, obj(sc, IRIS_OBJ_BLOB));
+    o->u.blob.n_components = 3; /* components NULL */
+    o = add(sc, obj(sc, IRIS_OBJ_TEXT));
+    o->u.text.font = "/no/such/font.ttf";
+    o->u.text.string = "x";
+    o = add(sc, obj(sc, IRIS_OBJ_SUPERELLIPSOID));
+    o = add(sc, obj(sc, IRIS_OBJ_POLYGON));
+    o->u.polygon.n_points = 2;
+    o = add(sc, obj(sc, IRIS_OBJ_DISC));
+    o->u.disc.radius = 1;
+    o = add(sc, obj(sc, IRIS_OBJ_PLANE));
+    o = add(sc, obj(sc, IRIS_OBJ_ISOSURFACE));
+    o = add(sc, obj(sc, IRIS_OBJ_HEIGHT_FIELD));
+    o = add(sc, obj(sc, IRIS_OBJ_DIFFERENCE));
+    o->u.csg.n_children = 2; /* children NULL */
+    o = add(sc, csg(sc, IRIS_OBJ_INTERSECTION, NULL, NULL));
+    iris_object *cyc = add(sc, csg(sc, IRIS_OBJ_MERGE, NULL, NULL));
+    cyc->u.csg.children[0] = cyc; /* contains itself */
+    cyc->u.csg.children[1] = sphere(sc, v3(5, 5, 5), 1);
+    iris_object *good = add(sc, sphere(sc, v3(0, 0, 3), 1));
+
+    char *buf = NULL;
+    size_t len = 0;
+    FILE *log = open_memstream(&buf, &len);
+    struct accel *a = NULL;
+    char err[128];
+    assert_int_equal(accel_build(sc, &a, log, err, sizeof err), IRIS_OK);
+    fclose(log);
+    int warnings = 0;
+    for (const char *p = buf; (p = strstr(p, "warning:")); p++)
+        warnings++;
+    free(buf);
+    assert_true(warnings >= 20);
+    struct hit h;
+    assert_true(shoot(a, v3(0, 0, -5), v3(0, 0, 1), &h));
+    assert_ptr_equal(h.obj, good);
+    assert_true(shoot(a, v3(5, 5, -5), v3(0, 0, 1), &h)); /* cycle's sphere */
+    rng g;
+    rng_seed(&g, 3, 0, 0);
+    for (int i = 0; i < 2000; i++) {
+        ray r = { v3(8 * rng_uniform(&g) - 4, 8 * rng_uniform(&g) - 4, -6),
+                  v3_norm(v3(rng_uniform(&g) - 0.5, rng_uniform(&g) - 0.5,
+                             1)) };
+        if (accel_intersect(a, &r, 0, INFINITY, 0, &h)) {
+            assert_true(isfinite(h.t));
+            assert_near(v3_len(h.n), 1, 1e-9);
+        }
+        (void)accel_inside(a, cyc, r.o);
+    }
+    accel_destroy(a);
+    scene_free(sc);
+}
+
+/*
+** Self-intersection: rays leaving a hit point (reflected outwards or
+** refracted inwards, random directions) started at accel_epsilon() never
+** meet the same surface again at a tiny distance. Every shape kind is in
+** the scene; "tiny" is 1e-6 of the scene (10 units), a thousand times the
+** epsilon, so a miss here is a real self-hit, not a thin feature.
+*/
+static void self_hit_at(double scale)
+{
+    iris_scene *sc = mixed_scene(scale);
+    int first_extra = sc->n_objects;
+    iris_object *c = add(sc, obj(sc, IRIS_OBJ_CONE));
+    c->u.cone.base = v3(0, 0, 3);
+    c->u.cone.cap = v3(0, 2, 3);
+    c->u.cone.base_radius = 1;
+    iris_object *se = add(sc, obj(sc, IRIS_OBJ_SUPERELLIPSOID));
+    se->u.superellipsoid.e = 0.3;
+    se->u.superellipsoid.n = 2.5;
+    xform x;
+    xf_translate(&x, v3(3, 2, 3));
+    apply(se, &x);
+    iris_object *bl = add(sc, obj(sc, IRIS_OBJ_BLOB));
+    iris_blob_component *bc = arena_array(sc->arena, 1, sizeof *bc);
+    bc[0].a = v3(-3, 2, 3);
+    bc[0].radius = 1.5;
+    bc[0].strength = 1;
+    bl->u.blob.threshold = 0.2;
+    bl->u.blob.n_components = 1;
+    bl->u.blob.components = bc;
+    iris_object *iso = add(sc, obj(sc, IRIS_OBJ_ISOSURFACE));
+    iso->u.isosurface.fn = sphere_fn(sc, 0.5);
+    iso->u.isosurface.centre = v3(0, 0, 0);
+    iso->u.isosurface.radius = 1;
+    iso->u.isosurface.contained_kind = 1;
+    iso->u.isosurface.max_gradient = 2.5;
+    iso->u.isosurface.max_trace = 1;
+    xf_translate(&x, v3(-3, -2, 5));
+    apply(iso, &x);
+    xf_scale(&x, v3(scale, scale, scale));
+    for (int i = first_extra; i < sc->n_objects; i++)
+        apply(sc->objects[i], &x);
+    struct accel *a = build(sc);
+    double eps = accel_epsilon(a);
+    rng g;
+    rng_seed(&g, 11, 0, 0);
+    int n = 0, bad = 0;
+    for (int i = 0; i < 20000; i++) {
+        ray r = { v3_scale(v3(8 * rng_uniform(&g) - 4,
+                              8 * rng_uniform(&g) - 4, -9), scale),
+                  v3_norm(v3(rng_uniform(&g) - 0.5, rng_uniform(&g) - 0.5,
+                             1)) };
+        struct hit h, h2;
+        if (!accel_intersect(a, &r, eps, INFINITY, 0, &h))
+            continue;
+        vec3 d = v3_norm(v3(rng_uniform(&g) - 0.5, rng_uniform(&g) - 0.5,
+                            rng_uniform(&g) - 0.5));
+        /* Out of the surface or into it, never along it */
+        if (fabs(v3_dot(d, h.n)) < 1e-3)
+            continue;
+        ray r2 = { h.p, d };
+        n++;
+        if (accel_intersect(a, &r2, eps, INFINITY, 0, &h2) && h2.t < 1e-5 * scale &&
+            h2.obj == h.obj)
+            bad++;
+    }
+    assert_true(n > 5000);
+    if (bad > 0)
+        fail_msg("scale %g: %d of %d secondary rays met their own surface "
+                 "again", scale, bad, n);
+    accel_destroy(a);
+    scene_free(sc);
+}
+
+/* ... at the scene's own size and scaled by 1e-6 and 1e6 (issue 7). */
+static void test_self_hit(void **state)
+{
+    (void)state;
+    self_hit_at(1);
+    self_hit_at(1e-6);
+    self_hit_at(1e6);
+}
+
+struct par_ctx {
+    const struct accel *a;
+    double *t;
+};
+
+static void par_shoot(void *ctx, int64_t item, int thread)
+{
+    (void)thread;
+    struct par_ctx *c = ctx;
+    double u = (item % 100) / 100.0 - 0.5, v = (item / 100) / 100.0 - 0.5;
+    ray r = { v3(0.1, 0.05, -8), v3_norm(v3(u, v, 1)) };
+    struct hit h;
+    c->t[item] = accel_intersect(c->a, &r, 1e-9, INFINITY, 0, &h) ? h.t : -1;
+}
+
+/* Queries from two threads at once give exactly the single-thread
+** answers: the accel is read-only after the build. */
+static void test_threads(void **state)
+{
+    (void)state;
+    iris_scene *sc = mixed_scene(1);
+    struct accel *a = build(sc);
+    static double t1[10000], t2[10000];
+    struct par_ctx c1 = { a, t1 }, c2 = { a, t2 };
+    par_for(1, 10000, par_shoot, &c1);
+    par_for(2, 10000, par_shoot, &c2);
+    assert_memory_equal(t1, t2, sizeof t1);
+    accel_destroy(a);
+    scene_free(sc);
+}
+
 int main(void)
 {
     glass.ior = 1.5;
@@ -833,6 +1062,10 @@ int main(void)
         cmocka_unit_test(test_isosurface),
         cmocka_unit_test(test_height_field),
         cmocka_unit_test(test_mesh_csg),
+        cmocka_unit_test(test_blob_texture),
+        cmocka_unit_test(test_bad_input),
+        cmocka_unit_test(test_threads),
+        cmocka_unit_test(test_self_hit),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

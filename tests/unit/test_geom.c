@@ -409,6 +409,12 @@ static void test_sweeps(void **state)
     assert_true(geom_inside(&pr, p, v3(0.75, 0.5, 0)));
     assert_false(geom_inside(&pr, p, v3(0, 0.5, 0)));
     geom_profile_free(p);
+    /* 'open' removes the caps */
+    pr.open = true;
+    p = geom_prepare(&pr, &why);
+    assert_int_equal(hits(&pr, p, v3(0.75, 5, 0), v3(0, -1, 0), h, 8), 0);
+    assert_int_equal(hits(&pr, p, v3(-5, 0.5, 0), v3(1, 0, 0), h, 8), 4);
+    geom_profile_free(p);
 }
 
 /* Conic sweep: the square [-1,1]² scaled by the height y, for y in
@@ -514,7 +520,7 @@ static void test_flat(void **state)
 static void test_text(void **state)
 {
     (void)state;
-    const char *font = "/usr/share/povray-3.7/include/timrom.ttf";
+    const char *font = POVRAY_INCLUDE_DIR "/timrom.ttf";
     FILE *f = fopen(font, "rb");
     if (!f)
         skip();

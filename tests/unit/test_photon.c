@@ -16,6 +16,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "material/material.h"
 #include "photon/pmap.h"
 #include "photon/trace.h"
 #include "photon_world.h"
@@ -225,7 +226,7 @@ static struct tw_scene tw;
 static struct photon_map *build(struct tw_scene *t, int threads)
 {
     struct pmap_world w = tw_world(t);
-    struct photon_options o = { threads, 12345, 0, 0 };
+    struct photon_options o = { threads, 12345, 0, 0, NULL };
     struct photon_map *m = NULL;
     struct photon_stats st;
     assert_int_equal(pmap_build(&t->scene, &w, &o, &m, &st), IRIS_OK);
@@ -289,6 +290,47 @@ static void test_slab_flux(void **state)
                         m->store.n * sizeof(struct pstore_photon));
     photon_map_destroy(m1);
     photon_map_destroy(m);
+}
+
+/*
+** The same slab through the real pipeline: photon_map_build() over the
+** Embree scene of accel_build() with textures evaluated by the material
+** module. Same expectation and tolerance as above.
+*/
+static void test_slab_flux_accel(void **state)
+{
+    (void)state;
+    tw_init(&tw, 0.01, 100);
+    tw_light(&tw, v3(0, 10, 0), v3(0, 0, 0), true);
+    iris_object *slab = tw_box(&tw, v3(-2, 1, -2), v3(2, 1.5, 2), CLEAR, 0,
+                               1.5);
+    slab->photon_target = true;
+    slab->photon_collect = false;
+    tw_plane(&tw, v3(0, 1, 0), 0, WHITE, 1);
+    const char *files[1] = { "" };
+    tw.scene.n_files = 1;
+    tw.scene.files = files;
+    struct accel *a = NULL;
+    char err[256] = "";
+    if (accel_build(&tw.scene, &a, stderr, err, sizeof err) != IRIS_OK)
+        fail_msg("accel_build: %s", err);
+    struct mat_ctx *mc = NULL;
+    assert_int_equal(mat_ctx_create(&tw.scene, stderr, &mc), IRIS_OK);
+    struct photon_options o = { 2, 12345, 0, 0, mc };
+    struct photon_map *m = NULL;
+    struct photon_stats st;
+    assert_int_equal(photon_map_build(&tw.scene, a, &o, &m, &st), IRIS_OK);
+    assert_non_null(m);
+    assert_true(st.stored > 100000);
+    assert_int_equal(st.bytes, st.stored * 16);
+    double R = fresnel_ref(1, 1.5, 1), T = 1 - R;
+    double expect = T * T * (1 + R * R), rgb[3];
+    floor_mean(m, -1.5, 1.5, 48, rgb);
+    for (int c = 0; c < 3; c++)
+        assert_near(rgb[c], expect, 0.02 * expect);
+    photon_map_destroy(m);
+    mat_ctx_destroy(mc);
+    accel_destroy(a);
 }
 
 /* ------------------------------------------------------------------ */
@@ -510,13 +552,14 @@ static void test_dispersive_white(void **state)
     slab->interior->spectral_ior = spec;
     tw_plane(&tw, v3(0, 1, 0), 0, WHITE, 1);
     struct photon_map *m = build(&tw, 2);
-    /* the region x in [-2.5, 0.5], z in [-2, 2] is lit through the top
-    ** face well away from the slab's sides (offset +1.2 in x) */
+    /* the region x in [-1.5, 1.5], z in [-2, 2] is lit through the top
+    ** face (entry x + 1.2), away from the band x < -1.78 where light
+    ** totally reflected by the slab's side face x = -3 lands as well */
     double rgb[3] = { 0, 0, 0 };
     for (int i = 0; i < 72; i++)
         for (int j = 0; j < 96; j++) {
             double c[3];
-            shade_white(m, v3(-2.5 + 3.0 * (i + .5) / 72, 0,
+            shade_white(m, v3(-1.5 + 3.0 * (i + .5) / 72, 0,
                               -2 + 4.0 * (j + .5) / 96), v3(0, 1, 0), c);
             for (int k = 0; k < 3; k++)
                 rgb[k] += c[k] / (72 * 96);
@@ -550,7 +593,7 @@ static void test_rules(void **state)
     ball->photon_target = true;
     iris_object *floor = tw_plane(&tw, v3(0, 1, 0), 0, WHITE, 1);
     struct pmap_world w = tw_world(&tw);
-    struct photon_options o = { 1, 1, 0, 0 };
+    struct photon_options o = { 1, 1, 0, 0, NULL };
     struct photon_map *m = (struct photon_map *)1;
     tw.scene.settings.photons.enabled = false;
     assert_int_equal(pmap_build(&tw.scene, &w, &o, &m, NULL), IRIS_OK);
@@ -594,6 +637,7 @@ int main(void)
         cmocka_unit_test(test_knn_brute_force),
         cmocka_unit_test(test_cone_and_estimate),
         cmocka_unit_test(test_slab_flux),
+        cmocka_unit_test(test_slab_flux_accel),
         cmocka_unit_test(test_ball_caustic),
         cmocka_unit_test(test_prism),
         cmocka_unit_test(test_dispersive_white),

@@ -1,0 +1,83 @@
+#!/bin/sh
+# SPDX-License-Identifier: MIT
+# bench/parse-examples.sh: parses every POV-Ray example scene with
+# 'iris --parse-only' and prints one line per scene (status, time, first
+# diagnostic) and the totals. Each scene's directory is copied to a
+# scratch directory first, because scenes include and write local files.
+# Every parse runs under a time limit and a memory limit, so a hang or a
+# runaway allocation shows up as "timeout" or "crash", never stalls the run.
+#
+# usage: build=/path/to/build bench/parse-examples.sh [--povray] [DIR]
+#   IRIS      the iris binary (default $build/iris)
+#   DIR       where the scenes are (default /usr/share/doc/povray/examples)
+#   --povray  also run POV-Ray on each scene (tiny image) and report its
+#             own "Parse Time" next to ours
+#   TIMEOUT   seconds per scene (default 30); MEMLIMIT KiB (default 2000000)
+#
+# Status: ok (parsed), error (stopped with a diagnostic: the first one is
+# shown), timeout, crash (killed by a signal or an unexpected exit code).
+# The goal is no timeout/crash and >= 90% ok.
+
+build=${build:-.}
+IRIS=${IRIS:-$build/iris}
+POVRAY=${POVRAY:-povray}
+TIMEOUT=${TIMEOUT:-30}
+MEMLIMIT=${MEMLIMIT:-2000000}
+with_pov=0
+if [ "$1" = "--povray" ]; then
+    with_pov=1
+    shift
+fi
+DIR=${1:-/usr/share/doc/povray/examples}
+
+[ -x "$IRIS" ] || { echo "parse-examples: no iris binary at $IRIS (set build or IRIS)"; exit 1; }
+[ -d "$DIR" ] || { echo "parse-examples: no scenes in $DIR"; exit 1; }
+case $IRIS in /*) ;; *) IRIS=$(pwd)/$IRIS ;; esac
+
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT INT TERM
+
+now() { date +%s.%N; }
+
+n=0; n_ok=0; n_err=0; n_to=0; n_crash=0
+printf '%-58s %-8s %8s %9s  %s\n' scene status iris_s povray_s first_diagnostic
+find "$DIR" -name '*.pov' | LC_ALL=C sort > "$tmp/list"
+while IFS= read -r scene; do
+    n=$((n + 1))
+    rel=${scene#"$DIR"/}
+    src=$(dirname "$scene")
+    work="$tmp/w$n"
+    mkdir -p "$work"
+    cp -R "$src/." "$work/" 2>/dev/null
+    base=$(basename "$scene")
+    t0=$(now)
+    ( cd "$work" && ulimit -v "$MEMLIMIT" 2>/dev/null
+      exec timeout "$TIMEOUT" "$IRIS" --parse-only "$base" ) \
+        >"$tmp/out" 2>&1 </dev/null
+    rc=$?
+    t1=$(now)
+    secs=$(echo "$t0 $t1" | awk '{printf "%.3f", $2 - $1}')
+    case $rc in
+        0) status=ok; n_ok=$((n_ok + 1)) ;;
+        2) status=error; n_err=$((n_err + 1)) ;;
+        124) status=timeout; n_to=$((n_to + 1)) ;;
+        *) status=crash; n_crash=$((n_crash + 1)) ;;
+    esac
+    diag=$(grep -m1 -E ': (error|warning): ' "$tmp/out" | cut -c1-110)
+    [ "$status" = ok ] && diag=$(grep -m1 -E ': error: ' "$tmp/out" | cut -c1-110)
+    [ "$status" = crash ] && diag="exit $rc $diag"
+    pov=-
+    if [ $with_pov -eq 1 ]; then
+        ( cd "$work" && exec timeout 120 "$POVRAY" "+I$base" +O"$tmp/pov.png" \
+            +W16 +H12 -D +Q0 -V +FN -GA ) >"$tmp/pov" 2>&1 </dev/null
+        pov=$(grep -m1 'Parse Time' "$tmp/pov" | sed 's/.*(\([0-9.]*\) seconds).*/\1/')
+        [ -n "$pov" ] || pov=fail
+    fi
+    printf '%-58s %-8s %8s %9s  %s\n' "$rel" "$status" "$secs" "$pov" "$diag"
+    rm -rf "$work"
+done < "$tmp/list"
+
+pct=$(echo "$n_ok $n" | awk '{ if ($2) printf "%.1f", 100 * $1 / $2; else print 0 }')
+echo
+echo "scenes: $n  ok: $n_ok ($pct%)  error: $n_err  timeout: $n_to  crash: $n_crash"
+[ $n_to -eq 0 ] && [ $n_crash -eq 0 ]

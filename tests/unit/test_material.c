@@ -1,0 +1,459 @@
+/* SPDX-License-Identifier: MIT */
+/*
+** test_material.c: noise, patterns, colour maps, texture stacks and the
+** optical helpers of src/material against independent expectations.
+**
+** The noise-based expectations are POV-Ray 3.7.0.10's own output: each
+** pattern was rendered on the plane z = 0 through an 8 x 8 orthographic
+** camera with
+**
+**   camera { orthographic location <0,0,-1> direction z right 8*x up 8*y }
+**   plane { z, 0 pigment { PATTERN color_map {[0 rgb 0][1 rgb 1]}
+**           translate <0.123,0.456,0.789> scale 0.7 }
+**           finish { ambient 1 diffuse 0 } }
+**
+** (+FE, linear half-float OpenEXR) and pixel (i, j) read back with
+** oiiotool --dumpdata. Pixel (i, j) sees world point (8 x0, 8 y0, 0) with
+** x0 = (i + .5)/8 - .5, y0 = .5 - (j + .5)/8, i.e. pattern point
+** (8 x0/0.7 - 0.123, 8 y0/0.7 - 0.456, -0.789). Half floats carry 11
+** significant bits, so values below 1 are exact to 2.5e-4; the tolerance
+** is 5e-4.
+*/
+#include "config.h"
+
+#include <string.h>
+
+#include "testutil.h"
+
+#include "material/mat_internal.h"
+#include "material/material.h"
+#include "material/noise.h"
+#include "math/transform.h"
+
+#define HALF_TOL 5e-4
+
+/* The pattern-space point of pixel (i, j) of the reference renders. */
+static vec3 ref_point(int i, int j)
+{
+    double x0 = (i + 0.5) / 8 - 0.5, y0 = 0.5 - (j + 0.5) / 8;
+    return v3(8 * x0 / 0.7 - 0.123, 8 * y0 / 0.7 - 0.456, -0.789);
+}
+
+struct ref_value {
+    int i, j;
+    double v;
+};
+
+static double eval_kind(enum iris_pattern_kind kind, int gen, double turb,
+                        enum iris_wave wave, double param0, vec3 q)
+{
+    iris_pattern pat;
+    iris_warp w;
+    memset(&pat, 0, sizeof pat);
+    memset(&w, 0, sizeof w);
+    pat.kind = kind;
+    pat.noise_generator = gen;
+    pat.frequency = 1;
+    pat.wave = wave;
+    pat.params[0] = param0;
+    if (turb > 0) {
+        w.kind = IRIS_WARP_TURBULENCE;
+        w.turbulence = v3(turb, turb, turb);
+        w.octaves = 6;
+        w.omega = 0.5;
+        w.lambda = 2;
+        pat.n_warps = 1;
+        pat.warps = &w;
+    }
+    double v = pat_eval_at(NULL, &pat, pat_space(NULL, &pat, q), NULL);
+    return v > 1 ? 1 : v; /* the colour map clamps above its last entry */
+}
+
+static void check_refs(enum iris_pattern_kind kind, int gen, double turb,
+                       enum iris_wave wave, double param0,
+                       const struct ref_value *refs, int n)
+{
+    for (int k = 0; k < n; k++)
+        assert_near(eval_kind(kind, gen, turb, wave, param0,
+                              ref_point(refs[k].i, refs[k].j)),
+                    refs[k].v, HALF_TOL);
+}
+
+static void test_noise_generators(void **state)
+{
+    (void)state;
+    static const struct ref_value g1[] = {
+        { 0, 0, 0.36523 }, { 3, 2, 0.55811 }, { 4, 4, 0.46606 },
+        { 5, 7, 0.63867 } };
+    static const struct ref_value g2[] = {
+        { 0, 0, 0.44946 }, { 3, 2, 0.54395 }, { 4, 4, 0.49902 },
+        { 5, 7, 0.58350 } };
+    static const struct ref_value g3[] = {
+        { 0, 0, 0.37817 }, { 3, 2, 0.21716 }, { 4, 4, 0.75146 },
+        { 5, 7, 0.89307 } };
+    check_refs(IRIS_PAT_BOZO, 1, 0, IRIS_WAVE_RAMP, 0, g1, 4);
+    check_refs(IRIS_PAT_BOZO, 2, 0, IRIS_WAVE_RAMP, 0, g2, 4);
+    check_refs(IRIS_PAT_BOZO, 3, 0, IRIS_WAVE_RAMP, 0, g3, 4);
+}
+
+static void test_noise_patterns(void **state)
+{
+    (void)state;
+    static const struct ref_value granite[] = {
+        { 0, 0, 0.50098 }, { 3, 2, 0.30493 }, { 4, 4, 0.31470 },
+        { 5, 7, 0.44751 } };
+    static const struct ref_value wrinkles[] = {
+        { 0, 0, 0.51025 }, { 3, 2, 0.59668 }, { 4, 4, 0.44751 },
+        { 5, 7, 0.64990 } };
+    /* marble turbulence 0.5 (classic turbulence, triangle wave) */
+    static const struct ref_value marble[] = {
+        { 0, 0, 0.76367 }, { 3, 2, 0.49121 }, { 4, 4, 0.06464 },
+        { 5, 7, 0.66992 } };
+    static const struct ref_value agate[] = {
+        { 0, 0, 0.73535 }, { 3, 2, 0.11621 }, { 4, 4, 0.99365 },
+        { 5, 7, 0.07471 } };
+    static const struct ref_value ripples[] = {
+        { 0, 0, 0.40332 }, { 3, 2, 0.45825 }, { 4, 4, 0.48145 },
+        { 5, 7, 0.42456 } };
+    check_refs(IRIS_PAT_GRANITE, 2, 0, IRIS_WAVE_RAMP, 0, granite, 4);
+    check_refs(IRIS_PAT_WRINKLES, 2, 0, IRIS_WAVE_RAMP, 0, wrinkles, 4);
+    check_refs(IRIS_PAT_MARBLE, 2, 0.5, IRIS_WAVE_TRIANGLE, 0, marble, 4);
+    check_refs(IRIS_PAT_AGATE, 2, 0, IRIS_WAVE_RAMP, 1.0, agate, 4);
+    check_refs(IRIS_PAT_RIPPLES, 2, 0, IRIS_WAVE_RAMP, 0, ripples, 4);
+}
+
+/* cells and crackle read POV-Ray's MT19937 table through the noise hash. */
+static void test_cells_crackle(void **state)
+{
+    (void)state;
+    static const struct ref_value cells[] = {
+        { 0, 0, 0.85938 }, { 3, 2, 0.09271 }, { 4, 4, 0.57373 },
+        { 5, 7, 0.11560 } };
+    static const struct ref_value crackle[] = {
+        { 0, 0, 0.07715 }, { 3, 2, 0.55078 }, { 4, 4, 0.00662 },
+        { 5, 7, 0.60059 } };
+    check_refs(IRIS_PAT_CELLS, 2, 0, IRIS_WAVE_RAMP, 0, cells, 4);
+    check_refs(IRIS_PAT_CRACKLE, 2, 0, IRIS_WAVE_RAMP, 0, crackle, 4);
+    /* MT19937 seeded 5489: the first output is 3499211612 (the reference
+    ** value of the generator's specification). */
+    assert_near(pat_rand(0), 3499211612.0 / 4294967296.0, 1e-15);
+}
+
+/* The pattern's value without the colour map's clamp at 1. */
+static double simple(enum iris_pattern_kind kind, vec3 p)
+{
+    iris_pattern pat;
+    memset(&pat, 0, sizeof pat);
+    pat.kind = kind;
+    pat.frequency = 1;
+    return pat_eval_at(NULL, &pat, p, NULL);
+}
+
+/* Checker, brick and hexagon are exact tilings: values by hand from the
+** definitions in the POV-Ray documentation. */
+static void test_list_patterns(void **state)
+{
+    (void)state;
+    assert_near(simple(IRIS_PAT_CHECKER, v3(0.5, 0.5, 0.5)), 0, 0);
+    assert_near(simple(IRIS_PAT_CHECKER, v3(1.5, 0.5, 0.5)), 1, 0);
+    assert_near(simple(IRIS_PAT_CHECKER, v3(-0.5, 0.5, 0.5)), 1, 0);
+    assert_near(simple(IRIS_PAT_CHECKER, v3(-0.5, -0.5, 0.5)), 0, 0);
+    /* the epsilon puts exact integers in the upper cell */
+    assert_near(simple(IRIS_PAT_CHECKER, v3(1.0, 0.5, 0.5)), 1, 0);
+
+    iris_pattern brick;
+    memset(&brick, 0, sizeof brick);
+    brick.kind = IRIS_PAT_BRICK;
+    brick.brick_size = v3(8, 3, 4.5);
+    brick.mortar = 0.5;
+    /* mortar layer: y just above a multiple of the brick height */
+    assert_near(pat_eval_at(NULL, &brick, v3(2, 2.8, 1), NULL), 0, 0);
+    /* inside the first brick course, away from the vertical joints */
+    assert_near(pat_eval_at(NULL, &brick, v3(2, 1.5, 1), NULL), 1, 0);
+    /* odd course: the vertical joint at x = 0 (x + mortar in [0, m]) */
+    assert_near(pat_eval_at(NULL, &brick, v3(-0.3, 1.5, 1), NULL), 0, 0);
+    /* even course (y in [3,6)): joints shifted by half a brick, x = 4 */
+    assert_near(pat_eval_at(NULL, &brick, v3(3.8, 4.5, 1), NULL), 0, 0);
+    assert_near(pat_eval_at(NULL, &brick, v3(-0.3, 4.5, 2.0), NULL), 1, 0);
+
+    /* hexagon: colours checked point by point against POV-Ray 3.7.0.10
+    ** (plane y=0, pigment { hexagon }, its blue/green/red default map,
+    ** seen by a 1-pixel orthographic camera above each point) */
+    assert_near(simple(IRIS_PAT_HEXAGON, v3(0.01, 0, 0.01)), 0, 0);
+    assert_near(simple(IRIS_PAT_HEXAGON, v3(1.5, 0, 0.866)), 2, 0);
+    assert_near(simple(IRIS_PAT_HEXAGON, v3(-1.5, 0, 0.866)), 2, 0);
+    assert_near(simple(IRIS_PAT_HEXAGON, v3(0, 0, 1.732)), 1, 0);
+    assert_near(simple(IRIS_PAT_HEXAGON, v3(3.0, 0, 0.01)), 0, 0);
+    assert_near(simple(IRIS_PAT_HEXAGON, v3(0.7, 0, -0.5)), 0, 0);
+}
+
+static void test_value_patterns(void **state)
+{
+    (void)state;
+    iris_pattern g;
+    memset(&g, 0, sizeof g);
+    g.kind = IRIS_PAT_GRADIENT;
+    g.vector = v3(1, 0, 0);
+    g.frequency = 1;
+    assert_near(pat_eval_at(NULL, &g, v3(0.25, 7, 7), NULL), 0.25, 1e-12);
+    assert_near(pat_eval_at(NULL, &g, v3(1.25, 7, 7), NULL), 0.25, 1e-12);
+    /* negative values wrap into [0, 1) */
+    assert_near(pat_eval_at(NULL, &g, v3(-0.25, 7, 7), NULL), 0.75, 1e-12);
+    /* frequency 2, phase 0.1 */
+    g.frequency = 2;
+    g.phase = 0.1;
+    assert_near(pat_eval_at(NULL, &g, v3(0.2, 0, 0), NULL), 0.5, 1e-12);
+    /* sine wave: 0.5 (1 + sin(2 pi v)) */
+    g.frequency = 1;
+    g.phase = 0;
+    g.wave = IRIS_WAVE_SINE;
+    assert_near(pat_eval_at(NULL, &g, v3(0.25, 0, 0), NULL), 1.0, 1e-12);
+    g.wave = IRIS_WAVE_TRIANGLE;
+    assert_near(pat_eval_at(NULL, &g, v3(0.25, 0, 0), NULL), 0.5, 1e-12);
+    assert_near(pat_eval_at(NULL, &g, v3(0.75, 0, 0), NULL), 0.5, 1e-12);
+
+    /* density patterns are 1 at the centre and 0 from radius 1 on */
+    assert_near(simple(IRIS_PAT_SPHERICAL, v3(0.6, 0, 0.8)), 0.0, 1e-12);
+    assert_near(simple(IRIS_PAT_SPHERICAL, v3(0.3, 0, 0.4)), 0.5, 1e-12);
+    assert_near(simple(IRIS_PAT_BOXED, v3(0.25, -0.5, 0.1)), 0.5, 1e-12);
+    assert_near(simple(IRIS_PAT_CYLINDRICAL, v3(0.3, 9, 0.4)), 0.5, 1e-12);
+    assert_near(simple(IRIS_PAT_PLANAR, v3(5, -0.25, 5)), 0.75, 1e-12);
+    assert_near(simple(IRIS_PAT_ONION, v3(0, 2.5, 0)), 0.5, 1e-12);
+    /* radial: 0.25 + (atan2(x, z) + pi) / 2 pi */
+    assert_near(simple(IRIS_PAT_RADIAL, v3(0, 0, 1)), 0.75, 1e-12);
+    assert_near(simple(IRIS_PAT_RADIAL, v3(-1, 0, 0)), 0.5, 1e-12);
+}
+
+/* A pattern transform maps world to pattern space with 'inv'. */
+static void test_pattern_transform(void **state)
+{
+    (void)state;
+    iris_pattern g;
+    memset(&g, 0, sizeof g);
+    g.kind = IRIS_PAT_GRADIENT;
+    g.vector = v3(1, 0, 0);
+    g.has_transform = true;
+    xf_identity(&g.transform);
+    /* scale 4: m = diag(4), inv = diag(1/4) */
+    for (int i = 0; i < 3; i++) {
+        g.transform.m[i][i] = 4;
+        g.transform.inv[i][i] = 0.25;
+    }
+    assert_near(pat_value(NULL, &g, v3(1, 0, 0), NULL), 0.25, 1e-12);
+}
+
+static iris_colour rgb(double r, double g, double b)
+{
+    iris_colour c = { r, g, b, 0, 0 };
+    return c;
+}
+
+/* Colour map: linear blend between neighbours, ends held. */
+static void test_colour_map(void **state)
+{
+    (void)state;
+    iris_map_entry e[3];
+    memset(e, 0, sizeof e);
+    e[0].value = 0.2; e[0].colour = rgb(1, 0, 0);
+    e[1].value = 0.6; e[1].colour = rgb(0, 1, 0);
+    e[2].value = 0.6; e[2].colour = rgb(0, 0, 1);
+    iris_pigment pig;
+    memset(&pig, 0, sizeof pig);
+    pig.pattern.kind = IRIS_PAT_GRADIENT;
+    pig.pattern.vector = v3(1, 0, 0);
+    pig.n_entries = 3;
+    pig.entries = e;
+    struct mat_point pt;
+    memset(&pt, 0, sizeof pt);
+    iris_colour c;
+    pt.p = v3(0.1, 0, 0); /* below the first entry */
+    assert_true(mat_eval_pigment(NULL, &pig, &pt, &c));
+    assert_near(c.r, 1, 1e-12);
+    pt.p = v3(0.3, 0, 0); /* a quarter of the way from 0.2 to 0.6 */
+    mat_eval_pigment(NULL, &pig, &pt, &c);
+    assert_near(c.r, 0.75, 1e-12);
+    assert_near(c.g, 0.25, 1e-12);
+    pt.p = v3(0.7, 0, 0); /* past the sharp step at 0.6 */
+    mat_eval_pigment(NULL, &pig, &pt, &c);
+    assert_near(c.b, 1, 1e-12);
+    assert_near(c.g, 0, 1e-12);
+    /* checker without a map: POV-Ray's blue/green default */
+    iris_pigment ck;
+    memset(&ck, 0, sizeof ck);
+    ck.pattern.kind = IRIS_PAT_CHECKER;
+    pt.p = v3(0.5, 0.5, 0.5);
+    mat_eval_pigment(NULL, &ck, &pt, &c);
+    assert_near(c.b, 1, 0);
+    pt.p = v3(1.5, 0.5, 0.5);
+    mat_eval_pigment(NULL, &ck, &pt, &c);
+    assert_near(c.g, 1, 0);
+}
+
+/* A texture_map splits into two weighted stacks; layers stack on top. */
+static void test_texture_stacks(void **state)
+{
+    (void)state;
+    iris_finish f;
+    memset(&f, 0, sizeof f);
+    f.diffuse = 0.6;
+    iris_pigment pa, pb, pc;
+    memset(&pa, 0, sizeof pa);
+    memset(&pb, 0, sizeof pb);
+    memset(&pc, 0, sizeof pc);
+    pa.colour = rgb(1, 0, 0);
+    pb.colour = rgb(0, 0, 1);
+    pc.colour.t = 0.5;
+    iris_texture ta, tb, top, map;
+    memset(&ta, 0, sizeof ta);
+    memset(&tb, 0, sizeof tb);
+    memset(&top, 0, sizeof top);
+    memset(&map, 0, sizeof map);
+    ta.pigment = &pa; ta.finish = &f;
+    tb.pigment = &pb; tb.finish = &f;
+    iris_map_entry e[2];
+    memset(e, 0, sizeof e);
+    e[0].value = 0; e[0].texture = &ta;
+    e[1].value = 1; e[1].texture = &tb;
+    map.map_pattern.kind = IRIS_PAT_GRADIENT;
+    map.map_pattern.vector = v3(1, 0, 0);
+    map.n_entries = 2;
+    map.entries = e;
+    top.pigment = &pc; top.finish = &f; top.next = &map;
+    struct mat_point pt;
+    memset(&pt, 0, sizeof pt);
+    pt.p = v3(0.25, 0, 0);
+    pt.n = v3(0, 1, 0);
+    struct mat_eval ev;
+    mat_eval_texture(NULL, &top, &pt, &ev);
+    assert_int_equal(ev.n_stacks, 2);
+    double wa = 0, wb = 0;
+    for (int s = 0; s < ev.n_stacks; s++) {
+        assert_int_equal(ev.stacks[s].n, 2);
+        const struct mat_layer *l0 = &ev.layers[ev.stacks[s].first];
+        const struct mat_layer *l1 = &ev.layers[ev.stacks[s].first + 1];
+        assert_near(l0->pigment.t, 0.5, 0); /* the top layer first */
+        if (l1->pigment.r == 1) wa = ev.stacks[s].weight;
+        if (l1->pigment.b == 1) wb = ev.stacks[s].weight;
+    }
+    assert_near(wa, 0.75, 1e-12);
+    assert_near(wb, 0.25, 1e-12);
+}
+
+/* POV-Ray's fresnel formula is the exact unpolarised Fresnel reflectance
+** of a dielectric: compare with Rs and Rp from Snell's law. */
+static void test_fresnel(void **state)
+{
+    (void)state;
+    assert_near(mat_fresnel(1.0, 1.5), 0.04, 1e-12);
+    assert_near(mat_fresnel(0.0, 1.5), 1.0, 1e-12);
+    for (double deg = 5; deg < 89; deg += 7) {
+        double ti = deg * M_PI / 180, n = 1.5;
+        double tt = asin(sin(ti) / n);
+        double rs = pow(sin(ti - tt) / sin(ti + tt), 2);
+        double rp = pow(tan(ti - tt) / tan(ti + tt), 2);
+        assert_near(mat_fresnel(cos(ti), n), 0.5 * (rs + rp), 1e-12);
+    }
+    /* inside glass past the critical angle: total reflection */
+    assert_near(mat_fresnel(cos(60 * M_PI / 180), 1 / 1.5), 1.0, 0);
+}
+
+static void test_reflectivity(void **state)
+{
+    (void)state;
+    iris_finish f;
+    memset(&f, 0, sizeof f);
+    f.reflection_max = rgb(0.8, 0.8, 0.8);
+    f.reflection_min = rgb(0.2, 0.2, 0.2);
+    f.reflection_falloff = 1;
+    struct mat_layer l;
+    memset(&l, 0, sizeof l);
+    l.finish = &f;
+    double r[3], w;
+    /* standard: (1 - c) max + c min */
+    assert_true(mat_layer_reflectivity(&l, 0.25, 1, r, &w));
+    assert_near(r[0], 0.75 * 0.8 + 0.25 * 0.2, 1e-12);
+    assert_near(w, 0.8, 1e-12);
+    /* fresnel at normal incidence into n = 1.5: 0.04 max + 0.96 min */
+    f.reflection_fresnel = true;
+    mat_layer_reflectivity(&l, 1.0, 1.5, r, &w);
+    assert_near(r[1], 0.04 * 0.8 + 0.96 * 0.2, 1e-12);
+    assert_near(w, r[1], 1e-12);
+    /* metallic 1 at normal incidence tints by the pigment: F(0) = 0 */
+    f.reflection_fresnel = false;
+    f.reflection_metallic = 1;
+    l.pigment = rgb(1, 0.5, 0);
+    mat_layer_reflectivity(&l, 1.0, 1, r, &w);
+    assert_near(r[0], 0.2, 1e-12);
+    assert_near(r[1], 0.1, 1e-12);
+    assert_near(r[2], 0.0, 1e-12);
+}
+
+static void test_transmittance(void **state)
+{
+    (void)state;
+    iris_colour c = { 1, 0.5, 0.25, 0.4, 0.2 };
+    double t[3];
+    mat_rgb_transm(&c, t);
+    assert_near(t[0], 0.6, 1e-12);
+    assert_near(t[1], 0.4, 1e-12);
+    assert_near(t[2], 0.3, 1e-12);
+    assert_near(mat_opacity(NULL, &c), 0.4, 1e-12);
+    const double w[3] = { 1, 1, 1 };
+    assert_near(mat_greyscale(w), 1.0, 1e-12);
+}
+
+/* Bumps: displaced by DNoise in pattern space, still a unit normal on the
+** ray's side; amount 0 leaves it alone. */
+static void test_normals(void **state)
+{
+    (void)state;
+    iris_normal nrm;
+    memset(&nrm, 0, sizeof nrm);
+    nrm.pattern.kind = IRIS_PAT_BUMPS;
+    nrm.amount = 0.5;
+    struct mat_point pt;
+    memset(&pt, 0, sizeof pt);
+    pt.p = v3(0.3, 0.1, 0.7);
+    vec3 n0 = v3(0, 1, 0);
+    vec3 n = mat_perturb_normal(NULL, &nrm, &pt, n0);
+    assert_near(v3_len(n), 1, 1e-12);
+    vec3 d = noise_vector(pt.p);
+    vec3 expect = v3_norm(v3_madd(n0, d, 0.5));
+    assert_near(n.x, expect.x, 1e-12);
+    assert_near(n.z, expect.z, 1e-12);
+    nrm.amount = 0;
+    n = mat_perturb_normal(NULL, &nrm, &pt, n0);
+    assert_near(n.y, 1, 1e-12);
+    /* gradient x on the tetrahedron: sum_i v(q + d p_i) p_i = d (4/3) x,
+    ** times -5 amount 0.02/d: a displacement of -(4/3) 5 (0.5) 0.02 x */
+    iris_normal g;
+    memset(&g, 0, sizeof g);
+    g.pattern.kind = IRIS_PAT_GRADIENT;
+    g.pattern.vector = v3(1, 0, 0);
+    g.amount = 0.5;
+    pt.p = v3(0.5, 0, 0);
+    n = mat_perturb_normal(NULL, &g, &pt, n0);
+    double a = 4.0 / 3.0 * 5 * 0.5 * 0.02;
+    /* POV-Ray's tetrahedron is given to 9 digits */
+    assert_near(n.x, -a / sqrt(1 + a * a), 1e-8);
+    assert_near(n.y, 1 / sqrt(1 + a * a), 1e-8);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_noise_generators),
+        cmocka_unit_test(test_noise_patterns),
+        cmocka_unit_test(test_cells_crackle),
+        cmocka_unit_test(test_list_patterns),
+        cmocka_unit_test(test_value_patterns),
+        cmocka_unit_test(test_pattern_transform),
+        cmocka_unit_test(test_colour_map),
+        cmocka_unit_test(test_texture_stacks),
+        cmocka_unit_test(test_fresnel),
+        cmocka_unit_test(test_reflectivity),
+        cmocka_unit_test(test_transmittance),
+        cmocka_unit_test(test_normals),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

@@ -1,0 +1,655 @@
+/* SPDX-License-Identifier: MIT */
+/*
+** test_render.c: camera rays, light attenuation, refraction, and the
+** tracer and eye pass on a scene double (render_double.c) whose answers
+** follow from geometry and POV-Ray's shading formulas
+** (povray-3.7-semantics.md §3, §4.1).
+*/
+#include "config.h"
+
+#include <string.h>
+
+#include "testutil.h"
+
+#include "iris/render.h"
+#include "material/material.h"
+#include "render/camera.h"
+#include "render/eyepass.h"
+#include "render/light.h"
+#include "render/trace.h"
+#include "math/transform.h"
+#include "render_double.h"
+#include "util/mem.h"
+
+/* ------------------------------------------------------------------ */
+/* A small scene built by hand                                          */
+/* ------------------------------------------------------------------ */
+
+#define MAX_OBJ 8
+
+struct world {
+    iris_scene scene;
+    iris_object obj[MAX_OBJ];
+    iris_object *objp[MAX_OBJ];
+    iris_texture tex[MAX_OBJ];
+    iris_pigment pig[MAX_OBJ];
+    iris_finish fin[MAX_OBJ];
+    iris_interior in[MAX_OBJ];
+    iris_light light[4];
+    iris_light *lightp[4];
+    struct dbl_scene dbl;
+    struct rquery q;
+    struct mat_ctx *mat;
+    struct tracer tr;
+    struct trace_ctx ctx;
+};
+
+static void world_init(struct world *w)
+{
+    memset(w, 0, sizeof *w);
+    iris_scene *s = &w->scene;
+    s->version = 3.7;
+    s->settings.max_trace_level = 5;
+    s->settings.adc_bailout = 1.0 / 255;
+    s->settings.ambient_light.r = s->settings.ambient_light.g =
+        s->settings.ambient_light.b = 1;
+    s->settings.noise_generator = 2;
+    s->settings.number_of_waves = 10;
+    s->objects = w->objp;
+    s->lights = w->lightp;
+    s->camera.kind = IRIS_CAM_PERSPECTIVE;
+    s->camera.location = v3(0, 1, -5);
+    s->camera.direction = v3(0, 0, 1);
+    s->camera.right = v3(1.33, 0, 0);
+    s->camera.up = v3(0, 1, 0);
+}
+
+/* A finish with POV-Ray's defaults. */
+static void finish_defaults(iris_finish *f)
+{
+    memset(f, 0, sizeof *f);
+    f->ambient.r = f->ambient.g = f->ambient.b = 0.1;
+    f->diffuse = 0.6;
+    f->brilliance = 1;
+    f->phong_size = 40;
+    f->roughness = 0.05;
+    f->reflection_falloff = 1;
+    f->reflection_exponent = 1;
+    f->legacy_refraction = 1;
+}
+
+static iris_object *add_obj(struct world *w, enum iris_object_kind kind,
+                            double r, double g, double b, double f, double t)
+{
+    int i = w->scene.n_objects++;
+    iris_object *o = &w->obj[i];
+    o->kind = kind;
+    w->pig[i].colour = (iris_colour){ r, g, b, f, t };
+    finish_defaults(&w->fin[i]);
+    w->tex[i].pigment = &w->pig[i];
+    w->tex[i].finish = &w->fin[i];
+    o->texture = &w->tex[i];
+    o->photon_collect = true;
+    w->objp[i] = o;
+    return o;
+}
+
+static iris_object *add_sphere(struct world *w, vec3 c, double rad)
+{
+    iris_object *o = add_obj(w, IRIS_OBJ_SPHERE, 1, 1, 1, 0, 0);
+    o->u.sphere.centre = c;
+    o->u.sphere.radius = rad;
+    return o;
+}
+
+static iris_object *add_plane(struct world *w, vec3 n, double d)
+{
+    iris_object *o = add_obj(w, IRIS_OBJ_PLANE, 1, 1, 1, 0, 0);
+    o->u.plane.normal = n;
+    o->u.plane.distance = d;
+    return o;
+}
+
+static iris_finish *fin_of(struct world *w, iris_object *o)
+{
+    return &w->fin[o - w->obj];
+}
+
+static iris_pigment *pig_of(struct world *w, iris_object *o)
+{
+    return &w->pig[o - w->obj];
+}
+
+static iris_interior *glass(struct world *w, iris_object *o, double ior)
+{
+    iris_interior *in = &w->in[o - w->obj];
+    in->ior = ior;
+    in->dispersion = 1;
+    in->dispersion_samples = 7;
+    o->interior = in;
+    return in;
+}
+
+static iris_light *add_light(struct world *w, vec3 at)
+{
+    int i = w->scene.n_lights++;
+    iris_light *l = &w->light[i];
+    memset(l, 0, sizeof *l);
+    l->location = at;
+    l->point_at = v3(0, 0, 1);
+    l->colour = (iris_colour){ 1, 1, 1, 0, 0 };
+    l->adaptive = 100;
+    w->lightp[i] = l;
+    return l;
+}
+
+static void world_build(struct world *w, int quality)
+{
+    w->dbl.n = w->scene.n_objects;
+    w->dbl.objs = w->objp;
+    dbl_query(&w->dbl, &w->q);
+    assert_int_equal(mat_ctx_create(&w->scene, NULL, &w->mat), IRIS_OK);
+    assert_true(tracer_init(&w->tr, &w->scene, w->mat, &w->q, quality));
+    assert_true(trace_ctx_init(&w->ctx, &w->tr));
+}
+
+static void world_fini(struct world *w)
+{
+    trace_ctx_fini(&w->ctx);
+    tracer_fini(&w->tr);
+    mat_ctx_destroy(w->mat);
+}
+
+/* Traces one ray from 'o' along 'd' (normalised here). */
+static void shoot(struct world *w, vec3 o, vec3 d, double rgb[3])
+{
+    struct tray r;
+    memset(&r, 0, sizeof r);
+    r.r.o = o;
+    r.r.d = v3_norm(d);
+    trace_containing(&w->tr, o, &r.st);
+    w->ctx.level = 0;
+    trace_ray(&w->ctx, &r, 1.0, false, rgb);
+}
+
+/* ------------------------------------------------------------------ */
+/* Camera                                                               */
+/* ------------------------------------------------------------------ */
+
+/* §3.8: dir = normalize(D + x0 R + y0 U), x0 = (x+.5)/W - .5,
+** y0 = .5 - (y+.5)/H; and 'angle' sets |D| = .5 |R| / tan(angle/2), so
+** the image's left edge is angle/2 off the axis. */
+static void test_camera_perspective(void **state)
+{
+    (void)state;
+    iris_camera cam;
+    memset(&cam, 0, sizeof cam);
+    cam.kind = IRIS_CAM_PERSPECTIVE;
+    cam.location = v3(1, 2, 3);
+    cam.right = v3(1.33, 0, 0);
+    cam.up = v3(0, 1, 0);
+    double angle = 60.0;
+    cam.direction = v3(0, 0, 0.5 * 1.33 / tan(angle / 2 * M_PI / 180));
+    ray r;
+    assert_true(camera_ray(&cam, 80, 60, 0, 0, &r));
+    vec3 e = v3_norm(v3(-0.49375 * 1.33, 0.5 - 0.5 / 60, cam.direction.z));
+    assert_near(r.d.x, e.x, 1e-12);
+    assert_near(r.d.y, e.y, 1e-12);
+    assert_near(r.d.z, e.z, 1e-12);
+    assert_near(r.o.x, 1, 0);
+    /* the left edge of the image, on the horizon: 30 degrees off axis */
+    assert_true(camera_ray(&cam, 80, 60, -0.5, 29.5, &r));
+    assert_near(acos(r.d.z) * 180 / M_PI, angle / 2, 1e-9);
+    assert_true(r.d.x < 0);
+}
+
+static void test_camera_orthographic(void **state)
+{
+    (void)state;
+    iris_camera cam;
+    memset(&cam, 0, sizeof cam);
+    cam.kind = IRIS_CAM_ORTHOGRAPHIC;
+    cam.location = v3(0, 0, -1);
+    cam.direction = v3(0, 0, 1);
+    cam.right = v3(8, 0, 0);
+    cam.up = v3(0, 8, 0);
+    ray r;
+    assert_true(camera_ray(&cam, 8, 8, 0, 0, &r));
+    /* pixel (0,0) looks from (8 x0, 8 y0) with x0 = -7/16, y0 = 7/16 */
+    assert_near(r.o.x, -3.5, 1e-12);
+    assert_near(r.o.y, 3.5, 1e-12);
+    assert_near(r.d.z, 1, 1e-12);
+}
+
+/* ------------------------------------------------------------------ */
+/* Lights                                                               */
+/* ------------------------------------------------------------------ */
+
+static void test_light_spot(void **state)
+{
+    (void)state;
+    iris_light l;
+    memset(&l, 0, sizeof l);
+    l.kind = IRIS_LIGHT_SPOT;
+    l.location = v3(0, 10, 0);
+    l.point_at = v3(0, 0, 0);
+    l.radius = 10;
+    l.falloff = 20;
+    struct rlight rl;
+    light_prepare(&l, &rl);
+    /* a point at angle 'a' off the spot axis, 10 units down */
+    double angles[] = { 5, 10, 15, 20, 25 };
+    double expect[5];
+    for (int i = 0; i < 5; i++) {
+        double k = cos(angles[i] * M_PI / 180);
+        double c10 = cos(10 * M_PI / 180), c20 = cos(20 * M_PI / 180);
+        double t = (k - c20) / (c10 - c20);
+        expect[i] = k >= c10 ? 1 : k <= c20 ? 0 : 3 * t * t - 2 * t * t * t;
+    }
+    for (int i = 0; i < 5; i++) {
+        double a = angles[i] * M_PI / 180;
+        vec3 p = v3(10 * tan(a), 0, 0);
+        vec3 L;
+        double depth;
+        light_ray(&rl, p, v3(0, 0, 0), &L, &depth);
+        assert_near(light_attenuation(&rl, p, L, depth), expect[i], 1e-12);
+    }
+    assert_near(expect[2] > 0 && expect[2] < 1, 1, 0);
+    /* tightness 10: kappa^10 inside the cone */
+    l.tightness = 10;
+    light_prepare(&l, &rl);
+    vec3 p = v3(10 * tan(5 * M_PI / 180), 0, 0), L;
+    double depth;
+    light_ray(&rl, p, v3(0, 0, 0), &L, &depth);
+    assert_near(light_attenuation(&rl, p, L, depth),
+                pow(cos(5 * M_PI / 180), 10), 1e-12);
+}
+
+static void test_light_fade_cylinder(void **state)
+{
+    (void)state;
+    iris_light l;
+    memset(&l, 0, sizeof l);
+    l.location = v3(0, 4, 0);
+    l.fade_distance = 2;
+    l.fade_power = 2;
+    struct rlight rl;
+    light_prepare(&l, &rl);
+    vec3 L;
+    double depth;
+    light_ray(&rl, v3(0, 0, 0), v3(0, 0, 0), &L, &depth);
+    assert_near(depth, 4, 1e-12);
+    /* 2 / (1 + (4/2)^2) */
+    assert_near(light_attenuation(&rl, v3(0, 0, 0), L, depth), 0.4, 1e-12);
+
+    /* cylinder light along -y, radius .5, falloff 1 */
+    memset(&l, 0, sizeof l);
+    l.kind = IRIS_LIGHT_CYLINDER;
+    l.location = v3(0, 10, 0);
+    l.point_at = v3(0, 0, 0);
+    l.radius = 0.5;
+    l.falloff = 1;
+    light_prepare(&l, &rl);
+    light_ray(&rl, v3(0.2, 0, 0), v3(0, 0, 0), &L, &depth);
+    assert_near(L.y, 1, 1e-12);
+    assert_near(depth, 10, 1e-12);
+    assert_near(light_attenuation(&rl, v3(0.2, 0, 0), L, depth), 1, 1e-12);
+    /* 0.75 from the axis: s(t) on [0, 0.5] at 1 - .75 = .25 -> t = .5 */
+    assert_near(light_attenuation(&rl, v3(0.75, 0, 0), L, depth), 0.5,
+                1e-12);
+    assert_near(light_attenuation(&rl, v3(1.5, 0, 0), L, depth), 0, 0);
+}
+
+/* ------------------------------------------------------------------ */
+/* Refraction                                                           */
+/* ------------------------------------------------------------------ */
+
+static void test_refraction_snell(void **state)
+{
+    (void)state;
+    vec3 n = v3(0, 1, 0);
+    for (double deg = 0; deg < 89; deg += 11) {
+        double a = deg * M_PI / 180;
+        vec3 d = v3(sin(a), -cos(a), 0), t;
+        assert_true(trace_refract_dir(d, n, 1 / 1.5, &t));
+        assert_near(v3_len(t), 1, 1e-12);
+        /* sin(theta_t) = sin(theta_i) / 1.5, bent towards the normal */
+        assert_near(t.x, sin(a) / 1.5, 1e-12);
+        assert_true(t.y < 0);
+    }
+    /* from glass: total internal reflection past asin(1/1.5) = 41.8 deg */
+    vec3 d = v3(sin(0.70), -cos(0.70), 0), t;
+    assert_true(trace_refract_dir(d, n, 1.5, &t));
+    d = v3(sin(0.75), -cos(0.75), 0);
+    assert_false(trace_refract_dir(d, n, 1.5, &t));
+}
+
+/* ------------------------------------------------------------------ */
+/* Shading                                                              */
+/* ------------------------------------------------------------------ */
+
+/* A white plane under a point light: ambient + diffuse |N.L|. */
+static void test_diffuse(void **state)
+{
+    (void)state;
+    struct world *w = iris_calloc(1, sizeof *w);
+    world_init(w);
+    add_plane(w, v3(0, 1, 0), 0);
+    add_light(w, v3(0, 10, 0));
+    world_build(w, 9);
+    double c[3];
+    shoot(w, v3(3, 5, -1), v3(0, -5, 1), c);
+    double cosl = 10 / sqrt(9 + 100);
+    assert_near(c[0], 0.1 + 0.6 * cosl, 1e-9);
+    assert_near(c[2], 0.1 + 0.6 * cosl, 1e-9);
+    /* brilliance 2 and phong: 0.6 cos^2 + phong (R.L)^40 */
+    iris_finish *f = fin_of(w, w->objp[0]);
+    f->brilliance = 2;
+    f->phong = 0.5;
+    shoot(w, v3(3, 5, -1), v3(0, -5, 1), c);
+    vec3 d = v3_norm(v3(0, -5, 1));
+    vec3 R = v3(d.x, -d.y, d.z);
+    vec3 L = v3_norm(v3(-3, 10, 0));
+    double rl = v3_dot(R, L);
+    assert_near(c[1], 0.1 + 0.6 * cosl * cosl + 0.5 * pow(rl, 40), 1e-9);
+    world_fini(w);
+    iris_free(w);
+}
+
+/* Shadows: an opaque sphere blocks the light; a filtering one tints it by
+** rgb*filter + transmit (§3.6). */
+static void test_shadows(void **state)
+{
+    (void)state;
+    struct world *w = iris_calloc(1, sizeof *w);
+    world_init(w);
+    add_plane(w, v3(0, 1, 0), 0);
+    iris_object *s = add_sphere(w, v3(0, 5, 0), 1);
+    add_light(w, v3(0, 10, 0));
+    world_build(w, 9);
+    double c[3];
+    shoot(w, v3(0, 2, -3), v3(0, -2, 3), c); /* hits the plane at 0 */
+    assert_near(c[0], 0.1, 1e-9);
+    *pig_of(w, s) = (iris_pigment){ .colour = { 1, 0.5, 0, 0.8, 0.1 } };
+    shoot(w, v3(0, 2, -3), v3(0, -2, 3), c);
+    /* two surfaces of the sphere filter: (rgb f + t)^2 */
+    assert_near(c[0], 0.1 + 0.6 * pow(0.9, 2), 1e-9);
+    assert_near(c[1], 0.1 + 0.6 * pow(0.5, 2), 1e-9);
+    assert_near(c[2], 0.1 + 0.6 * pow(0.1, 2), 1e-9);
+    /* no_shadow objects cast none */
+    s->no_shadow = true;
+    shoot(w, v3(0, 2, -3), v3(0, -2, 3), c);
+    assert_near(c[0], 0.7, 1e-9);
+    world_fini(w);
+    iris_free(w);
+}
+
+/* A 2x2 area light without jitter samples its four corners; one blocked
+** corner leaves 3/4 of the light (§3.5). */
+static void test_area_light(void **state)
+{
+    (void)state;
+    struct world *w = iris_calloc(1, sizeof *w);
+    world_init(w);
+    iris_object *pl = add_plane(w, v3(0, 1, 0), 0);
+    fin_of(w, pl)->ambient = (iris_colour){ 0, 0, 0, 0, 0 };
+    fin_of(w, pl)->diffuse = 1;
+    add_sphere(w, v3(0.5, 5, 0.5), 0.3);
+    iris_light *l = add_light(w, v3(0, 10, 0));
+    l->area = true;
+    l->axis1 = v3(2, 0, 0);
+    l->axis2 = v3(0, 0, 2);
+    l->size1 = l->size2 = 2;
+    world_build(w, 9);
+    double c[3];
+    shoot(w, v3(0, 1, -1), v3(0, -1, 1), c);
+    assert_near(c[0], 0.75, 1e-9);
+    world_fini(w);
+    /* the same at quality 4: a point light, the centre ray unblocked */
+    world_build(w, 4);
+    shoot(w, v3(0, 1, -1), v3(0, -1, 1), c);
+    assert_near(c[0], 1.0, 1e-9);
+    world_fini(w);
+    iris_free(w);
+}
+
+/* A mirror returns the background; reflection 0.5 half of it. */
+static void test_reflection(void **state)
+{
+    (void)state;
+    struct world *w = iris_calloc(1, sizeof *w);
+    world_init(w);
+    w->scene.background = (iris_colour){ 0.2, 0.4, 0.6, 0, 1 };
+    iris_object *pl = add_plane(w, v3(0, 1, 0), 0);
+    iris_finish *f = fin_of(w, pl);
+    f->ambient = (iris_colour){ 0, 0, 0, 0, 0 };
+    f->diffuse = 0;
+    f->reflection_max = f->reflection_min = (iris_colour){ 1, 1, 1, 0, 0 };
+    world_build(w, 9);
+    double c[3];
+    shoot(w, v3(0, 1, 0), v3(0, -1, 1), c);
+    assert_near(c[1], 0.4, 1e-12);
+    f->reflection_max = f->reflection_min = (iris_colour){ 0.5, 0.5, 0.5, 0, 0 };
+    shoot(w, v3(0, 1, 0), v3(0, -1, 1), c);
+    assert_near(c[2], 0.3, 1e-12);
+    /* quality 7 has no reflection */
+    world_fini(w);
+    world_build(w, 7);
+    shoot(w, v3(0, 1, 0), v3(0, -1, 1), c);
+    assert_near(c[2], 0.0, 0);
+    world_fini(w);
+    iris_free(w);
+}
+
+/* A clear glass sphere: through the centre the ray goes straight on and
+** sees the background; fade over the 2 units inside gives
+** fc + (1 - fc)/(1 + (d/fd)^fp) (§3.3); max_trace_level 1 leaves black. */
+static void test_refraction_fade(void **state)
+{
+    (void)state;
+    struct world *w = iris_calloc(1, sizeof *w);
+    world_init(w);
+    w->scene.background = (iris_colour){ 0.3, 0.6, 0.9, 0, 1 };
+    iris_object *s = add_sphere(w, v3(0, 0, 0), 1);
+    *pig_of(w, s) = (iris_pigment){ .colour = { 1, 1, 1, 1, 0 } };
+    iris_finish *f = fin_of(w, s);
+    f->ambient = (iris_colour){ 0, 0, 0, 0, 0 };
+    f->diffuse = 0;
+    iris_interior *in = glass(w, s, 1.5);
+    world_build(w, 9);
+    double c[3];
+    shoot(w, v3(0, 0, -5), v3(0, 0, 1), c);
+    assert_near(c[0], 0.3, 1e-9);
+    in->fade_distance = 1;
+    in->fade_power = 1;
+    in->fade_colour = (iris_colour){ 0.5, 0, 0, 0, 0 };
+    shoot(w, v3(0, 0, -5), v3(0, 0, 1), c);
+    assert_near(c[0], 0.3 * (0.5 + 0.5 / 3), 1e-9);
+    assert_near(c[1], 0.6 / 3, 1e-9);
+    world_fini(w);
+    /* entering is level 1; the refracted ray would be level 2 > 1 */
+    w->scene.settings.max_trace_level = 1;
+    world_build(w, 9);
+    shoot(w, v3(0, 0, -5), v3(0, 0, 1), c);
+    assert_near(c[1], 0, 0);
+    world_fini(w);
+    iris_free(w);
+}
+
+/* Off-centre, the ray is bent twice by Snell's law: compare where it
+** meets a gradient-coloured wall with the analytic exit direction. */
+static void test_refraction_path(void **state)
+{
+    (void)state;
+    struct world *w = iris_calloc(1, sizeof *w);
+    world_init(w);
+    iris_object *s = add_sphere(w, v3(0, 0, 0), 1);
+    *pig_of(w, s) = (iris_pigment){ .colour = { 1, 1, 1, 0, 1 } };
+    fin_of(w, s)->ambient = (iris_colour){ 0, 0, 0, 0, 0 };
+    fin_of(w, s)->diffuse = 0;
+    glass(w, s, 1.5);
+    /* wall z = 10 whose red channel is its x coordinate (ambient 1) */
+    iris_object *wall = add_plane(w, v3(0, 0, -1), -10);
+    iris_pigment *wp = pig_of(w, wall);
+    static iris_map_entry e[2];
+    memset(e, 0, sizeof e);
+    e[0].value = 0; e[0].colour = (iris_colour){ 0, 0, 0, 0, 0 };
+    e[1].value = 1; e[1].colour = (iris_colour){ 1, 1, 1, 0, 0 };
+    wp->pattern.kind = IRIS_PAT_GRADIENT;
+    wp->pattern.vector = v3(0, 1, 0);
+    wp->pattern.has_transform = true;
+    /* world y in [-5, 5] maps to the gradient's [0, 1]: y' = y/10 + .5 */
+    xf_identity(&wp->pattern.transform);
+    wp->pattern.transform.m[1][1] = 10;
+    wp->pattern.transform.m[1][3] = -5;
+    wp->pattern.transform.inv[1][1] = 0.1;
+    wp->pattern.transform.inv[1][3] = 0.5;
+    wp->n_entries = 2;
+    wp->entries = e;
+    iris_finish *wf = fin_of(w, wall);
+    wf->ambient = (iris_colour){ 1, 1, 1, 0, 0 };
+    wf->diffuse = 0;
+    world_build(w, 9);
+    double h = 0.3, c[3];
+    shoot(w, v3(0, h, -5), v3(0, 0, 1), c);
+    /* analytic: entry at (0, h, -sqrt(1-h^2)); refract, exit, refract */
+    vec3 p1 = v3(0, h, -sqrt(1 - h * h)), t1, t2;
+    assert_true(trace_refract_dir(v3(0, 0, 1), v3_norm(p1), 1 / 1.5, &t1));
+    double b = v3_dot(p1, t1);
+    vec3 p2 = v3_madd(p1, t1, -2 * b);
+    assert_true(trace_refract_dir(t1, v3_neg(v3_norm(p2)), 1.5, &t2));
+    double ywall = p2.y + (10 - p2.z) / t2.z * t2.y;
+    assert_true(ywall < 0 && ywall > -5); /* crossed the axis */
+    assert_near(c[0], ywall / 10 + 0.5, 1e-9);
+    world_fini(w);
+    iris_free(w);
+}
+
+/* ------------------------------------------------------------------ */
+/* Eye pass                                                             */
+/* ------------------------------------------------------------------ */
+
+static iris_render_options aa_options(int w, int h)
+{
+    iris_render_options o;
+    iris_render_defaults(&o);
+    o.width = w;
+    o.height = h;
+    o.seed = 7;
+    return o;
+}
+
+static void render(struct world *w, const iris_render_options *o, int threads,
+                   iris_image *img, iris_render_stats *st)
+{
+    img->width = o->width;
+    img->height = o->height;
+    img->pixels = iris_calloc((size_t)o->width * o->height * 4,
+                              sizeof(float));
+    assert_non_null(img->pixels);
+    assert_int_equal(eyepass_run(&w->tr, o, threads, img, st), IRIS_OK);
+}
+
+/* Method 1 (§4.1): flat regions keep their single sample; a pixel on the
+** sphere's silhouette is averaged to a value between the two sides. The
+** image is the same with 1 and 3 threads. */
+static void test_eyepass_aa(void **state)
+{
+    (void)state;
+    struct world *w = iris_calloc(1, sizeof *w);
+    world_init(w);
+    w->scene.background = (iris_colour){ 0, 0, 0, 0, 1 };
+    iris_object *s = add_sphere(w, v3(0, 1, 0), 1);
+    iris_finish *f = fin_of(w, s);
+    f->ambient = (iris_colour){ 1, 1, 1, 0, 0 };
+    f->diffuse = 0;
+    world_build(w, 9);
+    iris_render_options o = aa_options(40, 30);
+    iris_image plain, aa, aa3;
+    iris_render_stats st;
+    memset(&st, 0, sizeof st);
+    render(w, &o, 1, &plain, &st);
+    uint64_t plain_rays = st.rays_traced;
+    o.aa = IRIS_AA_POV1;
+    o.aa_threshold = 0.3;
+    o.aa_depth = 3;
+    memset(&st, 0, sizeof st);
+    render(w, &o, 1, &aa, &st);
+    assert_true(st.rays_traced > plain_rays);
+    render(w, &o, 3, &aa3, NULL);
+    size_t n = (size_t)40 * 30 * 4;
+    assert_memory_equal(aa.pixels, aa3.pixels, n * sizeof(float));
+    int edge = 0;
+    for (size_t i = 0; i < n; i += 4) {
+        float p = plain.pixels[i], a = aa.pixels[i];
+        assert_true(a >= 0.0f && a <= 1.0f);
+        if (p == a)
+            continue;
+        /* a changed pixel must be a partial coverage value */
+        assert_true(a > 0.0f && a < 1.0f);
+        edge++;
+    }
+    assert_true(edge > 0);
+    /* corners are pure background: untouched, 0 */
+    assert_near(aa.pixels[0], 0, 0);
+    /* the centre is inside the sphere: 1 */
+    assert_near(aa.pixels[(15 * 40 + 20) * 4], 1, 0);
+    /* method 2 and stratified give partial values on the edge too */
+    o.aa = IRIS_AA_POV2;
+    iris_image m2;
+    render(w, &o, 2, &m2, NULL);
+    o.aa = IRIS_AA_STRATIFIED;
+    iris_image strat;
+    render(w, &o, 2, &strat, NULL);
+    int partial2 = 0, partial3 = 0;
+    for (size_t i = 0; i < n; i += 4) {
+        partial2 += m2.pixels[i] > 0.01f && m2.pixels[i] < 0.99f;
+        partial3 += strat.pixels[i] > 0.01f && strat.pixels[i] < 0.99f;
+    }
+    assert_true(partial2 > 0 && partial3 > 0);
+    iris_free(plain.pixels);
+    iris_free(aa.pixels);
+    iris_free(aa3.pixels);
+    iris_free(m2.pixels);
+    iris_free(strat.pixels);
+    world_fini(w);
+    iris_free(w);
+}
+
+/* An interrupted render stops with IRIS_EINTR. */
+static void test_eyepass_interrupt(void **state)
+{
+    (void)state;
+    struct world *w = iris_calloc(1, sizeof *w);
+    world_init(w);
+    add_sphere(w, v3(0, 1, 0), 1);
+    world_build(w, 9);
+    iris_render_options o = aa_options(64, 64);
+    volatile int stop = 1;
+    o.interrupt = &stop;
+    iris_image img = { 64, 64, iris_calloc(64 * 64 * 4, sizeof(float)) };
+    assert_int_equal(eyepass_run(&w->tr, &o, 2, &img, NULL), IRIS_EINTR);
+    iris_free(img.pixels);
+    world_fini(w);
+    iris_free(w);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_camera_perspective),
+        cmocka_unit_test(test_camera_orthographic),
+        cmocka_unit_test(test_light_spot),
+        cmocka_unit_test(test_light_fade_cylinder),
+        cmocka_unit_test(test_refraction_snell),
+        cmocka_unit_test(test_diffuse),
+        cmocka_unit_test(test_shadows),
+        cmocka_unit_test(test_area_light),
+        cmocka_unit_test(test_reflection),
+        cmocka_unit_test(test_refraction_fade),
+        cmocka_unit_test(test_refraction_path),
+        cmocka_unit_test(test_eyepass_aa),
+        cmocka_unit_test(test_eyepass_interrupt),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
