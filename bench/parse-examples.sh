@@ -63,8 +63,7 @@ while IFS= read -r scene; do
         124) status=timeout; n_to=$((n_to + 1)) ;;
         *) status=crash; n_crash=$((n_crash + 1)) ;;
     esac
-    diag=$(grep -m1 -E ': (error|warning): ' "$tmp/out" | cut -c1-110)
-    [ "$status" = ok ] && diag=$(grep -m1 -E ': error: ' "$tmp/out" | cut -c1-110)
+    diag=$(grep -m1 -E ': error: ' "$tmp/out" | cut -c1-110)
     [ "$status" = crash ] && diag="exit $rc $diag"
     pov=-
     if [ $with_pov -eq 1 ]; then

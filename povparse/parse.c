@@ -16,6 +16,7 @@
 #include <string.h>
 
 #include "pp.h"
+#include "pp_test.h"
 #include "util/mem.h"
 
 void *pp_alloc(pp_state *ps, size_t n)
@@ -106,7 +107,8 @@ static void release(pp_state *ps)
 
 static enum iris_status run(const char *name, const char *text, size_t len,
                             const iris_parse_options *opts,
-                            iris_scene **out, iris_diag_list *diags)
+                            iris_scene **out, iris_diag_list *diags,
+                            const char *probe, pp_test_result *res)
 {
     *out = NULL;
     pp_state *ps = iris_calloc(1, sizeof *ps);
@@ -176,6 +178,21 @@ static enum iris_status run(const char *name, const char *text, size_t len,
         pp_error_at(ps, c->file, c->off, 1, "directive without #end");
     }
     fill_files(ps);
+    if (probe && res) {
+        pp_sym *s = sym_resolve(sym_lookup(ps, probe, strlen(probe)));
+        memset(res, 0, sizeof *res);
+        if (s) {
+            res->kind = s->val.kind;
+            res->dim = s->val.dim;
+            memcpy(res->v, s->val.v, sizeof res->v);
+            if (s->val.kind == V_STRING)
+                snprintf(res->str, sizeof res->str, "%s", s->val.u.str);
+            if (s->val.kind == V_ARRAY) {
+                res->dim = s->val.u.arr->ndim;
+                res->n = s->val.u.arr->n;
+            }
+        }
+    }
     release(ps);
     iris_free(ps);
     *out = sc;
@@ -191,7 +208,7 @@ enum iris_status iris_parse_file(const char *path,
             *out = NULL;
         return IRIS_EINVAL;
     }
-    return run(path, NULL, 0, opts, out, diags);
+    return run(path, NULL, 0, opts, out, diags, NULL, NULL);
 }
 
 enum iris_status iris_parse_string(const char *name, const char *text,
@@ -204,5 +221,17 @@ enum iris_status iris_parse_string(const char *name, const char *text,
             *out = NULL;
         return IRIS_EINVAL;
     }
-    return run(name ? name : "<string>", text, len, opts, out, diags);
+    return run(name ? name : "<string>", text, len, opts, out, diags, NULL,
+               NULL);
+}
+
+enum iris_status pp_test_value(const char *sdl, const char *name,
+                               const iris_parse_options *opts,
+                               pp_test_result *res, iris_diag_list *diags)
+{
+    iris_scene *scene = NULL;
+    enum iris_status st = run("<test>", sdl, strlen(sdl), opts, &scene,
+                              diags, name, res);
+    iris_scene_destroy(scene);
+    return st;
 }

@@ -377,7 +377,10 @@ struct iris_object {
                  iris_vec3 lo, hi; iris_vec3 centre; double radius;
                  int max_trace; bool all_intersections; } isosurface;
         struct { int order; int n_coeffs; double *coeffs; } poly;
-               /* QUADRIC stored as order-2 POLY; POV-Ray's term order */
+               /* QUADRIC stored as order-2 POLY, its 10 coefficients
+                  as written: A..J of quadric {<A,B,C>,<D,E,F>,<G,H,I>,J}
+                  (x²,y²,z²,xy,xz,yz,x,y,z,1); POLY/cubic/quartic in
+                  POV-Ray's poly term order */
         struct { double data[16]; int type; int iterations;
                  double precision; iris_vec3 slice; double distance;
                  int fn; /* enum iris_julia_fn; data[0..3] = the

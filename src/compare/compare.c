@@ -36,7 +36,7 @@ struct compare_args {
     const char *common[MAX_ARGS];   /* passed to both renderers */
     int n_iris;
     const char *iris_only[MAX_ARGS];
-    double max_diff;                /* heat map scale; 0 = automatic */
+    double max_diff;                /* heat map scale; 0 = 0.1 */
 };
 
 static double now(void)
@@ -221,7 +221,9 @@ int main(int argc, char **argv)
     double mse = se_enc / (3.0 * np);
     double psnr = mse > 0 ? 10 * log10(1 / mse) : INFINITY;
     double rmse = sqrt(se_lin / (3.0 * np));
-    double scale = a.max_diff > 0 ? a.max_diff : (peak > 0 ? peak : 1);
+    /* A fixed scale keeps heat maps comparable between scenes; 0.1 in
+    ** sRGB units is 25 steps of an 8-bit file. */
+    double scale = a.max_diff > 0 ? a.max_diff : 0.1;
 
     /* Panels: POV-Ray | iris | heat map, with the scale bar below it */
     for (int y = 0; y < h; y++)
@@ -245,7 +247,8 @@ int main(int argc, char **argv)
         return 1;
     }
     printf("scene:   %s (%dx%d)\n", a.scene, w, h);
-    printf("image:   %s  (POV-Ray | iris | |difference|, scale 0..%.4f sRGB below)\n", dest, scale);
+    printf("image:   %s  (POV-Ray | iris | |difference|, scale 0..%.3g sRGB below)\n", dest, scale);
+    printf("peak:    %.4f (largest per-pixel mean |difference|, sRGB)\n", peak);
     printf("PSNR:    %.2f dB\n", psnr);
     printf("RMSE:    %.6f (linear)\n", rmse);
     printf("time:    POV-Ray %.3f s, iris %.3f s, ratio iris/POV-Ray %.3f\n",

@@ -330,7 +330,8 @@ const char *geom_validate(const iris_object *o)
     case IRIS_OBJ_POLY: {
         int n = o->u.poly.order;
         if (n < 1 || n > 15 || !o->u.poly.coeffs ||
-            o->u.poly.n_coeffs != (n + 1) * (n + 2) * (n + 3) / 6)
+            o->u.poly.n_coeffs != (n + 1) * (n + 2) * (n + 3) / 6 ||
+            (o->kind == IRIS_OBJ_QUADRIC && n != 2))
             return "poly has a bad order or coefficient count";
         return NULL;
     }

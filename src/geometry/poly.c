@@ -4,7 +4,8 @@
 **
 ** A poly of order n has (n+1)(n+2)(n+3)/6 coefficients in POV-Ray's term
 ** order: x powers from n down to 0, then y powers, then z powers, each
-** descending (order 2: x², xy, xz, x, y², yz, y, z², z, 1). The surface is
+** descending (order 2: x², xy, xz, x, y², yz, y, z², z, 1). A quadric's
+** ten are in the order of its SDL instead (see coeffs()). The surface is
 ** p(x,y,z) = 0 and the inside is p < 0. Along a ray the polynomial becomes
 ** univariate in t, solved by roots.c; the parameter is measured from the
 ** closest approach to the origin along a unit direction to keep the
@@ -19,11 +20,27 @@
 
 #define MAXO 15
 
-/* Calls the term visitor order: (i, j, k) with coefficient index. */
+/*
+** The coefficients in poly order. A quadric keeps them as written in
+** quadric { <A,B,C>, <D,E,F>, <G,H,I>, J } (x², y², z², xy, xz, yz, x, y,
+** z, 1), which 'buf' reorders.
+*/
+static const double *coeffs(const iris_object *o, double buf[10])
+{
+    if (o->kind != IRIS_OBJ_QUADRIC)
+        return o->u.poly.coeffs;
+    const double *k = o->u.poly.coeffs;
+    static const int from[10] = { 0, 3, 4, 6, 1, 5, 7, 2, 8, 9 };
+    for (int i = 0; i < 10; i++)
+        buf[i] = k[from[i]];
+    return buf;
+}
+
 double geom_poly_eval(const iris_object *o, vec3 p)
 {
     int n = o->u.poly.order, idx = 0;
-    const double *c = o->u.poly.coeffs;
+    double buf[10];
+    const double *c = coeffs(o, buf);
     double px[MAXO + 1], py[MAXO + 1], pz[MAXO + 1];
     px[0] = py[0] = pz[0] = 1;
     for (int i = 1; i <= n; i++) {
@@ -43,7 +60,8 @@ double geom_poly_eval(const iris_object *o, vec3 p)
 static vec3 poly_grad(const iris_object *o, vec3 p)
 {
     int n = o->u.poly.order, idx = 0;
-    const double *c = o->u.poly.coeffs;
+    double buf[10];
+    const double *c = coeffs(o, buf);
     double px[MAXO + 1], py[MAXO + 1], pz[MAXO + 1];
     px[0] = py[0] = pz[0] = 1;
     for (int i = 1; i <= n; i++) {
@@ -80,7 +98,8 @@ void geom_poly_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
                     double t1, struct isect_list *out)
 {
     int n = o->u.poly.order, idx = 0;
-    const double *c = o->u.poly.coeffs;
+    double buf[10];
+    const double *c = coeffs(o, buf);
     double dl = v3_len(rd);
     if (!(dl > 0) || n > MAXO)
         return;

@@ -12,11 +12,13 @@
 ** opacity, Fresnel reflectivity and the layer's reflection colour.
 **
 ** Patterns are evaluated in pattern space: the world point is mapped by
-** pattern.transform.inv (when has_transform), then the warps are applied
+** pattern.transform.inv (when has_transform), then the warps{} are applied
 ** from the last in the array to the first, which is POV-Ray's order (a
-** warp{} or transform written later acts on the world side of the ones
-** written earlier). A trailing TURBULENCE warp of marble, wood, agate and
-** spiral patterns is their classic turbulence, used by the pattern itself.
+** warp written later acts on the world side of the ones written earlier),
+** and last the classic turbulence: the final array entry when it is a
+** TURBULENCE warp, as the parser keeps it. Marble and wood use their
+** classic turbulence themselves instead of warping by it; agate and the
+** spirals read its parameters too.
 **
 ** Depends on: util, math, image (image maps). Used by: render, photon.
 */

@@ -4,11 +4,11 @@
 ** computes them (source/backend/pattern/pattern.cpp, warps.cpp), so that
 ** a pattern and its colour map land on the same pixels as in POV-Ray.
 **
-** Kind-specific numbers read from iris_pattern.params[]: spiral arms
-** (params[0]); agate_turb (params[0], 0 = POV-Ray's 1.0); quilted
-** control0/control1 (params[0], params[1], both 0 = POV-Ray's 1, 1);
-** crackle metric (params[0], 0 = 2), offset (params[1]), solid (params[2]
-** != 0), form (params[3..5], all 0 = <-1, 1, 0>).
+** Kind-specific numbers read from iris_pattern.params[] (the parser's
+** layout): spiral arms (params[0]); agate_turb (params[0], 0 = POV-Ray's
+** 1.0); quilted control0/control1 (params[0], params[1], both 0 = POV-Ray's
+** 1, 1); crackle form (params[0..2], all 0 = <-1, 1, 0>), metric
+** (params[3], 0 = 2), offset (params[4]), solid (params[5] != 0).
 */
 #include "config.h"
 
@@ -91,12 +91,13 @@ static struct noise_turb turb_params(const iris_warp *w)
     return t;
 }
 
-/* The classic turbulence of patterns that use it themselves (see
-** material.h): warps[0] when it is a turbulence warp. */
+/* The classic turbulence (see material.h): the last warp when it is a
+** turbulence warp, as the parser keeps it. */
 static const iris_warp *classic_turb(const iris_pattern *pat)
 {
-    if (pat->n_warps > 0 && pat->warps[0].kind == IRIS_WARP_TURBULENCE)
-        return &pat->warps[0];
+    if (pat->n_warps > 0 &&
+        pat->warps[pat->n_warps - 1].kind == IRIS_WARP_TURBULENCE)
+        return &pat->warps[pat->n_warps - 1];
     return NULL;
 }
 
@@ -151,36 +152,37 @@ static vec3 warp_black_hole(const iris_warp *w, vec3 p)
     return v3_madd(p, delta, w->inverse ? -strength : strength);
 }
 
+static vec3 apply_warp(const iris_warp *w, vec3 q)
+{
+    switch (w->kind) {
+    case IRIS_WARP_TURBULENCE: {
+        struct noise_turb t = turb_params(w);
+        vec3 d = noise_dturbulence(q, &t);
+        return v3_add(q, v3_mul(d, w->turbulence));
+    }
+    case IRIS_WARP_REPEAT:
+        return warp_repeat(w, q);
+    case IRIS_WARP_BLACK_HOLE:
+        return warp_black_hole(w, q);
+    case IRIS_WARP_TRANSFORM:
+        return xf_inv_point(&w->transform, q);
+    default:
+        /* planar/spherical/cylindrical/toroidal mapping warps: not
+        ** implemented; the point passes unchanged. */
+        return q;
+    }
+}
+
 vec3 pat_space(const struct mat_ctx *ctx, const iris_pattern *pat, vec3 p)
 {
     (void)ctx;
     vec3 q = pat->has_transform ? xf_inv_point(&pat->transform, p) : p;
-    for (int i = pat->n_warps - 1; i >= 0; i--) {
-        const iris_warp *w = &pat->warps[i];
-        switch (w->kind) {
-        case IRIS_WARP_TURBULENCE: {
-            if (i == 0 && uses_own_turb(pat->kind))
-                break;
-            struct noise_turb t = turb_params(w);
-            vec3 d = noise_dturbulence(q, &t);
-            q = v3_add(q, v3_mul(d, w->turbulence));
-            break;
-        }
-        case IRIS_WARP_REPEAT:
-            q = warp_repeat(w, q);
-            break;
-        case IRIS_WARP_BLACK_HOLE:
-            q = warp_black_hole(w, q);
-            break;
-        case IRIS_WARP_TRANSFORM:
-            q = xf_inv_point(&w->transform, q);
-            break;
-        default:
-            /* planar/spherical/cylindrical/toroidal mapping warps: not
-            ** implemented; the point passes unchanged. */
-            break;
-        }
-    }
+    const iris_warp *classic = classic_turb(pat);
+    int n = classic ? pat->n_warps - 1 : pat->n_warps;
+    for (int i = n - 1; i >= 0; i--)
+        q = apply_warp(&pat->warps[i], q);
+    if (classic && !uses_own_turb(pat->kind))
+        q = apply_warp(classic, q);
     q.x = fmin(fmax(q.x, -COORD_LIMIT), COORD_LIMIT);
     q.y = fmin(fmax(q.y, -COORD_LIMIT), COORD_LIMIT);
     q.z = fmin(fmax(q.z, -COORD_LIMIT), COORD_LIMIT);
@@ -440,10 +442,10 @@ static vec3 cube_point(int x, int y, int z)
 static double crackle(const struct mat_ctx *ctx, const iris_pattern *pat,
                       vec3 p)
 {
-    double metric = pat->params[0] != 0 ? pat->params[0] : 2.0;
-    double offset = pat->params[1];
-    bool solid = pat->params[2] != 0;
-    vec3 form = v3(pat->params[3], pat->params[4], pat->params[5]);
+    double metric = pat->params[3] != 0 ? pat->params[3] : 2.0;
+    double offset = pat->params[4];
+    bool solid = pat->params[5] != 0;
+    vec3 form = v3(pat->params[0], pat->params[1], pat->params[2]);
     if (form.x == 0 && form.y == 0 && form.z == 0)
         form = v3(-1, 1, 0);
     int fx = (int)floor(p.x - PAT_EPSILON), fy = (int)floor(p.y - PAT_EPSILON),

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /*
-** test_accel_pov.c: silhouettes against POV-Ray's own output.
+** test_accel_pov.c: silhouettes and depths against POV-Ray's output.
 **
 ** Each case describes one shape twice: as SDL for POV-Ray and as the
 ** iris_object the parser would build. POV-Ray renders all cases white on
@@ -212,11 +212,11 @@ static iris_object *make_cone(iris_arena *ar)
     return o;
 }
 
-/* x² - y² + z² = 0.5 (quadric order: x², xy, xz, x, y², yz, y, z², z, 1)
+/* x² - y² + z² = 0.5 (quadric order: x², y², z², xy, xz, yz, x, y, z, 1)
 ** clipped by a box. */
 static iris_object *make_quadric(iris_arena *ar)
 {
-    static double q[10] = { 1, 0, 0, 0, -1, 0, 0, 1, 0, -0.5 };
+    static double q[10] = { 1, -1, 1, 0, 0, 0, 0, 0, 0, -0.5 };
     iris_object *o = new_obj(ar, IRIS_OBJ_QUADRIC);
     o->u.poly.order = 2;
     o->u.poly.n_coeffs = 10;
@@ -371,6 +371,63 @@ static iris_object *make_height_field(iris_arena *ar)
     return o;
 }
 
+/* A box and a sphere (merged or united), cut open by clipped_by so that
+** the inner surfaces face the camera: the union shows the sphere inside
+** the box, the merge does not. */
+static iris_object *make_cut(iris_arena *ar, enum iris_object_kind kind)
+{
+    iris_object *b = new_obj(ar, IRIS_OBJ_BOX);
+    b->u.box.lo = v3(-1.2, -1.2, -1.2);
+    b->u.box.hi = v3(1.2, 1.2, 1.2);
+    iris_object *s = new_obj(ar, IRIS_OBJ_SPHERE);
+    s->u.sphere.centre = v3(0.5, 0.5, 0);
+    s->u.sphere.radius = 1;
+    iris_object *u = new_obj(ar, kind);
+    u->texture = NULL;
+    u->u.csg.n_children = 2;
+    u->u.csg.children = arena_array(ar, 2, sizeof(iris_object *));
+    u->u.csg.children[0] = b;
+    u->u.csg.children[1] = s;
+    iris_object *pl = new_obj(ar, IRIS_OBJ_PLANE);
+    pl->u.plane.normal = v3(0, 0, -1);
+    pl->u.plane.distance = 0.2;
+    u->n_clipped_by = 1;
+    u->clipped_by = arena_array(ar, 1, sizeof(iris_object *));
+    u->clipped_by[0] = pl;
+    iris_object *all[4] = { b, s, u, pl };
+    for (int k = 0; k < 4; k++)
+        then_rotate(all[k], v3(15, -20, 0));
+    return u;
+}
+
+static iris_object *make_cut_union(iris_arena *ar)
+{
+    return make_cut(ar, IRIS_OBJ_UNION);
+}
+
+static iris_object *make_cut_merge(iris_arena *ar)
+{
+    return make_cut(ar, IRIS_OBJ_MERGE);
+}
+
+/* intersection with an inverted sphere: a bite out of a sphere's front. */
+static iris_object *make_bite(iris_arena *ar)
+{
+    iris_object *a = new_obj(ar, IRIS_OBJ_SPHERE);
+    a->u.sphere.radius = 1.8;
+    iris_object *b = new_obj(ar, IRIS_OBJ_SPHERE);
+    b->u.sphere.centre = v3(0.3, 0.2, -1.2);
+    b->u.sphere.radius = 1.1;
+    b->inverse = true;
+    iris_object *i = new_obj(ar, IRIS_OBJ_INTERSECTION);
+    i->texture = NULL;
+    i->u.csg.n_children = 2;
+    i->u.csg.children = arena_array(ar, 2, sizeof(iris_object *));
+    i->u.csg.children[0] = a;
+    i->u.csg.children[1] = b;
+    return i;
+}
+
 static const struct pov_case cases[] = {
     { "torus", "torus { 1.2, 0.35 rotate <-60, 20, 0> }", make_torus },
     { "lathe", "lathe { cubic_spline 6, <0,-1.5>, <1.2,-1.2>, <0.4,0>, "
@@ -420,6 +477,14 @@ static const struct pov_case cases[] = {
     { "height_field", "height_field { pgm \"hf.pgm\" translate <-0.5,0,-0.5> "
                       "scale <3,1.5,3> rotate <-50,20,0> }",
       make_height_field },
+    { "cut_union", "union { box { -1.2, 1.2 } sphere { <0.5,0.5,0>, 1 } "
+                   "clipped_by { plane { -z, 0.2 } } rotate <15,-20,0> }",
+      make_cut_union },
+    { "cut_merge", "merge { box { -1.2, 1.2 } sphere { <0.5,0.5,0>, 1 } "
+                   "clipped_by { plane { -z, 0.2 } } rotate <15,-20,0> }",
+      make_cut_merge },
+    { "bite", "intersection { sphere { 0, 1.8 } "
+              "sphere { <0.3,0.2,-1.2>, 1.1 inverse } }", make_bite },
 };
 
 #define N_CASES ((int)(sizeof cases / sizeof cases[0]))
@@ -438,8 +503,17 @@ static vec3 tile_centre(int c)
               2.0 * (TILES - 1) - 4.0 * (c / TILES), 0);
 }
 
-/* Reads an IW x IH binary PPM into per-case masks of bright pixels. */
-static bool read_masks(const char *path, unsigned char masks[][W * H])
+/* What POV-Ray saw in one pixel: whether it hit, and the depth (z). */
+struct pov_px {
+    bool hit;
+    double z;
+};
+
+/*
+** Reads an IW x IH binary PPM into per-case pixels. Red marks a hit;
+** green is the depth, written linearly (File_Gamma=1) as (z + 5) / 10.
+*/
+static bool read_masks(const char *path, struct pov_px masks[][W * H])
 {
     FILE *f = fopen(path, "rb");
     if (!f)
@@ -468,14 +542,18 @@ static bool read_masks(const char *path, unsigned char masks[][W * H])
         int x0 = (c % TILES) * W, y0 = (c / TILES) * H;
         for (int y = 0; y < H; y++)
             for (int x = 0; x < W; x++)
-                masks[c][y * W + x] =
-                    px[3 * ((size_t)(y0 + y) * IW + x0 + x)] > 128;
+            {
+                const unsigned char *q = px + 3 * ((size_t)(y0 + y) * IW +
+                                                   x0 + x);
+                masks[c][y * W + x].hit = q[0] > 128;
+                masks[c][y * W + x].z = 10.0 * q[1] / 255.0 - 5;
+            }
     }
     return ok;
 }
 
 /* Renders every case, each moved to its tile, with one POV-Ray run. */
-static bool pov_masks(const char *povray, unsigned char masks[][W * H])
+static bool pov_masks(const char *povray, struct pov_px masks[][W * H])
 {
     const char *dir = work_dir;
     char pov[256], out[256], cmd[1024];
@@ -488,20 +566,22 @@ static bool pov_masks(const char *povray, unsigned char masks[][W * H])
                "camera { orthographic location <0,0,-10> look_at 0 "
                "right %d*x up %d*y }\n"
                "background { rgb 0 }\n"
-               "#default { texture { pigment { rgb 1 } "
-               "finish { ambient 1 diffuse 0 } } }\n", 4 * TILES,
-            4 * TILES);
+               "#declare Depth = texture { pigment { gradient z "
+               "color_map { [0 rgb <1,0,0>] [1 rgb <1,1,0>] } "
+               "scale 10 translate -5*z } finish { ambient 1 diffuse 0 } }\n",
+            4 * TILES, 4 * TILES);
     for (int c = 0; c < N_CASES; c++) {
         vec3 t = tile_centre(c);
-        /* Clipping keeps a case inside its own tile */
-        fprintf(f, "object { %s translate <%g,%g,0> clipped_by { box { "
-                   "<%g,%g,-100>, <%g,%g,100> } } }\n", cases[c].sdl, t.x,
-                t.y, t.x - 2, t.y - 2, t.x + 2, t.y + 2);
+        /* The texture comes after the case's own transforms, so the
+        ** depth gradient stays along z; clipping keeps a case in its tile */
+        fprintf(f, "object { %s texture { Depth } translate <%g,%g,0> "
+                   "clipped_by { box { <%g,%g,-100>, <%g,%g,100> } } }\n",
+                cases[c].sdl, t.x, t.y, t.x - 2, t.y - 2, t.x + 2, t.y + 2);
     }
     fclose(f);
     snprintf(cmd, sizeof cmd,
              "cd %s && '%s' +Is.pov +Os.ppm +W%d +H%d -D -V -A +FP -GA "
-             "+L'%s' >/dev/null 2>&1", dir, povray, IW, IH,
+             "File_Gamma=1.0 +L'%s' >/dev/null 2>&1", dir, povray, IW, IH,
              POVRAY_INCLUDE_DIR);
     bool ok = system(cmd) == 0 && read_masks(out, masks);
     remove(out);
@@ -509,13 +589,13 @@ static bool pov_masks(const char *povray, unsigned char masks[][W * H])
     return ok;
 }
 
-static void test_silhouettes(void **state)
+static void test_pov_images(void **state)
 {
     (void)state;
     const char *povray = getenv("POVRAY");
     if (!povray || !*povray)
         skip();
-    static unsigned char masks[N_CASES][W * H];
+    static struct pov_px masks[N_CASES][W * H];
     snprintf(work_dir, sizeof work_dir, "/tmp/iris-pov-XXXXXX");
     if (!mkdtemp(work_dir))
         fail_msg("cannot make a temporary directory");
@@ -528,7 +608,7 @@ static void test_silhouettes(void **state)
         fail_msg("POV-Ray could not render the cases");
     }
     for (int c = 0; c < N_CASES; c++) {
-        const unsigned char *want = masks[c];
+        const struct pov_px *want = masks[c];
         iris_arena *ar = arena_create(0);
         iris_scene sc;
         memset(&sc, 0, sizeof sc);
@@ -540,20 +620,26 @@ static void test_silhouettes(void **state)
         char err[128];
         assert_int_equal(accel_build(&sc, &a, stderr, err, sizeof err),
                          IRIS_OK);
-        int diff = 0, cover = 0;
+        int diff = 0, cover = 0, deep = 0;
         for (int y = 0; y < H; y++)
             for (int x = 0; x < W; x++) {
                 double x0 = (x + 0.5) / W - 0.5, y0 = 0.5 - (y + 0.5) / H;
                 ray r = { v3(4 * x0, 4 * y0, -10), v3(0, 0, 1) };
                 struct hit h;
                 bool got = accel_intersect(a, &r, 0, INFINITY, 0, &h);
-                cover += want[y * W + x];
-                diff += got != want[y * W + x];
+                const struct pov_px *w = &want[y * W + x];
+                cover += w->hit;
+                diff += got != w->hit;
+                /* Same surface first: depth within 0.1 (the 8-bit depth
+                ** steps by 10/255 = 0.04) */
+                deep += got && w->hit && fabs(h.p.z - w->z) > 0.1;
             }
-        fprintf(stderr, "# %s: %d px differ, cover %d\n", cases[c].name, diff, cover);
-        if (diff > W * H * 5 / 1000 || cover < 150)
-            fail_msg("case '%s': %d pixels differ from POV-Ray (cover %d)",
-                     cases[c].name, diff, cover);
+        fprintf(stderr, "# %s: %d px differ, %d deeper, cover %d\n",
+                cases[c].name, diff, deep, cover);
+        if (diff + deep > W * H * 5 / 1000 || cover < 150)
+            fail_msg("case '%s': %d pixels differ from POV-Ray, %d at "
+                     "another depth (cover %d)", cases[c].name, diff, deep,
+                     cover);
         accel_destroy(a);
         arena_destroy(ar);
     }
@@ -564,7 +650,7 @@ static void test_silhouettes(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_silhouettes),
+        cmocka_unit_test(test_pov_images),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

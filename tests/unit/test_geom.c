@@ -233,13 +233,14 @@ static void test_torus(void **state)
     assert_false(geom_inside(&t, NULL, v3(0, 0, 0)));
 }
 
-/* A poly equal to the unit sphere (POV-Ray order: x², xy, xz, x, y², yz,
-** y, z², z, 1) and the quartic torus in poly form give the same hits as
-** the dedicated shapes. */
+/* A quadric equal to the unit sphere (its SDL order: x², y², z², xy, xz,
+** yz, x, y, z, 1), the same as an order-2 poly (POV-Ray's poly order: x²,
+** xy, xz, x, y², yz, y, z², z, 1) and the quartic torus in poly form give
+** the same hits as the dedicated shapes. */
 static void test_poly(void **state)
 {
     (void)state;
-    double qc[10] = { 1, 0, 0, 0, 1, 0, 0, 1, 0, -1 };
+    double qc[10] = { 1, 1, 1, 0, 0, 0, 0, 0, 0, -1 };
     iris_object q = mk(IRIS_OBJ_QUADRIC);
     q.u.poly.order = 2;
     q.u.poly.n_coeffs = 10;
@@ -250,6 +251,17 @@ static void test_poly(void **state)
     assert_near(h[0].t, 4.2, 1e-12);
     assert_dir(h[0].n, v3(0, 0.6, -0.8), 1e-12);
     assert_true(geom_inside(&q, NULL, v3(0, 0, 0)));
+    /* x² - y + 0.5·xz = 0 both ways: quadric order vs poly order */
+    double qa[10] = { 1, 0, 0, 0, 0.5, 0, 0, -1, 0, 0 };
+    double pa[10] = { 1, 0, 0.5, 0, 0, 0, -1, 0, 0, 0 };
+    iris_object pq = mk(IRIS_OBJ_POLY);
+    pq.u.poly.order = 2;
+    pq.u.poly.n_coeffs = 10;
+    pq.u.poly.coeffs = pa;
+    q.u.poly.coeffs = qa;
+    vec3 tp = v3(0.3, -0.7, 1.1);
+    assert_near(geom_poly_eval(&q, tp), 0.09 + 0.7 + 0.5 * 0.33, 1e-15);
+    assert_near(geom_poly_eval(&pq, tp), 0.09 + 0.7 + 0.5 * 0.33, 1e-15);
 
     /* Torus R=2, r=0.5: (x²+y²+z²+R²-r²)² - 4R²(x²+z²), order 4:
     ** x⁴+y⁴+z⁴+2x²y²+2x²z²+2y²z² + 2(R²-r²)(x²+y²+z²) - 4R²(x²+z²)
