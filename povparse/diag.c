@@ -131,7 +131,8 @@ static void fill_diag(pp_state *ps, iris_diag *d, enum iris_severity sev,
                                  k + 1 < sizeof d->source_line; i++) {
                 unsigned char c = (unsigned char)pf->text[i];
                 /* One column per byte so that the caret lines up. */
-                d->source_line[k++] = (c == '\t' || c < 32) ? ' ' : (char)c;
+                d->source_line[k++] = (c == '\t' || c < 32) ? ' ' :
+                                      c >= 127 ? '?' : (char)c;
             }
             d->source_line[k] = 0;
         }
@@ -293,4 +294,10 @@ _Noreturn void pp_unexpected(pp_state *ps, const pp_token *at,
                  pp_tok_text(ps, at), where);
     pp_error(ps, at, "unexpected %s in %s",
              pp_tok_name(ps, at, buf, sizeof buf), where);
+}
+
+void pp_enter(pp_state *ps, const pp_token *at)
+{
+    if (++ps->depth > PP_MAX_DEPTH)
+        pp_error(ps, at, "nested more than %d deep", PP_MAX_DEPTH);
 }

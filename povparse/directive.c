@@ -712,7 +712,15 @@ void pp_directive(pp_state *ps, const pp_token *hash)
     case T_BREAK: do_break(ps, &at); return;
     case T_MACRO: do_macro(ps, &at); return;
     case T_INCLUDE: {
-        const char *name = pp_string(ps);
+        /* a single string factor: no look-ahead into the text that
+        ** follows, which may be the end of this very file */
+        pp_next(ps);
+        pp_token st = ps->tok;
+        pp_unget(ps);
+        pp_value nv = pp_string_rvalue(ps);
+        if (nv.kind != V_STRING)
+            pp_error(ps, &st, "#include needs a file name string");
+        const char *name = nv.u.str;
         /* Tokens read ahead after the name belong after the #include:
         ** read them again once the included file is done. */
         pp_frame *fr = &ps->frames[ps->n_frames - 1];

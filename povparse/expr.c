@@ -501,7 +501,9 @@ static pp_value factor(pp_state *ps)
     case T_LPAREN: {
         bool iv = ps->in_vector;
         ps->in_vector = false;
+        pp_enter(ps, &at);
         pp_value v = expr_cond(ps);
+        pp_leave(ps);
         ps->in_vector = iv;
         rparen(ps);
         return v;
@@ -512,6 +514,7 @@ static pp_value factor(pp_state *ps)
         pp_value v;
         memset(&v, 0, sizeof v);
         int n = 0;
+        pp_enter(ps, &at);
         for (;;) {
             pp_token ct = ps->tok;
             pp_value c = expr_add(ps);
@@ -527,6 +530,7 @@ static pp_value factor(pp_state *ps)
                 break;
             pp_unget(ps);
         }
+        pp_leave(ps);
         if (n < 2)
             pp_error(ps, &at, "a vector needs at least 2 components");
         v.kind = V_VECTOR;
@@ -857,13 +861,13 @@ static pp_value factor(pp_state *ps)
         if (n > 5)
             n = 5;
         pp_value_promote(&v, n);
-        char buf[2048] = "";
+        char *buf = pp_salloc(ps, 2048);
         size_t used = 0;
         for (int i = 0; i < n; i++) {
             const char *s = fmt_float(ps, v.v[i], len, prec);
-            used += (size_t)snprintf(buf + used, sizeof buf - used, "%s%s",
+            used += (size_t)snprintf(buf + used, 2048 - used, "%s%s",
                                      i ? sep : "", s);
-            if (used >= sizeof buf)
+            if (used >= 2048)
                 break;
         }
         return sval(pp_strdup(ps, buf, strlen(buf)));
@@ -978,7 +982,9 @@ static pp_value unary(pp_state *ps)
     int k = ps->tok.kind;
     pp_token at = ps->tok;
     if (k == T_MINUS || k == T_PLUS || k == T_BANG) {
+        pp_enter(ps, &at);
         pp_value v = unary(ps);
+        pp_leave(ps);
         need_numeric(ps, &at, &v);
         for (int i = 0; i < v.dim; i++) {
             if (k == T_MINUS)

@@ -176,7 +176,9 @@ static void cfactor(fnc *c)
         return;
     }
     case T_LPAREN:
+        pp_enter(ps, &at);
         cexpr(c);
+        pp_leave(ps);
         pp_expect(ps, T_RPAREN, "')'");
         return;
     case T_SELECT: {
@@ -256,20 +258,25 @@ static void cunary(fnc *c)
     pp_state *ps = c->ps;
     pp_next(ps);
     int k = ps->tok.kind;
+    pp_enter(ps, &ps->tok);
     if (k == T_MINUS) {
         cunary(c);
+        pp_leave(ps);
         emit(c, IRIS_FN_NEG, 0, 0, 0, 0);
         return;
     }
     if (k == T_PLUS) {
         cunary(c);
+        pp_leave(ps);
         return;
     }
     if (k == T_BANG) {
         cunary(c);
+        pp_leave(ps);
         emit(c, IRIS_FN_NOT, 0, 0, 0, 0);
         return;
     }
+    pp_leave(ps);
     pp_unget(ps);
     cfactor(c);
 }

@@ -127,7 +127,8 @@ static uint32_t scan_string(pp_state *ps, uint32_t f, uint32_t p,
     uint32_t n = (uint32_t)ps->files[f].len;
     uint32_t start = p++;
     uint32_t q = p;
-    while (q < n && s[q] != '"' && s[q] != '\n') {
+    /* POV-Ray strings may span lines */
+    while (q < n && s[q] != '"') {
         if (s[q] == '\\' && q + 1 < n)
             q++;
         q++;

@@ -539,6 +539,7 @@ static iris_texture *texture_body(pp_state *ps, int end);
 pp_map *pp_map_block(pp_state *ps, int kind)
 {
     pp_expect(ps, T_LBRACE, "'{'");
+    pp_enter(ps, &ps->tok);
     pp_map *m = pp_salloc(ps, sizeof *m);
     m->kind = kind;
     int cap = 0;
@@ -633,6 +634,7 @@ pp_map *pp_map_block(pp_state *ps, int kind)
         }
         m->n++;
     }
+    pp_leave(ps);
     m->e = e;
     if (m->n > 1) {
         /* stable insertion sort: equal values keep their order */
@@ -888,7 +890,10 @@ static iris_pigment *pigment_body(pp_state *ps, const iris_pigment *base,
 iris_pigment *pp_pigment(pp_state *ps, const iris_pigment *base)
 {
     pp_expect(ps, T_LBRACE, "'{' after pigment");
-    return pigment_body(ps, base, T_RBRACE);
+    pp_enter(ps, &ps->tok);
+    iris_pigment *p = pigment_body(ps, base, T_RBRACE);
+    pp_leave(ps);
+    return p;
 }
 
 /* ---- normals ----------------------------------------------------- */
@@ -1024,7 +1029,10 @@ static iris_normal *normal_body(pp_state *ps, const iris_normal *base,
 iris_normal *pp_normal(pp_state *ps, const iris_normal *base)
 {
     pp_expect(ps, T_LBRACE, "'{' after normal");
-    return normal_body(ps, base, T_RBRACE);
+    pp_enter(ps, &ps->tok);
+    iris_normal *n = normal_body(ps, base, T_RBRACE);
+    pp_leave(ps);
+    return n;
 }
 
 /* ---- finish ------------------------------------------------------ */
@@ -1358,7 +1366,10 @@ static iris_texture *texture_body(pp_state *ps, int end)
 iris_texture *pp_texture(pp_state *ps)
 {
     pp_expect(ps, T_LBRACE, "'{' after texture");
-    return texture_body(ps, T_RBRACE);
+    pp_enter(ps, &ps->tok);
+    iris_texture *t = texture_body(ps, T_RBRACE);
+    pp_leave(ps);
+    return t;
 }
 
 /* ---- interior ---------------------------------------------------- */

@@ -1412,7 +1412,9 @@ iris_object *pp_object(pp_state *ps)
             add_light_to(ps, o, light_copy(ps, id.val.u.light));
         } else if (shape_kind(id.kind) >= 0 || id.kind == T_OBJECT) {
             pp_unget(ps);
+            pp_enter(ps, &at);
             o = pp_object(ps);
+            pp_leave(ps);
         } else if (id.kind == T_LIGHT_SOURCE) {
             o = obj_new(ps, IRIS_OBJ_UNION, &at);
             add_light_to(ps, o, pp_light(ps));
@@ -1439,7 +1441,9 @@ iris_object *pp_object(pp_state *ps)
     if (kind >= IRIS_OBJ_UNION) {
         if (kind == IRIS_OBJ_LIGHT_GROUP)
             ((pp_obj *)o)->is_light_group = true;
+        pp_enter(ps, &at);
         csg_body(ps, o, &open);
+        pp_leave(ps);
         return o;
     }
     /* object identifiers may stand for the shape in some POV-Ray forms;

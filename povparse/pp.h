@@ -280,6 +280,7 @@ struct pp_state {
     double version;
     bool in_vector;        /* inside <..>: '>' closes, is no operator */
     bool gamma_given;
+    int depth;             /* nesting of the grammar's recursion */
 };
 
 /* ---- diag.c ------------------------------------------------------- */
@@ -293,6 +294,10 @@ void pp_warning(pp_state *ps, const pp_token *at, const char *fmt, ...)
 /* Warns once per token kind 'kw' that a feature is parsed but ignored. */
 void pp_warn_once(pp_state *ps, const pp_token *at, int kw, const char *what);
 _Noreturn void pp_nomem(pp_state *ps);
+/* Guards the C stack: nesting deeper than PP_MAX_DEPTH is an error. */
+#define PP_MAX_DEPTH 1000
+void pp_enter(pp_state *ps, const pp_token *at);
+static inline void pp_leave(pp_state *ps) { ps->depth--; }
 /* "unexpected X in 'where'", or "undeclared identifier". */
 _Noreturn void pp_unexpected(pp_state *ps, const pp_token *at,
                              const char *where);

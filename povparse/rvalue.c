@@ -16,6 +16,7 @@
 static void array_init(pp_state *ps, pp_array *arr, int d, long base)
 {
     pp_expect(ps, T_LBRACE, "'{'");
+    pp_enter(ps, &ps->tok);
     long stride = 1;
     for (int k = d + 1; k < arr->ndim; k++)
         stride *= arr->dims[k];
@@ -37,6 +38,7 @@ static void array_init(pp_state *ps, pp_array *arr, int d, long base)
     pp_accept(ps, T_COMMA);
     pp_expect(ps, T_RBRACE, "'}' (the initialiser has more elements than "
               "the array)");
+    pp_leave(ps);
 }
 
 /* array '[' n ']' ... [ '{' initialiser '}' ] */

@@ -3,9 +3,13 @@
 ##   make regen-tables   data/*.csv -> src/spectrum/tables.c
 ##   make regen-burns    Burns' curves -> src/spectrum/burns_table.c
 ##                       (needs LAPACKE: Debian liblapacke-dev)
-EXTRA_PROGRAMS = tools/gen_tables
+EXTRA_PROGRAMS = tools/gen_tables tools/photon_bench
 tools_gen_tables_SOURCES = tools/gen_tables.c
-CLEANFILES += tools/gen_tables$(EXEEXT)
+CLEANFILES += tools/gen_tables$(EXEEXT) tools/photon_bench$(EXEEXT)
+
+## photon_bench: the photon pass alone, for bench/photons.sh
+tools_photon_bench_SOURCES = tools/photon_bench.c
+tools_photon_bench_LDADD = libiris_core.la $(IRIS_LIBS)
 
 regen-tables: tools/gen_tables$(EXEEXT)
 	tools/gen_tables$(EXEEXT) $(top_srcdir)/data > $(top_srcdir)/src/spectrum/tables.c.tmp
@@ -26,4 +30,4 @@ regen-burns:
 	@echo "regen-burns needs LAPACKE (Debian: liblapacke-dev); rerun configure" >&2; exit 1
 endif
 .PHONY: regen-tables regen-burns
-EXTRA_DIST += tools/gen_tables.c tools/burns.c
+EXTRA_DIST += tools/gen_tables.c tools/burns.c tools/photon_bench.c

@@ -376,6 +376,12 @@ vec3 noise_dturbulence(vec3 p, const struct noise_turb *t)
     return r;
 }
 
+int noise_hash_entry(int i)
+{
+    noise_init();
+    return hash_table[i & 0x1fff];
+}
+
 int noise_hash3d(int a, int b, int c)
 {
     noise_init();

@@ -38,6 +38,9 @@ double noise_turbulence(vec3 p, const struct noise_turb *t, int generator);
 /* POV-Ray's DTurbulence(): sum of octaves of noise_vector. */
 vec3 noise_dturbulence(vec3 p, const struct noise_turb *t);
 
+/* Entry 'i' (0..8191) of POV-Ray's noise hash table (AA jitter uses it). */
+int noise_hash_entry(int i);
+
 /* POV-Ray's Hash3d over the noise hash table, for cells and crackle. */
 int noise_hash3d(int a, int b, int c);
 

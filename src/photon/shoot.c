@@ -181,6 +181,19 @@ static enum iris_status find_combos(struct shoot *s)
             if (c->tc.parallel) {
                 c->axis = v3_norm(v3_sub(l->point_at, l->location));
                 c->dist = v3_dot(v3_sub(c->ctr, l->location), c->axis);
+                if (l->kind == IRIS_LIGHT_CYLINDER && l->falloff > 0.0) {
+                    /* Only the beam carries light: centre the rings on
+                    ** its axis and stop at its falloff radius (fewer
+                    ** wasted photons, same power per area) */
+                    vec3 on_axis = v3_madd(l->location, c->axis, c->dist);
+                    double off = v3_len(v3_sub(on_axis, c->ctr));
+                    if (off > c->rad + l->falloff) {
+                        s->n_combos--; /* the beam misses the target */
+                        continue;
+                    }
+                    c->ctr = on_axis;
+                    c->rad = fmin(c->rad + off, l->falloff);
+                }
             } else {
                 c->dist = v3_len(v3_sub(c->ctr, l->location));
                 c->axis = c->dist > 0 ? v3_scale(v3_sub(c->ctr, l->location),

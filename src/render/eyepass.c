@@ -21,6 +21,7 @@
 
 #include "render/camera.h"
 #include "render/eyepass.h"
+#include "render/jitter.h"
 #include "util/mem.h"
 #include "util/thread.h"
 
@@ -82,16 +83,6 @@ static void trace_sample(struct job *j, struct trace_ctx *c, double x,
         }
 }
 
-/* POV-Ray's Jitter2d: a position-keyed offset in [-0.5, 0.5)^2. */
-static void jitter2d(const struct job *j, double x, double y, double *rx,
-                     double *ry)
-{
-    rng r;
-    rng_seed(&r, j->opts->seed, 2, pos_key(x, y));
-    *rx = rng_uniform(&r) - 0.5;
-    *ry = rng_uniform(&r) - 0.5;
-}
-
 /* The colour compared by the AA threshold: gamma-adjusted (§4.1). */
 static double aa_distance(const struct job *j, const double a[3],
                           const double b[3])
@@ -115,7 +106,7 @@ static void supersample(struct job *j, struct trace_ctx *c, double x, double y,
             double sx = x + xx, sy = y + yy;
             if (js > 0.0) {
                 double rx, ry;
-                jitter2d(j, sx, sy, &rx, &ry);
+                jitter2d(sx, sy, &rx, &ry);
                 sx += rx * js;
                 sy += ry * js;
             }
@@ -250,7 +241,7 @@ static void subdivide(struct job *j, struct trace_ctx *c, double x, double y,
             double sx = x + mids[i].dx, sy = y + mids[i].dy;
             if (js > 0.0) {
                 double rx, ry;
-                jitter2d(j, sx, sy, &rx, &ry);
+                jitter2d(sx, sy, &rx, &ry);
                 sx += rx * js;
                 sy += ry * js;
             }

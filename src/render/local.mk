@@ -2,4 +2,5 @@
 libiris_core_la_SOURCES += %reldir%/render.c \
 	%reldir%/camera.c %reldir%/camera.h %reldir%/light.c %reldir%/light.h \
 	%reldir%/query.h %reldir%/trace.c %reldir%/trace.h \
-	%reldir%/plan.c %reldir%/plan.h %reldir%/eyepass.c %reldir%/eyepass.h
+	%reldir%/plan.c %reldir%/plan.h %reldir%/eyepass.c %reldir%/eyepass.h \
+	%reldir%/jitter.c %reldir%/jitter.h

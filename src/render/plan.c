@@ -21,8 +21,6 @@ static bool flag_on(enum iris_tristate a, enum iris_tristate b)
 }
 
 struct walk {
-    bool any_target_refr, any_target_refl, any_target_unset;
-    bool targets_refl_on[2]; /* [0] refraction, [1] reflection */
     bool spectral;
     int spectral_samples;
     int n_objects;

@@ -9,11 +9,13 @@
 */
 #include "config.h"
 
+#include <math.h>
 #include <string.h>
 
 #include "accel/accel.h"
 #include "iris/render.h"
 #include "material/material.h"
+#include "photon/photon.h"
 #include "render/eyepass.h"
 #include "render/plan.h"
 #include "render/trace.h"
@@ -53,26 +55,64 @@ static bool accel_in(const void *impl, const iris_object *obj, vec3 p)
 /* Photons                                                              */
 /* ------------------------------------------------------------------ */
 
-/*
-** The photon pass. The photon module (src/photon) builds the map that
-** tracer.photon_shade reads at each texture layer; until its interface is
-** joined here, a plan that asks for photons renders without the caustic
-** light, which is what POV-Ray shows with photons disabled.
-*/
-static enum iris_status photon_pass(const struct render_plan *plan,
-                                    struct tracer *t, FILE *log)
+/* The tracer's photon hooks, on src/photon's map. */
+static void shade_photons(const void *map, const struct trace_photon_input *in,
+                          double rgb[3])
 {
-    if (plan->photons && log)
-        fprintf(log, "warning: photons are planned but the photon pass is "
-                     "not joined to the renderer yet; rendering without\n");
-    t->photon_shade = NULL;
-    t->photon_map = NULL;
-    return IRIS_OK;
+    struct photon_shade_input si = {
+        in->p, in->layer_n, in->raw_n, in->d,
+        { in->pigment.r, in->pigment.g, in->pigment.b }, in->att,
+        in->finish, in->obj };
+    double add[3] = { 0, 0, 0 };
+    photon_map_shade(map, &si, add);
+    for (int k = 0; k < 3; k++)
+        if (isfinite(add[k]))
+            rgb[k] += add[k];
 }
 
-/* ------------------------------------------------------------------ */
-/* iris_render                                                          */
-/* ------------------------------------------------------------------ */
+static bool photon_shadow(const void *map, const iris_object *blocker,
+                          const iris_light *light, const iris_object *lit)
+{
+    return photon_blocks_shadow(map, blocker, light, lit);
+}
+
+/* The photon pass, when the plan has one: the caustic map the tracer reads
+** at every texture layer and in shadows. */
+static enum iris_status photon_pass(const struct render_plan *plan,
+                                    struct tracer *t, const struct accel *acc,
+                                    const struct mat_ctx *mat, int threads,
+                                    const iris_render_options *opts,
+                                    struct photon_map **map,
+                                    iris_render_stats *stats)
+{
+    *map = NULL;
+    t->photon_shade = NULL;
+    t->photon_shadow = NULL;
+    t->photon_map = NULL;
+    if (!plan->photons)
+        return IRIS_OK;
+    struct photon_options po;
+    memset(&po, 0, sizeof po);
+    po.threads = threads;
+    po.seed = opts->seed;
+    po.mat = mat;
+    struct photon_stats ps;
+    memset(&ps, 0, sizeof ps);
+    enum iris_status st = photon_map_build(t->scene, acc, &po, map, &ps);
+    if (st != IRIS_OK)
+        return st;
+    if (stats) {
+        stats->photons_emitted = (uint64_t)ps.shot;
+        stats->photons_stored = (uint64_t)ps.stored;
+        stats->photon_bytes = (uint64_t)ps.bytes;
+    }
+    if (*map) {
+        t->photon_shade = shade_photons;
+        t->photon_shadow = photon_shadow;
+        t->photon_map = *map;
+    }
+    return IRIS_OK;
+}
 
 static void set_err(char *err, size_t errlen, const char *msg)
 {
@@ -107,6 +147,7 @@ enum iris_status iris_render(const iris_scene *scene,
     struct render_plan plan;
     plan_compute(scene, opts, &plan);
     plan.threads = threads;
+    plan.tiles = ((opts->width + 31) / 32) * ((opts->height + 31) / 32);
     if (opts->plan_out)
         plan_print(&plan, opts->plan_out);
 
@@ -130,7 +171,8 @@ enum iris_status iris_render(const iris_scene *scene,
     tr.seed = opts->seed;
     tr.spectral_min = opts->spectral_samples_min;
     double t1 = par_now();
-    st = photon_pass(&plan, &tr, log);
+    struct photon_map *pmap = NULL;
+    st = photon_pass(&plan, &tr, acc, mat, threads, opts, &pmap, stats);
     double t2 = par_now();
     if (st == IRIS_OK)
         st = eyepass_run(&tr, opts, threads, out, stats);
@@ -145,6 +187,7 @@ enum iris_status iris_render(const iris_scene *scene,
         set_err(err, errlen, "iris_render: interrupted");
     else if (st == IRIS_EINVAL)
         set_err(err, errlen, "iris_render: empty render window");
+    photon_map_destroy(pmap);
 done:
     tracer_fini(&tr);
     mat_ctx_destroy(mat);

@@ -20,6 +20,10 @@
 
 #define T_EPSILON 1e-10
 #define HUGE_DEPTH 2.0e10        /* POV-Ray's BOUND_HUGE */
+/* POV-Ray's shapes ignore intersections beyond MAX_DISTANCE = 1e7 (a plane
+** seen near the horizon shows it). The limit grows with the scene's size
+** (accel_epsilon is 1e-9 of it) so that a scene scaled up still renders. */
+#define POV_MAX_DISTANCE 1.0e7
 #define MAX_CACHED_LIGHTS 64
 
 unsigned trace_quality_flags(int q)
@@ -53,6 +57,7 @@ bool tracer_init(struct tracer *t, const iris_scene *scene,
                                              : 1.0 / 255.0;
     t->legacy = scene->version > 0 && scene->version < 3.7;
     t->max_area_grid = 1;
+    t->max_distance = fmax(POV_MAX_DISTANCE, 1e6 * (q->eps / 1e-9));
     if (scene->n_lights > 0) {
         t->lights = iris_calloc((size_t)scene->n_lights, sizeof *t->lights);
         if (!t->lights)
@@ -254,12 +259,17 @@ static void shadow_colour(struct trace_ctx *c, const struct interior_stack *st,
 }
 
 /* POV-Ray's TracePointLightShadowRay: walks the segment to the light,
-** filtering 'lc' by every object met, until it is black. */
-static void point_shadow(struct trace_ctx *c, const struct interior_stack *st,
+** filtering 'lc' by every object met, until it is black. The shadow ray
+** starts with the eye ray's interiors and, as POV-Ray's ComputeShadowMedia
+** does, toggles each object it crosses in and out of them, so the fade
+** of a segment inside an object applies. */
+static void point_shadow(struct trace_ctx *c, const struct interior_stack *eye_st,
+                         const iris_light *light, const iris_object *lit,
                          vec3 origin, vec3 L, double depth, double lc[3])
 {
     const struct tracer *t = c->t;
     double eps = t->q.eps;
+    struct interior_stack stack = *eye_st, *st = &stack;
     for (int guard = 0; guard < 1024; guard++) {
         ray r = { origin, L };
         struct hit h;
@@ -269,11 +279,22 @@ static void point_shadow(struct trace_ctx *c, const struct interior_stack *st,
             return;
         if (!(h.t > eps) || !(h.t < depth - eps))
             return;
+        if (t->photon_shadow && t->photon_map &&
+            t->photon_shadow(t->photon_map, h.obj, light, lit)) {
+            lc[0] = lc[1] = lc[2] = 0.0;
+            return;
+        }
         shadow_colour(c, st, &h, L, lc);
         if (rgb_zero(lc)) {
             lc[0] = lc[1] = lc[2] = 0.0;
             return;
         }
+        int idx = stack_find(st, interior_key(&h));
+        if (idx >= 0)
+            stack_remove(st, idx);
+        else
+            stack_push(st, interior_key(&h), h.interior,
+                       h.obj ? h.obj->hollow : true);
         depth -= h.t;
         origin = h.p;
     }
@@ -287,6 +308,7 @@ static double colour_distance(const double a[3], const double b[3])
 struct area_job {
     const struct rlight *l;
     const struct interior_stack *st;
+    const iris_object *lit;
     vec3 p, a1, a2;
     double lc[3];              /* the light colour entering the test */
 };
@@ -312,7 +334,7 @@ static void area_sample(struct trace_ctx *c, const struct area_job *j,
     double depth;
     light_ray(l, j->p, off, &L, &depth);
     memcpy(out, j->lc, sizeof j->lc);
-    point_shadow(c, j->st, j->p, L, depth, out);
+    point_shadow(c, j->st, l->src, j->lit, j->p, L, depth, out);
     memcpy(c->grid[idx], out, sizeof c->grid[idx]);
     c->grid_set[idx] = true;
 }
@@ -365,8 +387,8 @@ static void area_axes(const struct rlight *l, vec3 p, vec3 *a1, vec3 *a2)
 
 /* POV-Ray's TraceShadowRay: past max_trace_level the light is black. */
 static void trace_shadow(struct trace_ctx *c, const struct interior_stack *st,
-                         const struct rlight *l, vec3 p, vec3 L, double depth,
-                         double lc[3])
+                         const struct rlight *l, const iris_object *lit,
+                         vec3 p, vec3 L, double depth, double lc[3])
 {
     const struct tracer *t = c->t;
     if (c->level > t->max_level) {
@@ -375,14 +397,14 @@ static void trace_shadow(struct trace_ctx *c, const struct interior_stack *st,
     }
     c->level++;
     if (l->area && (t->quality & TQ_AREA_LIGHT)) {
-        struct area_job j = { l, st, p, v3(0, 0, 0), v3(0, 0, 0),
+        struct area_job j = { l, st, lit, p, v3(0, 0, 0), v3(0, 0, 0),
                               { lc[0], lc[1], lc[2] } };
         area_axes(l, p, &j.a1, &j.a2);
         memset(c->grid_set, 0,
                (size_t)(l->size1 * l->size2) * sizeof *c->grid_set);
         area_subset(c, &j, 0, 0, l->size1 - 1, l->size2 - 1, 0, lc);
     } else {
-        point_shadow(c, st, p, L, depth, lc);
+        point_shadow(c, st, l->src, lit, p, L, depth, lc);
     }
     c->level--;
 }
@@ -500,7 +522,8 @@ static void full_area_light(struct trace_ctx *c, const struct layer_shade *s,
                 continue;
             if ((c->t->quality & TQ_SHADOW) && !l->fill) {
                 c->level++;
-                point_shadow(c, &s->eye->st, s->h->p, L, depth, lc);
+                point_shadow(c, &s->eye->st, l->src, s->h->obj, s->h->p, L,
+                             depth, lc);
                 c->level--;
             }
             if (rgb_zero(lc))
@@ -548,7 +571,7 @@ static void diffuse_light(struct trace_ctx *c, const struct layer_shade *s,
             if (i < MAX_CACHED_LIGHTS && cache->tested[i]) {
                 memcpy(lc, cache->colour[i], sizeof lc);
             } else {
-                trace_shadow(c, &s->eye->st, l, p, L, depth, lc);
+                trace_shadow(c, &s->eye->st, l, s->h->obj, p, L, depth, lc);
                 if (i < MAX_CACHED_LIGHTS) {
                     cache->tested[i] = true;
                     memcpy(cache->colour[i], lc, sizeof lc);
@@ -1051,7 +1074,7 @@ double trace_ray(struct trace_ctx *c, const struct tray *r, double weight,
         return HUGE_VAL;
     struct hit h;
     c->rays++;
-    bool found = t->q.intersect(t->q.impl, &r->r, t->q.eps, HUGE_VAL,
+    bool found = t->q.intersect(t->q.impl, &r->r, t->q.eps, t->max_distance,
                                 skip_flags(r), &h);
     if (found && !(h.t > 0 && isfinite(h.t)))
         found = false;

@@ -55,6 +55,13 @@ typedef void (*trace_photon_fn)(const void *map,
                                 const struct trace_photon_input *in,
                                 double rgb[3]);
 
+/* POV-Ray's shadow rule for photon targets: true when the shadow ray from
+** 'lit' to 'light' blocked by 'blocker' must be black (semantics §2.5). */
+typedef bool (*trace_photon_shadow_fn)(const void *map,
+                                       const iris_object *blocker,
+                                       const iris_light *light,
+                                       const iris_object *lit);
+
 struct tracer {
     const iris_scene *scene;
     const struct mat_ctx *mat;
@@ -67,8 +74,10 @@ struct tracer {
     bool legacy;               /* #version < 3.7 paths */
     int spectral_min;          /* floor of dispersion samples */
     int max_area_grid;         /* largest size1*size2 of any area light */
+    double max_distance;       /* hits farther than this are ignored */
     uint64_t seed;
     trace_photon_fn photon_shade;
+    trace_photon_shadow_fn photon_shadow;
     const void *photon_map;
 };
 

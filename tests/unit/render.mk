@@ -12,3 +12,10 @@ tests_unit_test_render_SOURCES = tests/unit/test_render.c \
 	tests/unit/render_double.c tests/unit/render_double.h tests/testutil.h
 tests_unit_test_render_CFLAGS = $(TEST_CFLAGS)
 tests_unit_test_render_LDADD = $(TEST_LDADD)
+
+# The POV-Ray parity suite: iris against POV-Ray, scene by scene.
+check_PROGRAMS += tests/render/psnr
+tests_render_psnr_SOURCES = tests/render/psnr.c
+tests_render_psnr_LDADD = libiris_core.la $(IRIS_LIBS)
+TESTS += tests/render/parity.sh
+EXTRA_DIST += tests/render/parity.sh tests/render/scenes

@@ -212,11 +212,11 @@ static iris_object *make_cone(iris_arena *ar)
     return o;
 }
 
-/* x² - y² + z² = 0.5 (quadric order: x², y², z², xy, xz, yz, x, y, z, 1)
-** clipped by a box. */
+/* x² - y² + z² + 0.5xy + 0.3y = 0.5 (quadric order: x², y², z², xy, xz,
+** yz, x, y, z, 1) clipped by a box. */
 static iris_object *make_quadric(iris_arena *ar)
 {
-    static double q[10] = { 1, -1, 1, 0, 0, 0, 0, 0, 0, -0.5 };
+    static double q[10] = { 1, -1, 1, 0.5, 0, 0, 0, 0.3, 0, -0.5 };
     iris_object *o = new_obj(ar, IRIS_OBJ_QUADRIC);
     o->u.poly.order = 2;
     o->u.poly.n_coeffs = 10;
@@ -450,7 +450,7 @@ static const struct pov_case cases[] = {
              "clipped_by { plane { <1,1,0>, 0.8 } } rotate <25,35,0> }",
       make_csg },
     { "cone", "cone { <-1,-1,0>, 1, <1,1.2,0.5>, 0.3 }", make_cone },
-    { "quadric", "quadric { <1,-1,1>, <0,0,0>, <0,0,0>, -0.5 "
+    { "quadric", "quadric { <1,-1,1>, <0.5,0,0>, <0,0.3,0>, -0.5 "
                  "clipped_by { box { -1.5, 1.5 } } rotate <-30,0,20> }",
       make_quadric },
     { "isosurface", "isosurface { function { x*x + 2*y*y + z*z - 1.5 } "

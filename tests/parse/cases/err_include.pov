@@ -1,0 +1,2 @@
+// A missing include file.
+#include "no_such_file.inc"

@@ -1,0 +1,3 @@
+// #if without #end.
+#if (1)
+  sphere { 0, 1 }

@@ -1,0 +1,2 @@
+// A file that includes itself stops at the include depth limit.
+#include "err_self_include.pov"

@@ -1,0 +1,3 @@
+// #end without a matching directive.
+#declare A = 1;
+#end

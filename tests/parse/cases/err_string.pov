@@ -1,0 +1,2 @@
+// An unterminated string.
+#declare S = "no end

@@ -1,0 +1,2 @@
+// Truncated in the middle of a vector.
+sphere { <1, 2

@@ -1,0 +1,2 @@
+// An undeclared identifier is named, with a caret under it.
+sphere { 0, Radius }
