@@ -50,11 +50,10 @@ static pp_value *array_slot(pp_state *ps, pp_array *arr)
         pp_token at = ps->tok;
         double f = pp_float(ps);
         pp_expect(ps, T_RBRACKET, "']'");
-        long i = (long)f;
-        if (!(f >= 0) || i >= arr->dims[d])
+        if (!(f >= 0) || !(f < arr->dims[d]))
             pp_error(ps, &at, "array index %g out of range [0, %d]", f,
                      arr->dims[d] - 1);
-        idx = idx * arr->dims[d] + i;
+        idx = idx * arr->dims[d] + (long)f;
     }
     return &arr->items[idx];
 }

@@ -452,11 +452,10 @@ pp_value pp_array_element(pp_state *ps, const pp_token *at, pp_array *arr)
         pp_token it = ps->tok;
         double f = pp_float(ps);
         pp_expect(ps, T_RBRACKET, "']'");
-        long i = (long)f;
-        if (!(f >= 0) || i >= arr->dims[d])
+        if (!(f >= 0) || !(f < arr->dims[d]))
             pp_error(ps, &it, "array index %g out of range [0, %d]", f,
                      arr->dims[d] - 1);
-        idx = idx * arr->dims[d] + i;
+        idx = idx * arr->dims[d] + (long)f;
     }
     pp_value v = arr->items[idx];
     if (v.kind == V_NONE)
@@ -627,9 +626,9 @@ static pp_value factor(pp_state *ps)
         return fval(checked(ps, &at, pow(a, b), "pow"));
     case T_BITWISE_AND: case T_BITWISE_OR: case T_BITWISE_XOR: {
         lparen(ps);
-        long r = (long)pp_float(ps);
+        long r = pp_clamp_long(pp_float(ps));
         while (pp_accept(ps, T_COMMA)) {
-            long x = (long)pp_float(ps);
+            long x = pp_clamp_long(pp_float(ps));
             r = k == T_BITWISE_AND ? (r & x) : k == T_BITWISE_OR ? (r | x)
                                                                  : (r ^ x);
         }
@@ -750,7 +749,7 @@ static pp_value factor(pp_state *ps)
     }
     case T_RAND: {
         double s = arg1(ps);
-        int i = (int)s;
+        int i = s >= 0 && s < 1e9 ? (int)s : -1;
         if (i < 0 || i >= ps->n_rng)
             pp_error(ps, &at, "rand: %g is not a stream made by seed()", s);
         return fval((double)(splitmix(&ps->rng[i]) >> 11) * 0x1.0p-53);
@@ -775,7 +774,7 @@ static pp_value factor(pp_state *ps)
         if (k == T_DIMENSION_SIZE) {
             comma(ps);
             pp_token dt = ps->tok;
-            int d = (int)pp_float(ps);
+            int d = pp_int(ps);
             if (d < 1 || d > arr->ndim)
                 pp_error(ps, &dt, "dimension %d out of range [1, %d]", d,
                          arr->ndim);
@@ -837,23 +836,23 @@ static pp_value factor(pp_state *ps)
         lparen(ps);
         double f = pp_float(ps);
         comma(ps);
-        int len = (int)pp_float(ps);
+        int len = pp_int(ps);
         comma(ps);
-        int prec = (int)pp_float(ps);
+        int prec = pp_int(ps);
         rparen(ps);
         return sval(fmt_float(ps, f, len, prec));
     }
     case T_VSTR: {
         lparen(ps);
-        int n = (int)pp_float(ps);
+        int n = pp_int(ps);
         comma(ps);
         pp_value v = expr_cond(ps);
         comma(ps);
         const char *sep = pp_string(ps);
         comma(ps);
-        int len = (int)pp_float(ps);
+        int len = pp_int(ps);
         comma(ps);
-        int prec = (int)pp_float(ps);
+        int prec = pp_int(ps);
         rparen(ps);
         need_numeric(ps, &at, &v);
         if (n < 1)
@@ -896,7 +895,8 @@ static pp_value factor(pp_state *ps)
         return sval(buf);
     }
     case T_CHR: {
-        int c = (int)arg1(ps);
+        double cv = arg1(ps);
+        int c = cv >= 0 && cv < 256 ? (int)cv : 0;
         char ch[2] = { (char)(c > 0 && c < 256 ? c : ' '), 0 };
         return sval(pp_strdup(ps, ch, 1));
     }
@@ -904,9 +904,9 @@ static pp_value factor(pp_state *ps)
         lparen(ps);
         const char *s = pp_string(ps);
         comma(ps);
-        int p = (int)pp_float(ps);
+        int p = pp_int(ps);
         comma(ps);
-        int n = (int)pp_float(ps);
+        int n = pp_int(ps);
         rparen(ps);
         int len = (int)strlen(s);
         if (p < 1 || n < 0 || p - 1 + n > len)
@@ -1239,4 +1239,24 @@ pp_value pp_string_rvalue(pp_state *ps)
 pp_value pp_factor_value(pp_state *ps)
 {
     return postfix(ps);
+}
+
+int pp_int(pp_state *ps)
+{
+    pp_next(ps);
+    pp_token at = ps->tok;
+    pp_unget(ps);
+    double v = pp_float(ps);
+    if (!(fabs(v) < 2147483647.0))
+        pp_error(ps, &at, "value %g out of the integer range", v);
+    return (int)v;
+}
+
+long pp_clamp_long(double v)
+{
+    if (!(v > -9.0e15))
+        return v > 0 ? (long)9.0e15 : (long)-9.0e15;
+    if (v > 9.0e15)
+        return (long)9.0e15;
+    return (long)v;
 }

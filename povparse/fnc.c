@@ -190,9 +190,9 @@ static void cfactor(fnc *c)
     }
     case T_INTERNAL: {
         pp_expect(ps, T_LPAREN, "'('");
-        double n = pp_float(ps);
+        int n = pp_int(ps);
         pp_expect(ps, T_RPAREN, "')'");
-        emit(c, IRIS_FN_INTERNAL, (int)n, 0, 0, 1);
+        emit(c, IRIS_FN_INTERNAL, n, 0, 0, 1);
         return;
     }
     case T_PROD: case T_SUM:

@@ -183,7 +183,7 @@ static void warp_block(pp_state *ps, iris_pattern *p)
                 }
             }
             break;
-        case T_OCTAVES: if (w) w->octaves = (int)pp_float(ps); else pp_float(ps); break;
+        case T_OCTAVES: if (w) w->octaves = pp_int(ps); else pp_float(ps); break;
         case T_OMEGA: if (w) w->omega = pp_float(ps); else pp_float(ps); break;
         case T_LAMBDA: if (w) w->lambda = pp_float(ps); else pp_float(ps); break;
         case T_OFFSET: if (w) w->offset = pp_vector(ps); else pp_vector(ps); break;
@@ -269,9 +269,9 @@ static iris_image_ref *image_block(pp_state *ps, double *bump_size)
         pp_token at = ps->tok;
         switch (at.kind) {
         case T_RBRACE: return img;
-        case T_MAP_TYPE: img->map_type = (int)pp_float(ps); break;
+        case T_MAP_TYPE: img->map_type = pp_int(ps); break;
         case T_ONCE: img->once = true; break;
-        case T_INTERPOLATE: img->interpolate = (int)pp_float(ps); break;
+        case T_INTERPOLATE: img->interpolate = pp_int(ps); break;
         case T_USE_ALPHA: img->use_alpha = true; break;
         case T_USE_COLOR: case T_USE_INDEX: break;
         case T_GAMMA: img->gamma = pp_float(ps); break;
@@ -342,10 +342,10 @@ static bool pattern_kind(pp_state *ps, iris_pattern *p)
         p->kind = IRIS_PAT_JULIA;
         p->complex_c = pp_vector2(ps);
         pp_accept(ps, T_COMMA);
-        p->iterations = (int)pp_float(ps);
+        p->iterations = pp_int(ps);
         break;
     case T_LEOPARD: p->kind = IRIS_PAT_LEOPARD; break;
-    case T_MANDEL: p->kind = IRIS_PAT_MANDEL; p->iterations = (int)pp_float(ps); break;
+    case T_MANDEL: p->kind = IRIS_PAT_MANDEL; p->iterations = pp_int(ps); break;
     case T_MARBLE: p->kind = IRIS_PAT_MARBLE; p->wave = IRIS_WAVE_TRIANGLE; break;
     case T_ONION: p->kind = IRIS_PAT_ONION; break;
     case T_PLANAR: p->kind = IRIS_PAT_PLANAR; break;
@@ -448,7 +448,7 @@ static bool pattern_mod(pp_state *ps, iris_pattern *p)
     pp_token at = ps->tok;
     switch (at.kind) {
     case T_TURBULENCE: classic_turb(ps, p)->turbulence = pp_vector(ps); return true;
-    case T_OCTAVES: classic_turb(ps, p)->octaves = (int)pp_float(ps); return true;
+    case T_OCTAVES: classic_turb(ps, p)->octaves = pp_int(ps); return true;
     case T_OMEGA: classic_turb(ps, p)->omega = pp_float(ps); return true;
     case T_LAMBDA: classic_turb(ps, p)->lambda = pp_float(ps); return true;
     case T_WARP: warp_block(ps, p); return true;
@@ -467,7 +467,7 @@ static bool pattern_mod(pp_state *ps, iris_pattern *p)
         if (pp_starts_expr(ps) && ps->tok.kind != T_LT)
             p->wave_exponent = pp_float(ps);
         return true;
-    case T_NOISE_GENERATOR: p->noise_generator = (int)pp_float(ps); return true;
+    case T_NOISE_GENERATOR: p->noise_generator = pp_int(ps); return true;
     case T_AGATE_TURB: p->params[0] = pp_float(ps); return true;
     case T_BRICK_SIZE: p->brick_size = pp_vector(ps); return true;
     case T_MORTAR: p->mortar = pp_float(ps); return true;
@@ -1511,8 +1511,10 @@ iris_interior *pp_interior(pp_state *ps, const iris_interior *base)
         case T_DISPERSION: in->dispersion = pp_float(ps); break;
         case T_DISPERSION_SAMPLES: {
             double n = pp_float(ps);
-            if (n < 2)
+            if (!(n >= 2))
                 pp_error(ps, &at, "dispersion_samples must be at least 2");
+            if (n > 1e6)
+                n = 1e6;
             in->dispersion_samples = (int)n;
             break;
         }
@@ -1608,12 +1610,12 @@ iris_fog *pp_fog(pp_state *ps)
             pp_unget(ps);
             f->colour = pp_colour(ps);
             break;
-        case T_FOG_TYPE: f->kind = (int)pp_float(ps) == 2 ? IRIS_FOG_GROUND
+        case T_FOG_TYPE: f->kind = pp_int(ps) == 2 ? IRIS_FOG_GROUND
                                                          : IRIS_FOG_CONSTANT; break;
         case T_DISTANCE: f->distance = pp_float(ps); break;
         case T_TURBULENCE: f->turbulence = pp_vector(ps); break;
         case T_TURB_DEPTH: f->turb_depth = pp_float(ps); break;
-        case T_OCTAVES: f->octaves = (int)pp_float(ps); break;
+        case T_OCTAVES: f->octaves = pp_int(ps); break;
         case T_OMEGA: f->omega = pp_float(ps); break;
         case T_LAMBDA: f->lambda = pp_float(ps); break;
         case T_FOG_OFFSET: f->offset = pp_float(ps); break;

@@ -360,6 +360,13 @@ static void object_mods(pp_state *ps, iris_object *o, const pp_token *open,
 /* POV-Ray's Parse_Comma: the comma is optional. */
 static void comma(pp_state *ps) { pp_accept(ps, T_COMMA); }
 
+/* An index read as a float: out-of-range values become -1 (rejected by
+** the callers' range checks) instead of undefined conversions. */
+static int32_t index_of(double v)
+{
+    return v >= 0 && v < 2147483647.0 ? (int32_t)v : -1;
+}
+
 /* ---- the light source ------------------------------------------- */
 
 static bool ident_is(pp_state *ps, const pp_token *t, const char *word)
@@ -412,12 +419,12 @@ iris_light *pp_light(pp_state *ps)
             l->area = true;
             l->axis1 = pp_vector(ps); comma(ps);
             l->axis2 = pp_vector(ps); comma(ps);
-            l->size1 = (int)pp_float(ps); comma(ps);
-            l->size2 = (int)pp_float(ps);
+            l->size1 = pp_int(ps); comma(ps);
+            l->size2 = pp_int(ps);
             if (l->size1 < 1 || l->size2 < 1)
                 pp_error(ps, &at, "area_light sizes must be >= 1");
             break;
-        case T_ADAPTIVE: l->adaptive = (int)pp_float(ps); break;
+        case T_ADAPTIVE: l->adaptive = pp_int(ps); break;
         case T_JITTER: l->jitter = pp_bool_opt(ps); break;
         case T_CIRCULAR: l->circular = pp_bool_opt(ps); break;
         case T_ORIENT: l->orient = pp_bool_opt(ps); break;
@@ -610,7 +617,7 @@ static void mesh2(pp_state *ps, iris_object *o)
                 pp_accept(ps, T_COMMA);
                 pp_token vt = ps->tok;
                 iris_vec3 f = pp_vector(ps);
-                int32_t a = (int32_t)f.x, b = (int32_t)f.y, c = (int32_t)f.z;
+                int32_t a = index_of(f.x), b = index_of(f.y), c = index_of(f.z);
                 if (a < 0 || b < 0 || c < 0 || a >= m->n_vertices ||
                     b >= m->n_vertices || c >= m->n_vertices)
                     pp_error(ps, &vt, "face index out of range [0, %d]",
@@ -630,7 +637,7 @@ static void mesh2(pp_state *ps, iris_object *o)
                     }
                     pp_unget(ps);
                     if (more) {
-                        int t = (int)pp_float(ps);
+                        int t = pp_int(ps);
                         if (m->tri_texture)
                             m->tri_texture[i] = t < m->n_textures ? t : 0;
                         if (pp_accept(ps, T_COMMA)) {
@@ -661,9 +668,9 @@ static void mesh2(pp_state *ps, iris_object *o)
                 pp_accept(ps, T_COMMA);
                 pp_token vt = ps->tok;
                 iris_vec3 f = pp_vector(ps);
-                idx[3 * i] = (int32_t)f.x;
-                idx[3 * i + 1] = (int32_t)f.y;
-                idx[3 * i + 2] = (int32_t)f.z;
+                idx[3 * i] = index_of(f.x);
+                idx[3 * i + 1] = index_of(f.y);
+                idx[3 * i + 2] = index_of(f.z);
                 for (int k = 0; k < 3; k++)
                     if (idx[3 * i + k] < 0 || idx[3 * i + k] >= lim)
                         pp_error(ps, &vt, "index out of range [0, %d]",
@@ -958,7 +965,7 @@ static void isosurface(pp_state *ps, iris_object *o)
         case T_EVALUATE:
             pp_float(ps); comma(ps); pp_float(ps); comma(ps); pp_float(ps);
             break;
-        case T_MAX_TRACE: o->u.isosurface.max_trace = (int)pp_float(ps); break;
+        case T_MAX_TRACE: o->u.isosurface.max_trace = pp_int(ps); break;
         case T_ALL_INTERSECTIONS: o->u.isosurface.all_intersections = true; break;
         default:
             pp_unget(ps);
@@ -1082,8 +1089,8 @@ static void shape_body(pp_state *ps, iris_object *o, int kw, const pp_token *at)
     case T_HEIGHT_FIELD: {
         pp_next(ps);
         if (ps->tok.kind == T_FUNCTION) {
-            o->u.height_field.fn_res_x = (int)pp_float(ps); comma(ps);
-            o->u.height_field.fn_res_y = (int)pp_float(ps);
+            o->u.height_field.fn_res_x = pp_int(ps); comma(ps);
+            o->u.height_field.fn_res_y = pp_int(ps);
             o->u.height_field.fn = pp_function(ps);
         } else {
             pp_unget(ps);
@@ -1123,7 +1130,7 @@ static void shape_body(pp_state *ps, iris_object *o, int kw, const pp_token *at)
         if (ps->tok.kind == T_INTERNAL) {
             double k = pp_float(ps);
             char buf[32];
-            snprintf(buf, sizeof buf, "internal %d", (int)k);
+            snprintf(buf, sizeof buf, "internal %d", (int)fmax(0, fmin(k, 1e6)));
             o->u.text.font = pp_strdup(ps, buf, strlen(buf));
         } else {
             if (ps->tok.kind != T_TTF)
@@ -1160,7 +1167,7 @@ static void shape_body(pp_state *ps, iris_object *o, int kw, const pp_token *at)
         int order = kw == T_CUBIC ? 3 : kw == T_QUARTIC ? 4 : 0;
         if (kw == T_POLY) {
             pp_token ot = ps->tok;
-            order = (int)pp_float(ps);
+            order = pp_int(ps);
             if (order < 2 || order > 15)
                 pp_error(ps, &ot, "poly order must be 2..15");
             comma(ps);
@@ -1196,7 +1203,7 @@ static void shape_body(pp_state *ps, iris_object *o, int kw, const pp_token *at)
                 pp_expect(ps, T_RPAREN, "')'");
                 continue;
             }
-            case T_MAX_ITERATION: o->u.julia.iterations = (int)pp_float(ps); continue;
+            case T_MAX_ITERATION: o->u.julia.iterations = pp_int(ps); continue;
             case T_PRECISION: o->u.julia.precision = pp_float(ps); continue;
             case T_SLICE: {
                 double s[4];
@@ -1220,13 +1227,13 @@ static void shape_body(pp_state *ps, iris_object *o, int kw, const pp_token *at)
         for (;;) {
             pp_next(ps);
             if (ps->tok.kind == T_TYPE)
-                o->u.bicubic.type = (int)pp_float(ps);
+                o->u.bicubic.type = pp_int(ps);
             else if (ps->tok.kind == T_FLATNESS)
                 o->u.bicubic.flatness = pp_float(ps);
             else if (ps->tok.kind == T_U_STEPS)
-                o->u.bicubic.u_steps = (int)pp_float(ps);
+                o->u.bicubic.u_steps = pp_int(ps);
             else if (ps->tok.kind == T_V_STEPS)
-                o->u.bicubic.v_steps = (int)pp_float(ps);
+                o->u.bicubic.v_steps = pp_int(ps);
             else if (ps->tok.kind == T_ACCURACY)
                 pp_float(ps);
             else

@@ -356,6 +356,8 @@ const char *pp_tok_text(pp_state *ps, const pp_token *t);
 /* ---- expr.c ------------------------------------------------------- */
 pp_value pp_expr(pp_state *ps);       /* numeric or string expression */
 double pp_float(pp_state *ps);        /* POV-Ray's Parse_Float: no <, = */
+int pp_int(pp_state *ps);             /* a float in the int range */
+long pp_clamp_long(double v);
 double pp_full_float(pp_state *ps);         /* a full expression as a float */
 iris_vec3 pp_vector(pp_state *ps);
 iris_vec2 pp_vector2(pp_state *ps);

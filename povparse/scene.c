@@ -100,7 +100,7 @@ iris_camera *pp_camera(pp_state *ps, const iris_camera *base)
         case T_SPHERICAL: c->kind = IRIS_CAM_SPHERICAL; break;
         case T_CYLINDER:
             c->kind = IRIS_CAM_CYLINDER;
-            c->cylinder_type = (int)pp_float(ps);
+            c->cylinder_type = pp_int(ps);
             if (c->cylinder_type < 1 || c->cylinder_type > 4)
                 pp_error(ps, &at, "cylinder camera type must be 1 to 4");
             break;
@@ -122,9 +122,9 @@ iris_camera *pp_camera(pp_state *ps, const iris_camera *base)
         }
         case T_APERTURE: c->aperture = pp_float(ps); break;
         case T_BLUR_SAMPLES:
-            c->blur_samples = (int)pp_float(ps);
+            c->blur_samples = pp_int(ps);
             if (pp_accept(ps, T_COMMA))
-                c->blur_samples = (int)pp_float(ps);
+                c->blur_samples = pp_int(ps);
             break;
         case T_FOCAL_POINT: c->focal_point = pp_vector(ps); break;
         case T_CONFIDENCE: c->confidence = pp_float(ps); break;
@@ -240,11 +240,11 @@ static void global_photons(pp_state *ps, iris_photon_settings *p)
                 p->enabled = false;
             return;
         case T_SPACING: p->spacing = pp_float(ps); break;
-        case T_COUNT: p->count = (int)pp_float(ps); break;
+        case T_COUNT: p->count = pp_int(ps); break;
         case T_GATHER:
-            p->gather_min = (int)pp_float(ps);
+            p->gather_min = pp_int(ps);
             pp_expect(ps, T_COMMA, "','");
-            p->gather_max = (int)pp_float(ps);
+            p->gather_max = pp_int(ps);
             break;
         case T_RADIUS:
             p->radius = pp_float(ps);
@@ -255,16 +255,16 @@ static void global_photons(pp_state *ps, iris_photon_settings *p)
             }
             break;
         case T_JITTER: p->jitter = pp_float(ps); break;
-        case T_MAX_TRACE_LEVEL: p->max_trace_level = (int)pp_float(ps); break;
+        case T_MAX_TRACE_LEVEL: p->max_trace_level = pp_int(ps); break;
         case T_ADC_BAILOUT: p->adc_bailout = pp_float(ps); break;
         case T_AUTOSTOP: p->autostop = pp_float(ps); break;
         case T_EXPAND_THRESHOLDS:
             p->expand_tol = pp_float(ps);
             pp_expect(ps, T_COMMA, "','");
-            p->expand_min = (int)pp_float(ps);
+            p->expand_min = pp_int(ps);
             break;
         case T_MEDIA:
-            p->media_max_steps = (int)pp_float(ps);
+            p->media_max_steps = pp_int(ps);
             if (pp_accept(ps, T_COMMA))
                 p->media_factor = pp_float(ps);
             break;
@@ -307,7 +307,7 @@ static void global_settings(pp_state *ps)
             break;
         }
         case T_MAX_TRACE_LEVEL: {
-            int n = (int)pp_float(ps);
+            int n = pp_int(ps);
             g->max_trace_level = n < 1 ? 1 : n > 256 ? 256 : n;
             break;
         }
@@ -318,9 +318,9 @@ static void global_settings(pp_state *ps)
             g->irid_wavelength = v3(c.r, c.g, c.b);
             break;
         }
-        case T_NUMBER_OF_WAVES: g->number_of_waves = (int)pp_float(ps); break;
+        case T_NUMBER_OF_WAVES: g->number_of_waves = pp_int(ps); break;
         case T_NOISE_GENERATOR: {
-            int n = (int)pp_float(ps);
+            int n = pp_int(ps);
             if (n < 1 || n > 3)
                 pp_error(ps, &at, "noise_generator must be 1, 2 or 3");
             g->noise_generator = n;

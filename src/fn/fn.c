@@ -20,6 +20,14 @@ static double finite_or_0(double v)
     return isfinite(v) ? v : 0.0;
 }
 
+/* A double as an integer without undefined conversions. */
+static long long to_ll(double v)
+{
+    if (!(v > -9.0e18 && v < 9.0e18))
+        return 0;
+    return (long long)v;
+}
+
 static double builtin(int b, const double *a, int n)
 {
     switch (b) {
@@ -65,9 +73,9 @@ static double builtin(int b, const double *a, int n)
     }
     case IRIS_FB_BITWISE_AND: case IRIS_FB_BITWISE_OR:
     case IRIS_FB_BITWISE_XOR: {
-        long long r = (long long)a[0];
+        long long r = to_ll(a[0]);
         for (int i = 1; i < n; i++) {
-            long long x = (long long)a[i];
+            long long x = to_ll(a[i]);
             r = b == IRIS_FB_BITWISE_AND ? (r & x) :
                 b == IRIS_FB_BITWISE_OR ? (r | x) : (r ^ x);
         }

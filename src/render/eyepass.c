@@ -143,6 +143,7 @@ static void stratified(struct job *j, struct trace_ctx *c, int x, int y,
 
 static void put_pixel(struct job *j, int x, int y, const double col[3])
 {
+    const struct tracer *t = j->tracer;
     float *px = &j->out->pixels[((size_t)y * j->out->width + x) * 4];
     for (int k = 0; k < 3; k++) {
         double v = col[k];
@@ -150,7 +151,13 @@ static void put_pixel(struct job *j, int x, int y, const double col[3])
             v = 0.0;
             atomic_fetch_add(&j->nan_count, 1);
         }
-        px[k] = (float)fmax(v, 0.0);
+        v = fmax(v, 0.0);
+        /* from the working gamma space to linear light (§3.9) */
+        if (t->gamma_off)
+            v = iris_srgb_decode(fmin(v, 1.0));
+        else if (t->working_gamma != 1.0)
+            v = pow(v, t->working_gamma);
+        px[k] = (float)v;
     }
     px[3] = 1.0f;
 }
@@ -371,7 +378,8 @@ enum iris_status eyepass_run(const struct tracer *tr,
     j.aa_depth = opts->aa_depth < 1 ? 1 : opts->aa_depth > 9 ? 9 : opts->aa_depth;
     j.aa_threshold = opts->aa_threshold;
     j.aa_gamma = opts->aa_gamma;
-    j.jitter = opts->jitter ? opts->jitter_amount : 0.0;
+    /* POV-Ray clips the jitter amount to [0, 1] */
+    j.jitter = opts->jitter ? fmin(fmax(opts->jitter_amount, 0.0), 1.0) : 0.0;
     j.ortho = scene->camera.kind == IRIS_CAM_ORTHOGRAPHIC;
     if (threads < 1)
         threads = 1;

@@ -58,6 +58,9 @@ bool tracer_init(struct tracer *t, const iris_scene *scene,
     t->legacy = scene->version > 0 && scene->version < 3.7;
     t->max_area_grid = 1;
     t->max_distance = fmax(POV_MAX_DISTANCE, 1e6 * (q->eps / 1e-9));
+    double gam = scene->settings.assumed_gamma;
+    t->working_gamma = gam > 0 ? gam : 1.0;
+    t->gamma_off = !(gam > 0) && t->legacy;
     if (scene->n_lights > 0) {
         t->lights = iris_calloc((size_t)scene->n_lights, sizeof *t->lights);
         if (!t->lights)

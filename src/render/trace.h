@@ -75,6 +75,13 @@ struct tracer {
     int spectral_min;          /* floor of dispersion samples */
     int max_area_grid;         /* largest size1*size2 of any area light */
     double max_distance;       /* hits farther than this are ignored */
+    /* POV-Ray shades in the scene's working gamma space (assumed_gamma,
+    ** semantics §3.9); the eye pass turns results into linear light with
+    ** v^working_gamma, or, for a pre-3.7 scene without assumed_gamma
+    ** (gamma handling off), with the sRGB decoding so that the file holds
+    ** the values as computed. */
+    double working_gamma;      /* 1 for assumed_gamma 1 */
+    bool gamma_off;
     uint64_t seed;
     trace_photon_fn photon_shade;
     trace_photon_shadow_fn photon_shadow;

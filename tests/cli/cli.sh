@@ -28,15 +28,15 @@ rc=$?; cmp -s "$scenes/minimal.pov" "$tmp/min.pov"; same=$?
 tap_is "the scene file is never overwritten by the image" "$rc:$same" "2:0"
 
 # The plane lit along its normal is 0.35 linear; POV-Ray's PNG holds 160.
-"$IRIS" -q "$scenes/minimal.pov" +W40 +H30 -o "$tmp/min.png" --stats="$tmp/s.json"
+"$IRIS" -q "$scenes/minimal.pov" +W41 +H31 -o "$tmp/min.png" --stats="$tmp/s.json"
 tap_is "renders the minimal scene to PNG" "$?" "0"
-tap_is "... at the requested size" "$("$imgtool" size "$tmp/min.png")" "40 30"
-px=$("$imgtool" pixel "$tmp/min.png" 1 1 | awk '{printf "%d", $1 * 1000 + 0.5}')
+tap_is "... at the requested size" "$("$imgtool" size "$tmp/min.png")" "41 31"
+px=$("$imgtool" pixel "$tmp/min.png" 20 15 | awk '{printf "%d", $1 * 1000 + 0.5}')
 # 8-bit sRGB 160 decodes to 0.3515; 159..161 span 0.3467..0.3564
 tap_ok "... the lit plane is 0.35 (8-bit 160)" test "$px" -ge 346 -a "$px" -le 357
 
-"$IRIS" -q "$scenes/minimal.pov" +W40 +H30 -o "$tmp/min.exr"
-px=$("$imgtool" pixel "$tmp/min.exr" 1 1 | awk '{printf "%d", $1 * 10000 + 0.5}')
+"$IRIS" -q "$scenes/minimal.pov" +W41 +H31 -o "$tmp/min.exr"
+px=$("$imgtool" pixel "$tmp/min.exr" 20 15 | awk '{printf "%d", $1 * 10000 + 0.5}')
 # linear float: 0.35 within 0.5% (shading is exact here; float rounding)
 tap_ok "renders to linear EXR: the plane is 0.35" test "$px" -ge 3483 -a "$px" -le 3517
 

@@ -1,7 +1,10 @@
 // SPDX-License-Identifier: MIT
 // trap.pov: total internal reflection traps. KIND 0: the camera sits
-// inside a glass ball of index IOR and looks at its wall (the ball seen
-// from inside); KIND 1: the camera sits inside a long glass slab and
+// inside a glass ball of index IOR, 0.45 of the radius from its centre,
+// and looks along the wall: rays along the view axis meet the wall at
+// asin(0.9) = 64 degrees, past the critical angle of any IOR > 1.11, and
+// circle the ball as in a whispering gallery (the ball seen from inside);
+// KIND 1: the camera sits inside a long glass slab and
 // looks along it at a grazing angle, so most rays stay trapped between
 // the two faces. max_trace_level 256 (POV-Ray's maximum) and
 // adc_bailout 0 let a trapped ray bounce as long as POV-Ray would allow:
@@ -14,7 +17,7 @@ global_settings { max_trace_level 256 adc_bailout 0 }
 
 #if (KIND = 0)
     sphere {
-        <0, 1.6, -4.2>, 0.5
+        <-0.45, 1.6, -4.2>, 0.5
         pigment { rgbf 1 } finish { Clear }
         interior { ior IOR }
         Glass_photons()
