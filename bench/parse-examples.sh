@@ -35,7 +35,8 @@ DIR=${1:-/usr/share/doc/povray/examples}
 case $IRIS in /*) ;; *) IRIS=$(pwd)/$IRIS ;; esac
 
 tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT INT TERM
+trap 'rm -rf "$tmp"' EXIT
+trap 'exit 130' INT TERM
 
 now() { date +%s.%N; }
 

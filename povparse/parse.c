@@ -177,6 +177,7 @@ static enum iris_status run(const char *name, const char *text, size_t len,
         pp_cond *c = &ps->conds[ps->n_conds - 1];
         pp_error_at(ps, c->file, c->off, 1, "directive without #end");
     }
+    pp_decode_gamma(ps);
     fill_files(ps);
     if (probe && res) {
         pp_sym *s = sym_resolve(sym_lookup(ps, probe, strlen(probe)));

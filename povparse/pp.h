@@ -426,6 +426,10 @@ iris_camera *pp_camera(pp_state *ps, const iris_camera *base);
 void pp_add_object(pp_state *ps, iris_object *o);
 void pp_add_light(pp_state *ps, iris_light *l);
 
+/* ---- gamma.c ------------------------------------------------------ */
+/* Decodes colours written for assumed_gamma G != 1 (c -> c^G). */
+void pp_decode_gamma(pp_state *ps);
+
 /* ---- memory ------------------------------------------------------- */
 void *pp_alloc(pp_state *ps, size_t n);          /* scene arena, zeroed */
 void *pp_salloc(pp_state *ps, size_t n);         /* scratch arena */

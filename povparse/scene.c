@@ -302,8 +302,9 @@ static void global_settings(pp_state *ps)
             g->assumed_gamma = gm;
             ps->gamma_given = true;
             if (fabs(gm - 1) > 1e-6)
-                pp_warn_once(ps, &at, T_ASSUMED_GAMMA, "assumed_gamma other "
-                             "than 1 (colours are taken as linear)");
+                pp_warning(ps, &at, "assumed_gamma %g: colours are decoded "
+                           "as c^%g to linear light, an approximation of "
+                           "POV-Ray's shading in gamma space", gm, gm);
             break;
         }
         case T_MAX_TRACE_LEVEL: {

@@ -534,6 +534,26 @@ static void test_materials(void **state)
     assert_non_null(strstr(e.message, "unknown glass"));
 }
 
+/* assumed_gamma 2.2: colours decode as c^2.2, shared pigments once. */
+static void test_gamma(void **state)
+{
+    (void)state;
+    iris_scene *sc = scene_of(
+        "global_settings { assumed_gamma 2.2 }\n"
+        "#declare P = pigment { rgbf <0.5, 1, 0, 0.5> }\n"
+        "sphere { 0, 1 pigment { P } } sphere { 0, 1 pigment { P } }\n"
+        "light_source { 0, rgb 0.25 }\n");
+    double want = pow(0.5, 2.2); /* 0.2176 */
+    for (int i = 0; i < 2; i++) {
+        const iris_colour *c = &sc->objects[i]->texture->pigment->colour;
+        assert_near(c->r, want, 1e-12);
+        assert_near(c->g, 1, 0);
+        assert_near(c->f, 0.5, 0);   /* filter is a fraction: unchanged */
+    }
+    assert_near(sc->lights[0]->colour.r, pow(0.25, 2.2), 1e-12);
+    iris_scene_destroy(sc);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -552,6 +572,7 @@ int main(void)
         cmocka_unit_test(test_camera),
         cmocka_unit_test(test_transforms_and_textures),
         cmocka_unit_test(test_materials),
+        cmocka_unit_test(test_gamma),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
