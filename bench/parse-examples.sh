@@ -9,6 +9,10 @@
 #
 # usage: build=/path/to/build bench/parse-examples.sh [--povray] [DIR]
 #   IRIS      the iris binary (default $build/iris)
+#   PARSEDUMP the parser driver of the tests (default
+#             $build/tests/parse/parsedump, built by make check): when it
+#             exists, the 'parser_s' column times the parser alone, without
+#             the start-up of the iris program (loading its libraries)
 #   DIR       where the scenes are (default /usr/share/doc/povray/examples)
 #   --povray  also run POV-Ray on each scene (tiny image) and report its
 #             own "Parse Time" next to ours
@@ -20,6 +24,7 @@
 
 build=${build:-.}
 IRIS=${IRIS:-$build/iris}
+PARSEDUMP=${PARSEDUMP:-$build/tests/parse/parsedump}
 POVRAY=${POVRAY:-povray}
 TIMEOUT=${TIMEOUT:-30}
 MEMLIMIT=${MEMLIMIT:-2000000}
@@ -33,6 +38,7 @@ DIR=${1:-/usr/share/doc/povray/examples}
 [ -x "$IRIS" ] || { echo "parse-examples: no iris binary at $IRIS (set build or IRIS)"; exit 1; }
 [ -d "$DIR" ] || { echo "parse-examples: no scenes in $DIR"; exit 1; }
 case $IRIS in /*) ;; *) IRIS=$(pwd)/$IRIS ;; esac
+case $PARSEDUMP in /*) ;; *) PARSEDUMP=$(pwd)/$PARSEDUMP ;; esac
 
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
@@ -41,7 +47,8 @@ trap 'exit 130' INT TERM
 now() { date +%s.%N; }
 
 n=0; n_ok=0; n_err=0; n_to=0; n_crash=0
-printf '%-58s %-8s %8s %9s  %s\n' scene status iris_s povray_s first_diagnostic
+printf '%-50s %-7s %7s %8s %8s  %s\n' scene status iris_s parser_s povray_s \
+    first_diagnostic
 find "$DIR" -name '*.pov' | LC_ALL=C sort > "$tmp/list"
 while IFS= read -r scene; do
     n=$((n + 1))
@@ -66,18 +73,32 @@ while IFS= read -r scene; do
     esac
     diag=$(grep -m1 -E ': error: ' "$tmp/out" | cut -c1-110)
     [ "$status" = crash ] && diag="exit $rc $diag"
+    psecs=-
+    if [ -x "$PARSEDUMP" ]; then
+        t0=$(now)
+        ( cd "$work" && ulimit -v "$MEMLIMIT" 2>/dev/null
+          exec timeout "$TIMEOUT" "$PARSEDUMP" -q -w "$base" ) \
+            >/dev/null 2>&1 </dev/null
+        t1=$(now)
+        psecs=$(echo "$t0 $t1" | awk '{printf "%.3f", $2 - $1}')
+    fi
     pov=-
     if [ $with_pov -eq 1 ]; then
         ( cd "$work" && exec timeout 120 "$POVRAY" "+I$base" +O"$tmp/pov.png" \
-            +W16 +H12 -D +Q0 -V +FN -GA ) >"$tmp/pov" 2>&1 </dev/null
+            +W16 +H12 -D +Q0 +FN ) >"$tmp/pov" 2>&1 </dev/null
         pov=$(grep -m1 'Parse Time' "$tmp/pov" | sed 's/.*(\([0-9.]*\) seconds).*/\1/')
         [ -n "$pov" ] || pov=fail
     fi
-    printf '%-58s %-8s %8s %9s  %s\n' "$rel" "$status" "$secs" "$pov" "$diag"
+    printf '%-50s %-7s %7s %8s %8s  %s\n' "$rel" "$status" "$secs" "$psecs" \
+        "$pov" "$diag" | tee -a "$tmp/table"
     rm -rf "$work"
 done < "$tmp/list"
 
 pct=$(echo "$n_ok $n" | awk '{ if ($2) printf "%.1f", 100 * $1 / $2; else print 0 }')
+sum_col() { awk -v c="$1" '$c ~ /^[0-9.]+$/ { s += $c; n++ }
+    END { if (n) printf "%.2f s over %d scenes", s, n; else print "-" }' "$tmp/table"; }
 echo
 echo "scenes: $n  ok: $n_ok ($pct%)  error: $n_err  timeout: $n_to  crash: $n_crash"
+echo "time: iris --parse-only $(sum_col 3); parser alone $(sum_col 4);" \
+    "POV-Ray parse $(sum_col 5)"
 [ $n_to -eq 0 ] && [ $n_crash -eq 0 ]

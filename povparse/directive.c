@@ -618,6 +618,10 @@ void pp_default_block(pp_state *ps)
             continue;
         case T_RBRACE:
             return;
+        case T_RADIOSITY:
+            pp_expect(ps, T_LBRACE, "'{'");
+            pp_skip_block(ps);
+            continue;
         default: {
             char buf[80];
             pp_error(ps, &ps->tok, "expected texture, pigment, finish or "

@@ -434,9 +434,3 @@ iris_fn *pp_function(pp_state *ps)
     (void)at;
     return finish_fn(&c, 1);
 }
-
-double pp_call_function(pp_state *ps, const iris_fn *fn)
-{
-    (void)ps;
-    return iris_fn_eval(fn, NULL, 0);
-}

@@ -183,17 +183,43 @@ static void warp_block(pp_state *ps, iris_pattern *p)
                 }
             }
             break;
-        case T_OCTAVES: if (w) w->octaves = pp_int(ps); else pp_float(ps); break;
-        case T_OMEGA: if (w) w->omega = pp_float(ps); else pp_float(ps); break;
-        case T_LAMBDA: if (w) w->lambda = pp_float(ps); else pp_float(ps); break;
-        case T_OFFSET: if (w) w->offset = pp_vector(ps); else pp_vector(ps); break;
-        case T_FLIP: if (w) w->flip = pp_vector(ps); else pp_vector(ps); break;
-        case T_STRENGTH: if (w) w->strength = pp_float(ps); else pp_float(ps); break;
-        case T_FALLOFF: if (w) w->falloff = pp_float(ps); else pp_float(ps); break;
+        /* modifiers of the warp just opened ('w' is NULL before one) */
+        case T_OCTAVES: { int v = pp_int(ps); if (w) w->octaves = v; break; }
+        case T_OMEGA: { double v = pp_float(ps); if (w) w->omega = v; break; }
+        case T_LAMBDA: { double v = pp_float(ps); if (w) w->lambda = v; break; }
+        case T_OFFSET: { vec3 v = pp_vector(ps); if (w) w->offset = v; break; }
+        case T_FLIP: { vec3 v = pp_vector(ps); if (w) w->flip = v; break; }
+        case T_STRENGTH: {
+            double v = pp_float(ps);
+            if (w)
+                w->strength = v;
+            break;
+        }
+        case T_FALLOFF: {
+            double v = pp_float(ps);
+            if (w)
+                w->falloff = v;
+            break;
+        }
         case T_INVERSE: if (w) w->inverse = 1; break;
-        case T_ORIENTATION: if (w) w->orientation = pp_vector(ps); else pp_vector(ps); break;
-        case T_DIST_EXP: if (w) w->dist_exp = pp_float(ps); else pp_float(ps); break;
-        case T_MAJOR_RADIUS: if (w) w->major_radius = pp_float(ps); else pp_float(ps); break;
+        case T_ORIENTATION: {
+            vec3 v = pp_vector(ps);
+            if (w)
+                w->orientation = v;
+            break;
+        }
+        case T_DIST_EXP: {
+            double v = pp_float(ps);
+            if (w)
+                w->dist_exp = v;
+            break;
+        }
+        case T_MAJOR_RADIUS: {
+            double v = pp_float(ps);
+            if (w)
+                w->major_radius = v;
+            break;
+        }
         case T_TURB_DEPTH: case T_TYPE: pp_float(ps); break;
         default: {
             iris_transform x;

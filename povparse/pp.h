@@ -380,7 +380,6 @@ pp_value pp_factor_value(pp_state *ps);
 
 /* ---- fnc.c: function { } compiler --------------------------------- */
 iris_fn *pp_function(pp_state *ps);   /* after 'function' */
-double pp_call_function(pp_state *ps, const iris_fn *fn);
 
 /* ---- mat.c: textures ---------------------------------------------- */
 iris_pigment *pp_pigment(pp_state *ps, const iris_pigment *base);

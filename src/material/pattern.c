@@ -21,13 +21,6 @@
 #include "material/noise.h"
 #include "math/transform.h"
 
-/*
-** The function evaluator lives in src/fn, which the core's unit tests do
-** not otherwise link; a weak reference keeps them linkable, and a program
-** that has the parser (which always pulls src/fn in) gets the real one.
-*/
-#pragma weak iris_fn_eval
-
 #define PAT_EPSILON 1e-10
 #define COORD_LIMIT 1.0e17
 
@@ -152,6 +145,92 @@ static vec3 warp_black_hole(const iris_warp *w, vec3 p)
     return v3_madd(p, delta, w->inverse ? -strength : strength);
 }
 
+/* The angle of (x, z) around +y from +x, in [0, 2 pi), as POV-Ray's
+** mapping warps measure it. */
+static double warp_theta(double x, double z, double len)
+{
+    if (z == 0.0)
+        return x > 0 ? 0.0 : M_PI;
+    double theta = acos(fmin(fmax(x / len, -1.0), 1.0));
+    return z < 0.0 ? 2.0 * M_PI - theta : theta;
+}
+
+/*
+** The mapping warps (POV-Ray's warp_planar, warp_spherical,
+** warp_cylindrical, warp_toroidal): a point becomes (u, v, distance) of
+** the surface's parameterisation, u and v in [0, 1) scaled by
+** distance^dist_exp, laid out in the plane the orientation vector faces
+** (z by default). A point on the axis, where the angle is undefined,
+** stays where it is, as in POV-Ray.
+*/
+static vec3 warp_mapping(const iris_warp *w, vec3 q)
+{
+    double x = q.x, y = q.y, z = q.z;
+    double de = w->dist_exp;
+    switch (w->kind) {
+    case IRIS_WARP_PLANAR:
+        z = w->offset.x;
+        break;
+    case IRIS_WARP_SPHERICAL: {
+        double dist = v3_len(q);
+        if (dist == 0.0)
+            return q;
+        double nx = x / dist, ny = y / dist, nz = z / dist;
+        double phi = 0.5 + asin(fmin(fmax(ny, -1.0), 1.0)) / M_PI;
+        double len = sqrt(nx * nx + nz * nz);
+        double theta = len == 0.0 ? 0.0
+                                  : warp_theta(nx, nz, len) / (2.0 * M_PI);
+        double k = de == 1.0 ? dist : de != 0.0 ? pow(dist, de) : 1.0;
+        x = theta * k;
+        y = phi * k;
+        z = dist;
+        break;
+    }
+    case IRIS_WARP_CYLINDRICAL: {
+        double len = sqrt(x * x + z * z);
+        if (len == 0.0)
+            return q;
+        double theta = warp_theta(x, z, len) / (2.0 * M_PI);
+        double k = de == 1.0 ? len : de != 0.0 ? pow(len, de) : 1.0;
+        x = theta * k;
+        z = len;
+        break;
+    }
+    default: { /* toroidal */
+        double r0 = w->major_radius != 0 ? w->major_radius : 1.0;
+        double len = sqrt(x * x + z * z);
+        if (len == 0.0)
+            return q;
+        double theta = warp_theta(x, z, len) / (2.0 * M_PI);
+        double dx = len - r0;
+        double tl = sqrt(dx * dx + y * y);
+        double phi = tl == 0.0 ? 0.0
+                               : acos(fmin(fmax(-dx / tl, -1.0), 1.0));
+        if (y > 0.0)
+            phi = 2.0 * M_PI - phi;
+        phi /= 2.0 * M_PI;
+        double k = de == 1.0 ? tl : de != 0.0 ? pow(tl, de) : 1.0;
+        x = theta * k;
+        y = phi * k;
+        z = tl;
+        break;
+    }
+    }
+    vec3 o = w->orientation;
+    double ol = v3_len(o);
+    if (ol > 0.0)
+        o = v3_scale(o, 1.0 / ol);
+    else
+        o = v3(0, 0, 1);
+    if (o.x == 0.0 && o.y == 0.0 && o.z == 1.0)
+        return v3(x, y, z);
+    /* POV-Ray's blend of the three axis-aligned layouts by the
+    ** orientation's components. */
+    return v3(o.x * z + o.y * x + o.z * x,
+              o.x * y - o.y * z + o.z * y,
+              -o.x * x + o.y * y + o.z * z);
+}
+
 static vec3 apply_warp(const iris_warp *w, vec3 q)
 {
     switch (w->kind) {
@@ -166,9 +245,12 @@ static vec3 apply_warp(const iris_warp *w, vec3 q)
         return warp_black_hole(w, q);
     case IRIS_WARP_TRANSFORM:
         return xf_inv_point(&w->transform, q);
+    case IRIS_WARP_PLANAR:
+    case IRIS_WARP_SPHERICAL:
+    case IRIS_WARP_CYLINDRICAL:
+    case IRIS_WARP_TOROIDAL:
+        return warp_mapping(w, q);
     default:
-        /* planar/spherical/cylindrical/toroidal mapping warps: not
-        ** implemented; the point passes unchanged. */
         return q;
     }
 }
@@ -487,7 +569,7 @@ static double crackle(const struct mat_ctx *ctx, const iris_pattern *pat,
 
 static double function_value(const iris_pattern *pat, vec3 p)
 {
-    if (!pat->fn || !iris_fn_eval)
+    if (!pat->fn)
         return 0.0;
     double args[3] = { p.x, p.y, p.z };
     double v = iris_fn_eval(pat->fn, args, 3);
