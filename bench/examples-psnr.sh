@@ -4,7 +4,8 @@
 # 3.7 and with iris at the same size and prints one Markdown table row per
 # scene: iris's status, the PSNR of iris against POV-Ray, both render
 # times, and the features that legitimately make the images differ
-# (radiosity, media, clock-driven animation, ...), then a summary.
+# (radiosity, media, photons, subsurface, clock-driven animation, rand()
+# streams, a working gamma other than 1), then a summary.
 #
 #   build=/path/to/build sh bench/examples-psnr.sh [-j JOBS] [-1] [-s WxH]
 #                                                 [DIR | scene.pov ...]
@@ -81,9 +82,15 @@ features() {
     tags=""
     # shellcheck disable=SC2086
     text=$(sed 's|//.*||' $files 2>/dev/null)
-    for f in radiosity media photons clock subsurface; do
+    for f in radiosity media photons clock subsurface rand; do
         if printf '%s\n' "$text" | grep -qw "$f"; then tags="$tags,$f"; fi
     done
+    # a working gamma other than 1 (POV-Ray shades in that space)
+    if printf '%s\n' "$text" |
+        grep -E 'assumed_gamma[[:space:]]+[0-9.]+' |
+        grep -vqE 'assumed_gamma[[:space:]]+1(\.0*)?([^0-9.]|$)'; then
+        tags="$tags,gamma"
+    fi
     echo "${tags#,}"
 }
 
@@ -135,13 +142,20 @@ one() {
 }
 
 n=$(wc -l < "$tmp/list")
+# At most 'jobs' scenes at once: a slot is a line in a FIFO, taken before
+# a scene starts and given back when it ends.
+mkfifo "$tmp/slots"
+exec 3<>"$tmp/slots"
+k=0
+while [ $k -lt "$jobs" ]; do echo >&3; k=$((k + 1)); done
 i=0
 while IFS= read -r scene; do
     i=$((i + 1))
-    one "$scene" "$i" &
-    while [ "$(jobs -p | wc -l)" -ge "$jobs" ]; do sleep 0.2; done
+    read -r _ <&3
+    { one "$scene" "$i"; echo >&3; } &
 done < "$tmp/list"
 wait
+exec 3>&-
 
 echo "| scene | iris | PSNR dB | POV-Ray s | iris s | features | first diagnostic |"
 echo "| --- | --- | ---: | ---: | ---: | --- | --- |"
@@ -171,7 +185,7 @@ awk -F'|' -v n="$n" '
         printf "scenes: %d\n", n
         for (s in st) printf "  %s: %d\n", s, st[s]
         printf "median PSNR of %d compared renders: %s dB\n", np, median(psnr, np)
-        printf "median PSNR without radiosity/media/photons/clock/subsurface (%d): %s dB\n", nc, median(clean, nc)
+        printf "median PSNR without tagged features (%d): %s dB\n", nc, median(clean, nc)
         split("0 15 20 25 30 35 40", lo, " ")
         for (b = 1; b <= 7; b++) {
             c = 0

@@ -15,7 +15,9 @@
 #             the start-up of the iris program (loading its libraries)
 #   DIR       where the scenes are (default /usr/share/doc/povray/examples)
 #   --povray  also run POV-Ray on each scene (tiny image) and report its
-#             own "Parse Time" next to ours
+#             own "Parse Time" next to ours, and the number of light
+#             sources each found (column 'lights' iris/POV-Ray; a mismatch
+#             is flagged with '!')
 #   TIMEOUT   seconds per scene (default 30); MEMLIMIT KiB (default 2000000)
 #
 # Status: ok (parsed), error (stopped with a diagnostic: the first one is
@@ -77,8 +79,8 @@ while IFS= read -r scene; do
     if [ -x "$PARSEDUMP" ]; then
         t0=$(now)
         ( cd "$work" && ulimit -v "$MEMLIMIT" 2>/dev/null
-          exec timeout "$TIMEOUT" "$PARSEDUMP" -q -w "$base" ) \
-            >/dev/null 2>&1 </dev/null
+          exec timeout "$TIMEOUT" "$PARSEDUMP" -w "$base" ) \
+            >"$tmp/dump" 2>&1 </dev/null
         t1=$(now)
         psecs=$(echo "$t0 $t1" | awk '{printf "%.3f", $2 - $1}')
     fi
@@ -88,6 +90,13 @@ while IFS= read -r scene; do
             +W16 +H12 -D +Q0 +FN ) >"$tmp/pov" 2>&1 </dev/null
         pov=$(grep -m1 'Parse Time' "$tmp/pov" | sed 's/.*(\([0-9.]*\) seconds).*/\1/')
         [ -n "$pov" ] || pov=fail
+        lp=$(grep -m1 'Light Sources:' "$tmp/pov" | awk '{print $3}')
+        li=$(grep -c '^light ' "$tmp/dump" 2>/dev/null)
+        if [ -n "$lp" ] && [ "$status" = ok ]; then
+            lights="$li/$lp"
+            [ "$li" = "$lp" ] || lights="$lights!"
+            diag="lights $lights $diag"
+        fi
     fi
     printf '%-50s %-7s %7s %8s %8s  %s\n' "$rel" "$status" "$secs" "$psecs" \
         "$pov" "$diag" | tee -a "$tmp/table"

@@ -2,14 +2,19 @@
 # SPDX-License-Identifier: MIT
 # bench/render-vs-povray.sh: render time of iris against POV-Ray 3.7 on the
 # same scenes, size, antialiasing and thread count, in one run. Prints a
-# Markdown table (median of N runs per renderer, the ratio iris/POV-Ray,
-# and the PSNR of iris against POV-Ray) and the median ratio.
+# Markdown table and the median ratios. Per scene and renderer it takes the
+# median of N runs of
+#   - the wall time of the whole program (start-up, parse, render, write);
+#   - the render time alone: POV-Ray's "Trace Time" plus "Photon Time" from
+#     its statistics, iris's time_render_s plus time_photon_s (--stats);
+# and the PSNR of iris's image against POV-Ray's (tests/render/psnr).
 #
 #   build=/path/to/build sh bench/render-vs-povray.sh [-n RUNS] [-s WxH]
 #                        [-t THREADS] [scene.pov ...]
 #
 # Without scenes it uses the parity scenes in tests/render/scenes and the
-# example scenes listed in bench/example-scenes.txt.
+# example scenes listed in bench/example-scenes.txt. Each scene's
+# directory is copied to a scratch directory, where both renderers run.
 set -u
 here=$(cd "$(dirname "$0")" && pwd)
 . "$here/lib.sh"
@@ -22,6 +27,8 @@ while getopts n:s:t: opt; do
 done
 shift $((OPTIND - 1))
 bench_setup
+PSNR="$build/tests/render/psnr"
+[ -x "$PSNR" ] || make -C "$build" tests/render/psnr >/dev/null 2>&1
 w=${size%x*}; h=${size#*x}
 if [ $# -eq 0 ]; then
     set -- "$here"/../tests/render/scenes/*.pov
@@ -33,17 +40,75 @@ if [ $# -eq 0 ]; then
     fi
 fi
 common="+W$w +H$h +A0.3 +AM1 +R3"
-echo "| scene | POV-Ray s | iris s | iris/POV-Ray | PSNR dB |"
-echo "| --- | ---: | ---: | ---: | ---: |"
+
+# The seconds in POV-Ray's "<what> Time: ... (S seconds)" line, 0 if none.
+pov_seconds() {
+    sed -n "s/.*$1 Time:.*(\([0-9.]*\) seconds).*/\1/p" "$2" | head -n 1 |
+        awk '{ print ($1 == "" ? 0 : $1) }'
+}
+
+# The value of "key" in iris's --stats JSON, 0 if none.
+json_value() {
+    sed -n "s/.*\"$1\": *\([0-9.eE+-]*\).*/\1/p" "$2" | head -n 1 |
+        awk '{ print ($1 == "" ? 0 : $1) }'
+}
+
+# time_once with the program's output kept in file $1.
+time_once_log() {
+    log=$1; shift
+    t0=$(date +%s.%N)
+    "$@" >"$log" 2>&1
+    rc=$?
+    t1=$(date +%s.%N)
+    echo "$t0 $t1" | awk '{printf "%.4f\n", $2 - $1}'
+    return $rc
+}
+
+median_file() { sort -n "$1" | awk '{a[NR] = $1} END {
+    if (NR == 0) print "fail"; else if (NR % 2) printf "%.4f\n", a[(NR + 1) / 2];
+    else printf "%.4f\n", (a[NR / 2] + a[NR / 2 + 1]) / 2 }'; }
+
+echo "| scene | POV-Ray s | iris s | iris/POV-Ray | POV-Ray render s | iris render s | render ratio | PSNR dB |"
+echo "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: |"
+: >"$BENCH_TMP/ratios"; : >"$BENCH_TMP/rratios"
 for scene in "$@"; do
     [ -f "$scene" ] || continue
+    case $scene in /*) ;; *) scene=$(pwd)/$scene ;; esac
     name=$(basename "$scene" .pov)
-    dir=$(dirname "$scene")
-    tp=$(cd "$dir" && time_median "$runs" "$POVRAY" "+I$scene" "+O$BENCH_TMP/p.png" $common +WT"$threads" -D -V +Q9 +FN16)
-    ti=$(cd "$dir" && time_median "$runs" "$IRIS" "$scene" -q -o "$BENCH_TMP/i.exr" $common --threads="$threads")
-    psnr=$("$IMGTOOL" psnr "$BENCH_TMP/p.png" "$BENCH_TMP/i.exr" 2>/dev/null || echo "-")
-    r=$( [ "$tp" = fail ] || [ "$ti" = fail ] && echo "-" || ratio "$ti" "$tp")
-    echo "| $name | $tp | $ti | $r | $psnr |"
+    work="$BENCH_TMP/work"
+    rm -rf "$work"; mkdir -p "$work"
+    cp -R "$(dirname "$scene")/." "$work/" 2>/dev/null
+    : >"$BENCH_TMP/pw"; : >"$BENCH_TMP/iw"; : >"$BENCH_TMP/pr"; : >"$BENCH_TMP/ir"
+    ok=yes
+    i=0
+    while [ $i -lt "$runs" ]; do
+        i=$((i + 1))
+        # shellcheck disable=SC2086
+        tp=$(cd "$work" && time_once_log "$BENCH_TMP/p.log" "$POVRAY" \
+            "+I$scene" "+O$BENCH_TMP/p.png" $common +WT"$threads" -D -V +Q9 \
+            +FN16) || ok=no
+        # shellcheck disable=SC2086
+        ti=$(cd "$work" && time_once "$IRIS" "$scene" -q -o "$BENCH_TMP/i.exr" \
+            $common --threads="$threads" --stats="$BENCH_TMP/i.json") || ok=no
+        echo "$tp" >>"$BENCH_TMP/pw"
+        echo "$ti" >>"$BENCH_TMP/iw"
+        echo "$(pov_seconds Trace "$BENCH_TMP/p.log") $(pov_seconds Photon "$BENCH_TMP/p.log")" |
+            awk '{ print $1 + $2 }' >>"$BENCH_TMP/pr"
+        echo "$(json_value time_render_s "$BENCH_TMP/i.json") $(json_value time_photon_s "$BENCH_TMP/i.json")" |
+            awk '{ print $1 + $2 }' >>"$BENCH_TMP/ir"
+    done
+    if [ $ok = no ]; then
+        echo "| $name | fail | fail | - | - | - | - | - |"
+        continue
+    fi
+    tp=$(median_file "$BENCH_TMP/pw"); ti=$(median_file "$BENCH_TMP/iw")
+    rp=$(median_file "$BENCH_TMP/pr"); ri=$(median_file "$BENCH_TMP/ir")
+    psnr=$("$PSNR" "$BENCH_TMP/i.exr" "$BENCH_TMP/p.png" 2>/dev/null | cut -d' ' -f1)
+    r=$(ratio "$ti" "$tp"); rr=$(ratio "$ri" "$rp")
+    echo "| $name | $tp | $ti | $r | $rp | $ri | $rr | ${psnr:--} |"
     echo "$r" >>"$BENCH_TMP/ratios"
+    echo "$rr" >>"$BENCH_TMP/rratios"
 done
-grep -v -- - "$BENCH_TMP/ratios" 2>/dev/null | median_of | sed 's/^/median iris\/POV-Ray time ratio: /'
+echo
+grep -v -- - "$BENCH_TMP/ratios" | median_of | sed 's/^/median iris\/POV-Ray wall-time ratio: /'
+grep -v -- - "$BENCH_TMP/rratios" | median_of | sed 's/^/median iris\/POV-Ray render-time ratio: /'

@@ -46,6 +46,14 @@ static bool is_identity(const iris_transform *t)
     return true;
 }
 
+/* File names without their directory: the dump must not depend on where
+** the include files are installed. */
+static const char *base(const char *p)
+{
+    const char *s = p ? strrchr(p, '/') : NULL;
+    return s ? s + 1 : p ? p : "";
+}
+
 static void xform(FILE *o, int d, const char *name, const iris_transform *t)
 {
     if (is_identity(t))
@@ -96,7 +104,7 @@ static void pattern(FILE *o, int d, const iris_pattern *p)
     if (p->image) {
         ind(o, d);
         fprintf(o, "image \"%s\" map_type %d interpolate %d%s\n",
-                p->image->path, p->image->map_type, p->image->interpolate,
+                base(p->image->path), p->image->map_type, p->image->interpolate,
                 p->image->once ? " once" : "");
     }
     if (p->fn) {
@@ -335,7 +343,8 @@ static void object(FILE *o, int d, const iris_object *ob,
         break;
     case IRIS_OBJ_TEXT:
         fprintf(o, "font \"%s\" string \"%s\" thickness %.6g offset ",
-                ob->u.text.font, ob->u.text.string, ob->u.text.thickness);
+                base(ob->u.text.font), ob->u.text.string,
+                ob->u.text.thickness);
         vec(o, ob->u.text.offset);
         fputc('\n', o);
         break;
@@ -353,6 +362,26 @@ static void object(FILE *o, int d, const iris_object *ob,
     case IRIS_OBJ_UNION: case IRIS_OBJ_MERGE: case IRIS_OBJ_INTERSECTION:
     case IRIS_OBJ_DIFFERENCE: case IRIS_OBJ_LIGHT_GROUP:
         fprintf(o, "children %d\n", ob->u.csg.n_children);
+        break;
+    case IRIS_OBJ_JULIA_FRACTAL:
+        fprintf(o, "c <%.6g, %.6g, %.6g, %.6g> type %d iterations %d "
+                "precision %.6g\n", ob->u.julia.data[0], ob->u.julia.data[1],
+                ob->u.julia.data[2], ob->u.julia.data[3], ob->u.julia.type,
+                ob->u.julia.iterations, ob->u.julia.precision);
+        break;
+    case IRIS_OBJ_BICUBIC_PATCH:
+        fprintf(o, "type %d flatness %.6g steps %d %d last ",
+                ob->u.bicubic.type, ob->u.bicubic.flatness,
+                ob->u.bicubic.u_steps, ob->u.bicubic.v_steps);
+        vec(o, ob->u.bicubic.points[15]);
+        fputc('\n', o);
+        break;
+    case IRIS_OBJ_SPHERE_SWEEP:
+        fprintf(o, "spline %d spheres %d\n", ob->u.sphere_sweep.spline,
+                ob->u.sphere_sweep.n_spheres);
+        break;
+    case IRIS_OBJ_OVUS:
+        fprintf(o, "r1 %.6g r2 %.6g\n", ob->u.ovus.r1, ob->u.ovus.r2);
         break;
     default:
         fputs("(parameters not shown)\n", o);

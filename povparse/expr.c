@@ -578,7 +578,8 @@ static pp_value factor(pp_state *ps)
     case T_CLOCK_DELTA: return fval(0);
     case T_CLOCK_ON: return fval(0);
     case T_FRAME_NUMBER: return fval(ps->opt.frame_number);
-    case T_INITIAL_FRAME: case T_FINAL_FRAME: return fval(ps->opt.frame_number);
+    /* a still image is the animation of one frame, 1 to 1 (POV-Ray) */
+    case T_INITIAL_FRAME: case T_FINAL_FRAME: return fval(1);
     case T_INITIAL_CLOCK: return fval(0);
     case T_FINAL_CLOCK: return fval(1);
     case T_IMAGE_WIDTH: return fval(ps->opt.image_width);

@@ -166,8 +166,8 @@ static void cfactor(fnc *c)
     case T_VERSION: {
         /* constants of the parse, as in any expression */
         double v = k == T_CLOCK ? ps->opt.clock :
-                   k == T_FRAME_NUMBER || k == T_INITIAL_FRAME ||
-                   k == T_FINAL_FRAME ? ps->opt.frame_number :
+                   k == T_FRAME_NUMBER ? ps->opt.frame_number :
+                   k == T_INITIAL_FRAME || k == T_FINAL_FRAME ? 1 :
                    k == T_FINAL_CLOCK ? 1 :
                    k == T_IMAGE_WIDTH ? ps->opt.image_width :
                    k == T_IMAGE_HEIGHT ? ps->opt.image_height :

@@ -228,10 +228,10 @@ static bool at_macro_end(pp_state *ps)
         ps->conds[ps->n_conds - 1].kind != C_MACRO)
         return false;
     pp_token t;
-    uint32_t p = lex_scan(ps, fr->file, fr->pos, &t);
+    uint32_t p = lex_peek(ps, fr->file, fr->pos, &t);
     if (t.kind != T_HASH)
         return false;
-    lex_scan(ps, fr->file, p, &t);
+    lex_peek(ps, fr->file, p, &t);
     return t.kind == T_END;
 }
 
@@ -248,7 +248,7 @@ bool pp_next_is_directive(pp_state *ps)
     for (int i = ps->n_frames - 1; i >= 0; i--) {
         pp_frame *fr = &ps->frames[i];
         pp_token t;
-        lex_scan(ps, fr->file, fr->pos, &t);
+        lex_peek(ps, fr->file, fr->pos, &t);
         if (t.kind != T_EOF)
             return t.kind == T_HASH;
         if (fr->kind == FR_FILE || fr->kind == FR_MACRO)
@@ -283,7 +283,7 @@ int pp_skip(pp_state *ps, int mode, const pp_cond *opener)
     pp_token t;
     ps->n_unget = 0; /* look-ahead tokens belong to the skipped text */
     for (;;) {
-        fr->pos = lex_scan(ps, fr->file, fr->pos, &t);
+        fr->pos = lex_peek(ps, fr->file, fr->pos, &t);
         if (t.kind == T_EOF) {
             if (opener)
                 missing_end(ps, opener);
@@ -292,7 +292,7 @@ int pp_skip(pp_state *ps, int mode, const pp_cond *opener)
         if (t.kind != T_HASH)
             continue;
         uint32_t save = fr->pos;
-        fr->pos = lex_scan(ps, fr->file, fr->pos, &t);
+        fr->pos = lex_peek(ps, fr->file, fr->pos, &t);
         switch (t.kind) {
         case T_IF: case T_IFDEF: case T_IFNDEF: case T_SWITCH:
         case T_WHILE: case T_FOR: case T_MACRO:
@@ -318,6 +318,33 @@ int pp_skip(pp_state *ps, int mode, const pp_cond *opener)
     }
 }
 
+/* An array identifier followed by '[' stands for the element A[i]...
+** wherever it appears: the indices are read here. */
+static void resolve_element(pp_state *ps)
+{
+    int next;
+    if (ps->n_unget > 0) {
+        next = ps->unget[ps->n_unget - 1].kind;
+    } else {
+        if (pp_next_is_directive(ps))
+            return;
+        pp_token nt;
+        pp_frame *fr = &ps->frames[ps->n_frames - 1];
+        lex_peek(ps, fr->file, fr->pos, &nt);
+        next = nt.kind;
+    }
+    if (next != T_LBRACKET)
+        return;
+    pp_token id = ps->tok;
+    pp_value v = pp_array_element(ps, &id, id.val.u.arr);
+    uint32_t end = ps->tok.off + ps->tok.len;
+    ps->tok = id;
+    ps->tok.val = v;
+    ps->tok.sym = NULL;
+    if (ps->tok.file == id.file && end > id.off)
+        ps->tok.len = end - id.off;
+}
+
 void pp_unget(pp_state *ps)
 {
     if (ps->n_unget >= 4)
@@ -337,6 +364,9 @@ void pp_next(pp_state *ps)
                 pp_call_macro(ps, call.val.u.macro, &call);
                 continue;
             }
+            if (ps->tok.kind == T_IDENT && ps->tok.val.kind == V_ARRAY &&
+                ps->tok.sym && ps->no_expand == 0)
+                resolve_element(ps);
             return;
         }
         pp_raw(ps, &ps->tok);
@@ -355,22 +385,8 @@ void pp_next(pp_state *ps)
             return;
         }
         ps->tok.val = s->val;
-        if (s->val.kind == V_ARRAY && ps->no_expand == 0 &&
-            !pp_next_is_directive(ps)) {
-            /* A[i][j] stands for the element wherever it appears */
-            pp_token id = ps->tok;
-            pp_token nt;
-            pp_frame *fr = &ps->frames[ps->n_frames - 1];
-            lex_scan(ps, fr->file, fr->pos, &nt);
-            if (nt.kind == T_LBRACKET) {
-                pp_value v = pp_array_element(ps, &id, s->val.u.arr);
-                uint32_t end = ps->tok.off + ps->tok.len;
-                ps->tok = id;
-                ps->tok.val = v;
-                ps->tok.sym = NULL;
-                if (ps->tok.file == id.file && end > id.off)
-                    ps->tok.len = end - id.off;
-            }
+        if (s->val.kind == V_ARRAY && ps->no_expand == 0) {
+            resolve_element(ps);
             return;
         }
         if (s->val.kind == V_MACRO && ps->no_expand == 0) {

@@ -135,6 +135,13 @@ static uint32_t scan_string(pp_state *ps, uint32_t f, uint32_t p,
     }
     if (q >= n || s[q] != '"')
         pp_error_at(ps, f, start, 1, "unterminated string");
+    t->kind = T_STRING;
+    t->len = q + 1 - start;
+    if (ps->lex_peek) {
+        /* a look-ahead only needs the token's kind and extent */
+        t->str = "";
+        return q + 1;
+    }
     char *out = pp_salloc(ps, q - p + 1);
     size_t k = 0;
     while (p < q) {
@@ -264,4 +271,12 @@ uint32_t lex_scan(pp_state *ps, uint32_t f, uint32_t pos, pp_token *t)
     t->kind = kind;
     t->len = len;
     return p + len;
+}
+
+uint32_t lex_peek(pp_state *ps, uint32_t f, uint32_t pos, pp_token *t)
+{
+    ps->lex_peek++;
+    uint32_t r = lex_scan(ps, f, pos, t);
+    ps->lex_peek--;
+    return r;
 }

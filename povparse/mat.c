@@ -234,14 +234,15 @@ static void warp_block(pp_state *ps, iris_pattern *p)
     }
 }
 
-/* Resolves an image file as POV-Ray does: relative to the scene and the
-** include path. Keeps the name as written when it cannot be found. */
-static const char *image_path(pp_state *ps, const pp_token *at, const char *name)
+/* Resolves an image or font file as POV-Ray does: relative to the
+** including file, the scene and the include path. Keeps the name as
+** written (with a warning) when it cannot be found. */
+const char *pp_find_file(pp_state *ps, const pp_token *at, const char *name)
 {
     char buf[4096];
     struct stat st;
     if (name[0] == '/')
-        return name;
+        return pp_strdup(ps, name, strlen(name));
     const char *dirs[66];
     int nd = 0;
     dirs[nd++] = ps->files[at->file].dir;
@@ -257,8 +258,8 @@ static const char *image_path(pp_state *ps, const pp_token *at, const char *name
         if (n > 0 && (size_t)n < sizeof buf && stat(buf, &st) == 0)
             return pp_strdup(ps, buf, (size_t)n);
     }
-    pp_warning(ps, at, "image file \"%s\" not found", name);
-    return name;
+    pp_warning(ps, at, "file \"%s\" not found", name);
+    return pp_strdup(ps, name, strlen(name));
 }
 
 static bool is_image_type(int k)
@@ -280,7 +281,7 @@ static iris_image_ref *image_file(pp_state *ps)
     pp_unget(ps);
     pp_token at = ps->tok;
     const char *name = pp_string(ps);
-    img->path = image_path(ps, &at, name);
+    img->path = pp_find_file(ps, &at, name);
     return img;
 }
 
@@ -556,6 +557,7 @@ static int cmp_entry(const void *a, const void *b)
 
 static iris_pigment *pigment_body(pp_state *ps, const iris_pigment *base,
                                   int end);
+static void default_map(pp_state *ps, iris_pigment *p);
 static iris_normal *normal_body(pp_state *ps, const iris_normal *base,
                                 int end);
 static iris_texture *texture_body(pp_state *ps, int end);
@@ -834,8 +836,10 @@ static iris_pigment *pigment_body(pp_state *ps, const iris_pigment *base,
         pp_next(ps);
         pp_token at = ps->tok;
         int k = at.kind;
-        if (k == end)
+        if (k == end) {
+            default_map(ps, p);
             return p;
+        }
         if (k == T_EOF)
             pp_error(ps, &open, "pigment without its closing '%s'",
                      end == T_RBRACE ? "}" : "]");
@@ -911,6 +915,76 @@ static iris_pigment *pigment_body(pp_state *ps, const iris_pigment *base,
             pp_unexpected(ps, &at, "pigment");
         }
     }
+}
+
+/* POV-Ray 3.7's colour maps for patterns given without one
+** (texture/pigment.cpp: Gray, Bozo, Wood, Mandel, Agate, Radial, Marble,
+** Brick, Hex/Check and Cubic/Square/Triangular default maps). */
+struct default_map {
+    int n;
+    double v[6];
+    float c[6][3];
+};
+static const struct default_map gray_map = { 2, { 0, 1 },
+    { { 0, 0, 0 }, { 1, 1, 1 } } };
+static const struct default_map bozo_map = { 6, { .4, .4, .6, .6, .8, .8 },
+    { { 1, 1, 1 }, { 0, 1, 0 }, { 0, 1, 0 }, { 0, 0, 1 }, { 0, 0, 1 },
+      { 1, 0, 0 } } };
+static const struct default_map wood_map = { 2, { .6, .6 },
+    { { .666f, .312f, .2f }, { .4f, .1333f, .066f } } };
+static const struct default_map mandel_map = { 5,
+    { .001, .001, .012, .015, .1 },
+    { { 0, 0, 0 }, { 0, 1, 1 }, { 1, 1, 0 }, { 1, 0, 1 }, { 0, 1, 1 } } };
+static const struct default_map agate_map = { 6, { 0, .5, .5, .6, .6, 1 },
+    { { 1, 1, 1 }, { .95f, .75f, .5f }, { .9f, .7f, .5f }, { .9f, .7f, .4f },
+      { 1, .7f, .4f }, { .6f, .3f, 0 } } };
+static const struct default_map radial_map = { 4, { 0, .333, .666, 1 },
+    { { 0, 1, 1 }, { 1, 1, 0 }, { 1, 0, 1 }, { 0, 1, 1 } } };
+static const struct default_map marble_map = { 3, { 0, .9, .9 },
+    { { .9f, .8f, .8f }, { .9f, .08f, .08f }, { 0, 0, 0 } } };
+static const struct default_map brick_map = { 2, { 0, 1 },
+    { { .5f, .5f, .5f }, { .6f, .15f, .15f } } };
+static const struct default_map hex_map = { 3, { 0, 1, 2 },
+    { { 0, 0, 1 }, { 0, 1, 0 }, { 1, 0, 0 } } };
+static const struct default_map cubic_map = { 6, { 0, 1, 1, 1, 1, 2 },
+    { { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 }, { 1, 1, 0 }, { 0, 1, 1 },
+      { 1, 0, 1 } } };
+
+/* Gives a pattern pigment without a map POV-Ray's default map. */
+static void default_map(pp_state *ps, iris_pigment *p)
+{
+    const struct default_map *m = &gray_map;
+    int n = -1;
+    switch (p->pattern.kind) {
+    case IRIS_PAT_NONE: case IRIS_PAT_IMAGE_MAP: case IRIS_PAT_AVERAGE:
+        return;
+    case IRIS_PAT_BOZO: m = &bozo_map; break;
+    case IRIS_PAT_BRICK: m = &brick_map; break;
+    case IRIS_PAT_WOOD: m = &wood_map; break;
+    case IRIS_PAT_MANDEL: m = &mandel_map; break;
+    case IRIS_PAT_RADIAL: m = &radial_map; break;
+    case IRIS_PAT_AGATE: m = &agate_map; break;
+    case IRIS_PAT_MARBLE: m = &marble_map; break;
+    case IRIS_PAT_HEXAGON: m = &hex_map; break;
+    case IRIS_PAT_SQUARE: m = &cubic_map; n = 4; break;
+    case IRIS_PAT_TRIANGULAR: m = &cubic_map; break;
+    case IRIS_PAT_CHECKER: case IRIS_PAT_OBJECT: m = &hex_map; n = 2; break;
+    default: break;
+    }
+    if (p->n_entries)
+        return;
+    if (n < 0)
+        n = m->n;
+    iris_map_entry *e = pp_alloc(ps, (size_t)n * sizeof *e);
+    for (int i = 0; i < n; i++) {
+        e[i].value = m->v[i];
+        e[i].colour.r = m->c[i][0];
+        e[i].colour.g = m->c[i][1];
+        e[i].colour.b = m->c[i][2];
+    }
+    p->entries = e;
+    p->n_entries = n;
+    p->is_pigment_map = false;
 }
 
 iris_pigment *pp_pigment(pp_state *ps, const iris_pigment *base)

@@ -1106,8 +1106,7 @@ static void shape_body(pp_state *ps, iris_object *o, int kw, const pp_token *at)
             st = ps->tok;
             pp_unget(ps);
             const char *name = pp_string(ps);
-            img->path = name;
-            (void)st;
+            img->path = pp_find_file(ps, &st, name);
             o->u.height_field.image = img;
         }
         for (;;) {
@@ -1135,8 +1134,11 @@ static void shape_body(pp_state *ps, iris_object *o, int kw, const pp_token *at)
         } else {
             if (ps->tok.kind != T_TTF)
                 pp_unget(ps);
+            pp_next(ps);
+            pp_token ft = ps->tok;
+            pp_unget(ps);
             const char *font = pp_string(ps);
-            o->u.text.font = pp_strdup(ps, font, strlen(font));
+            o->u.text.font = pp_find_file(ps, &ft, font);
         }
         pp_accept(ps, T_COMMA);
         {
@@ -1446,8 +1448,11 @@ iris_object *pp_object(pp_state *ps)
     pp_expect(ps, T_LBRACE, "'{'");
     iris_object *o = obj_new(ps, kind, &at);
     if (kind >= IRIS_OBJ_UNION) {
-        if (kind == IRIS_OBJ_LIGHT_GROUP)
+        if (kind == IRIS_OBJ_LIGHT_GROUP) {
             ((pp_obj *)o)->is_light_group = true;
+            pp_warn_once(ps, &at, T_LIGHT_GROUP, "light_group (its lights "
+                         "become scene lights: they light every object)");
+        }
         pp_enter(ps, &at);
         csg_body(ps, o, &open);
         pp_leave(ps);

@@ -281,6 +281,7 @@ struct pp_state {
     bool in_vector;        /* inside <..>: '>' closes, is no operator */
     bool gamma_given;
     int depth;             /* nesting of the grammar's recursion */
+    int lex_peek;          /* > 0: strings are not decoded (look-ahead) */
 };
 
 /* ---- diag.c ------------------------------------------------------- */
@@ -312,6 +313,8 @@ const char *pp_kind_name(int kind);
 void lex_init_keywords(pp_state *ps);
 /* Scans the token at 'pos' of file 'f'; returns the offset after it. */
 uint32_t lex_scan(pp_state *ps, uint32_t f, uint32_t pos, pp_token *t);
+/* The same for a look-ahead: string contents are not decoded. */
+uint32_t lex_peek(pp_state *ps, uint32_t f, uint32_t pos, pp_token *t);
 const char *lex_keyword_name(int kind);
 
 /* ---- input.c: tokens with directives executed --------------------- */
@@ -406,6 +409,8 @@ iris_pigment *pp_pigment_new(pp_state *ps, const pp_token *at);
 iris_fog *pp_fog(pp_state *ps);
 iris_sky_sphere *pp_sky_sphere(pp_state *ps, const iris_sky_sphere *b);
 void pp_pattern_init(iris_pattern *p);
+/* An image or font file resolved along the search path (scene arena). */
+const char *pp_find_file(pp_state *ps, const pp_token *at, const char *name);
 
 /* ---- obj.c: objects ----------------------------------------------- */
 /* Parses an object if the current token starts one; NULL otherwise. */

@@ -8,3 +8,5 @@ include $(srcdir)/tests/unit/render.mk
 include $(srcdir)/tests/unit/spectrum.mk
 include $(srcdir)/tests/unit/photon.mk
 include $(srcdir)/tests/cli.mk
+include $(srcdir)/tests/robust.mk
+include $(srcdir)/tests/progressive.mk

@@ -31,3 +31,17 @@ regen-burns:
 endif
 .PHONY: regen-tables regen-burns
 EXTRA_DIST += tools/gen_tables.c tools/burns.c tools/photon_bench.c
+
+## Progressive photon mapping (issue 6), for bench/error-vs-time.sh:
+##   ball_reference W H out.exr   semi-analytic image of bench/caustic_ball.pov
+##   error_plot out.png NAME=log.csv ...   log-log rel. RMSE against time
+##   make error-plot PLOT=out.png LOGS="iris=a.csv povray=b.csv"
+EXTRA_PROGRAMS += tools/ball_reference tools/error_plot
+tools_ball_reference_SOURCES = tools/ball_reference.c
+tools_ball_reference_LDADD = libiris_core.la $(IRIS_LIBS)
+tools_error_plot_SOURCES = tools/error_plot.c
+tools_error_plot_LDADD = libiris_core.la $(IRIS_LIBS)
+CLEANFILES += tools/ball_reference$(EXEEXT) tools/error_plot$(EXEEXT)
+error-plot: tools/error_plot$(EXEEXT)
+	tools/error_plot$(EXEEXT) $(PLOT) $(LOGS)
+.PHONY: error-plot

@@ -30,6 +30,20 @@ enum iris_aa_method { IRIS_AA_NONE = 0, IRIS_AA_POV1 = 1, IRIS_AA_POV2 = 2,
 typedef void (*iris_progress_fn)(void *user, const char *phase,
                                   double fraction);
 
+/* Progressive mode: where the accumulation stands after a pass. */
+typedef struct iris_pass_info {
+    int passes;                /* passes averaged so far (resumed ones too) */
+    double time_s;             /* wall seconds since the render started,
+                                  plus those of a resumed accumulation */
+    uint64_t photons;          /* photons emitted, summed over the passes */
+    double radius_scale;       /* the last pass's estimate radius / first's */
+} iris_pass_info;
+
+/* Called from the rendering thread after every progressive pass with the
+** average so far (avg, linear RGBA; valid during the call only). */
+typedef void (*iris_pass_fn)(void *user, const iris_image *avg,
+                             const iris_pass_info *info);
+
 /* Options of one render; iris_render_defaults() fills POV-Ray's. */
 typedef struct iris_render_options {
     int width, height;         /* 160 x 120 as POV-Ray's code default */
@@ -47,6 +61,11 @@ typedef struct iris_render_options {
     /* Progressive photon mapping (issue 6) */
     int passes;                /* 0 = one ordinary render */
     double time_limit;         /* seconds, 0 = none */
+    const char *checkpoint;    /* save the accumulation here (atomic), or
+                                  NULL; see src/render/progressive.c */
+    const char *resume;        /* continue the accumulation saved here */
+    iris_pass_fn on_pass;      /* after every progressive pass, or NULL */
+    void *on_pass_user;
     int spectral_samples_min;  /* dispersion_samples floor, 0 = scene's */
     bool use_photons;          /* false disables photons whatever the scene */
     iris_progress_fn progress;

@@ -36,7 +36,8 @@
 ** is taken in double by the callbacks, from the double ray kept in the
 ** query context (node.h, struct qctx). accel_epsilon() is therefore 1e-9
 ** of the scene's size, relative, so a scene scaled by 1e-6 or 1e6 gives
-** the same hits.
+** the same hits; each hit also carries a finer offset of its own, 1e-9 of
+** the object hit (hit_epsilon), for thin objects in a huge scene.
 **
 ** Threads. After accel_build() returns nothing is written: queries keep
 ** their state on the caller's stack and Embree's rtcIntersect1 is
@@ -400,6 +401,11 @@ static struct anode *build(struct accel *a, FILE *log, const iris_object *o,
         return NULL;
     }
 
+    /* The leaf's own size, before clipping shrinks its box (hit_epsilon):
+    ** a huge sphere clipped to a small box still rounds at its radius */
+    if (n->kind != AN_CSG && box_finite(S))
+        n->size = v3_max_comp(v3_sub(S.hi, S.lo));
+
     /* clipped_by: only points inside every clipping object remain */
     if (o->n_clipped_by > 0 && o->clipped_by) {
         n->clips = iris_calloc((size_t)o->n_clipped_by, sizeof *n->clips);
@@ -714,6 +720,29 @@ static bool finite_v(vec3 v)
     return isfinite(v.x) && isfinite(v.y) && isfinite(v.z);
 }
 
+/*
+** The offset for a ray leaving world point 'p' on 'leaf' (see accel.h).
+** A secondary ray meets its own surface again at t ~ (rounding error of
+** p) / cos: the error comes from solving the leaf in its object space and
+** mapping p to world space, a few ulps of the leaf's size and of |p|.
+** 1e-9 of the larger of the two leaves a margin of about 1e6 for rounding
+** and grazing angles, as the global accel_epsilon() does for the scene.
+** The size is the whole leaf's, before clipping (node.h 'size').
+** Unbounded leaves (planes, quadrics) have no size: they keep the global
+** offset.
+*/
+static double hit_epsilon(const struct accel *a, const struct anode *leaf,
+                          vec3 p)
+{
+    if (!(leaf->size > 0))
+        return a->eps;
+    double s = fmax(leaf->size, fmax(fabs(p.x), fmax(fabs(p.y), fabs(p.z))));
+    double e = 1e-9 * s;
+    if (!(e > 1e-290))
+        e = 1e-290;
+    return fmin(e, a->eps);
+}
+
 bool accel_intersect(const struct accel *a, const ray *r, double tmin,
                      double tmax, unsigned skip, struct hit *h)
 {
@@ -761,6 +790,7 @@ bool accel_intersect(const struct accel *a, const ray *r, double tmin,
     if (!h->texture)
         h->texture = &a->default_texture;
     h->interior = leaf->obj->interior;
+    h->eps = hit_epsilon(a, leaf, h->p);
     if (!isfinite(h->t) || !finite_v(h->p) || !finite_v(h->n) ||
         !finite_v(h->shading_n) || !(v3_len2(h->n) > 0))
         return false;

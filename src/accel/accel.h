@@ -47,6 +47,10 @@ struct hit {
     const iris_object *top;       /* the top-level scene object it is in */
     const iris_texture *texture;  /* texture at this point (never NULL) */
     const iris_interior *interior;/* interior of 'obj', NULL = none */
+    double eps;                   /* tmin for a ray leaving 'p': see
+                                     accel_epsilon(); at most that, and
+                                     much less for a small object in a
+                                     huge scene */
 };
 
 struct accel;
@@ -85,7 +89,12 @@ bool accel_object_bounds(const struct accel *a, const iris_object *obj,
 ** The distance by which to start a secondary ray from a surface so that it
 ** does not meet the same surface again. It is relative to the scene's
 ** scale (issue 7: a scene scaled by 1e-6 or 1e6 renders the same), not an
-** absolute constant.
+** absolute constant: 1e-9 of the scene's size. That is safe everywhere
+** but coarse where the scene is much larger than the object hit (a sky
+** sphere of radius 1e6 makes it 1e-3, thicker than a thin glass wall), so
+** each hit also carries its own offset, hit.eps = 1e-9 of the larger of
+** |p| (max norm) and the size of the leaf hit, capped by this value.
+** Start a ray that leaves hit 'h' with tmin = h.eps.
 */
 double accel_epsilon(const struct accel *a);
 

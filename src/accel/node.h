@@ -39,6 +39,9 @@ struct anode {
     struct anode **clips;          /* clipped_by: keep points inside all */
     bool bounded;                  /* world box lo..hi holds every hit */
     vec3 lo, hi;
+    double size;                   /* leaves: largest extent of the world
+                                      box of the whole surface, before
+                                      clipping; 0 = unbounded */
     struct geom_profile *prof;     /* AN_SHAPE: prism, lathe, sor, text */
     struct amesh *mesh;            /* AN_MESH */
 };

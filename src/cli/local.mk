@@ -1,5 +1,5 @@
 ## src/cli: see the file headers. Appends to the core library.
 bin_PROGRAMS += iris
 iris_SOURCES = %reldir%/main.c %reldir%/options.c %reldir%/options.h \
-	%reldir%/report.c %reldir%/report.h
+	%reldir%/report.c %reldir%/report.h %reldir%/passlog.c %reldir%/passlog.h
 iris_LDADD = libiris_core.la $(IRIS_LIBS)

@@ -18,6 +18,7 @@
 #include <unistd.h>
 
 #include "cli/options.h"
+#include "cli/passlog.h"
 #include "cli/report.h"
 #include "iris/iris.h"
 #include "util/thread.h"
@@ -122,17 +123,30 @@ int main(int argc, char **argv)
         return EXIT_USAGE;
     }
 
+    /* Progressive mode: error against a reference, images as it goes */
+    struct passlog plog;
+    if (passlog_open(&plog, &o.render, o.reference, o.error_log, o.verbose,
+                     out_name, o.output_bits, err, sizeof err) != 0) {
+        fprintf(stderr, "iris: %s\n", err);
+        free(out_name);
+        return EXIT_USAGE;
+    }
+    o.render.on_pass = passlog_on_pass;
+    o.render.on_pass_user = &plog;
+
     struct run_times times = { 0, 0, 0 };
     iris_scene *scene = NULL;
     int rc = parse_scene(&o, &scene);
     times.parse = par_now() - t0;
     if (rc) {
+        passlog_close(&plog);
         free(out_name);
         return rc;
     }
     if (o.action == CLI_PARSE_ONLY) {
         if (o.verbose)
             iris_scene_dump(scene, stdout);
+        passlog_close(&plog);
         free(out_name);
         iris_scene_destroy(scene);
         return 0;
@@ -153,6 +167,7 @@ int main(int argc, char **argv)
     iris_image img;
     iris_render_stats rs;
     memset(&rs, 0, sizeof rs);
+    double t_render = par_now();
     enum iris_status st = iris_image_init(&img, o.render.width, o.render.height);
     if (st == IRIS_OK)
         st = iris_render(scene, &o.render, &img, &rs, err, sizeof err);
@@ -170,6 +185,13 @@ int main(int argc, char **argv)
     }
     if (interrupted)
         st = IRIS_EINTR;
+    if (plog.calls == 0 && o.reference && st == IRIS_OK) {
+        /* one ordinary render: log it as one pass */
+        iris_pass_info info = { 1, par_now() - t_render, rs.photons_emitted,
+                                1.0 };
+        plog.out_name = NULL;
+        passlog_on_pass(&plog, &img, &info);
+    }
 
     /* Write the image: all of it, or what was done before an interrupt. */
     double tw = par_now();
@@ -198,6 +220,7 @@ done:
         if (rc == 0)
             rc = EXIT_RENDER;
     }
+    passlog_close(&plog);
     iris_image_fini(&img);
     free(out_name);
     iris_scene_destroy(scene);

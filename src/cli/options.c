@@ -245,6 +245,24 @@ static int long_option(int argc, char **argv, int *i, struct cli_options *o,
         o->render.time_limit = d;
         return 0;
     }
+    {
+        /* progressive mode: files */
+        static const char *const names[4] = { "checkpoint", "resume",
+                                              "reference", "error-log" };
+        for (int k = 0; k < 4; k++) {
+            v = long_value(argc, argv, i, names[k], &m);
+            if (!m)
+                continue;
+            if (!v || !*v)
+                return fail(err, errlen, "%s needs a file name", a);
+            const char **slot = k == 0 ? &o->render.checkpoint
+                              : k == 1 ? &o->render.resume
+                              : k == 2 ? &o->reference
+                                       : &o->error_log;
+            *slot = v;
+            return 0;
+        }
+    }
     v = long_value(argc, argv, i, "spectral-samples", &m);
     if (m) {
         if (!v || !parse_int(v, 2, 10000, &n)) return fail(err, errlen, "%s: expected 2..10000 wavelengths", a);
@@ -353,8 +371,12 @@ void cli_usage(FILE *out)
 "      --threads=N     worker threads (the image does not depend on it)\n"
 "      --seed=N        seed of every random stream (0)\n"
 "      --passes=N      progressive photon passes\n"
-"      --time-limit=S  stop progressive rendering after S seconds\n"
-"      --spectral-samples=N  minimum wavelengths per dispersive ray\n"
+"      --time-limit=S  progressive rendering: stop after S seconds\n"
+"      --checkpoint=F  save the progressive accumulation in F\n"
+"      --resume=F      continue the accumulation saved in F\n"
+"      --reference=IMG error against IMG after each pass (rmse, bias)\n"
+"      --error-log=F   append time_s,passes,photons,rmse,rel_rmse,bias\n"
+"                      to the CSV file F after each pass\n""      --spectral-samples=N  minimum wavelengths per dispersive ray\n"
 "      --no-photons    render without photons\n"
 "  -q, --quiet         no progress output\n"
 "      --verbose       more detail, including the render plan\n"

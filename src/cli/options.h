@@ -37,6 +37,9 @@ struct cli_options {
     iris_declare declares[CLI_MAX_DECLARES];
     double clock;
     bool allow_unrestricted_io;
+    /* progressive mode (--checkpoint and --resume are in 'render') */
+    const char *reference;      /* --reference IMG */
+    const char *error_log;      /* --error-log FILE.csv */
 };
 
 /*

@@ -1,2 +1,8 @@
-## src/image: see the file headers. Appends to the core library.
-libiris_core_la_SOURCES += %reldir%/image.c %reldir%/oiio.cc
+## src/image: images, and the OpenImageIO module loaded on first use.
+libiris_core_la_SOURCES += %reldir%/image.c %reldir%/image_io.c \
+	%reldir%/image_module.h %reldir%/png.c %reldir%/png.h
+pkglib_LTLIBRARIES = iris-oiio.la
+iris_oiio_la_SOURCES = %reldir%/oiio.cc %reldir%/image_module.h
+iris_oiio_la_CPPFLAGS = $(AM_CPPFLAGS) $(OIIO_CFLAGS)
+iris_oiio_la_LDFLAGS = -module -avoid-version -shared
+iris_oiio_la_LIBADD = $(OIIO_LIBS)

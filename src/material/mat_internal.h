@@ -33,6 +33,17 @@ vec3 pat_space(const struct mat_ctx *ctx, const iris_pattern *pat, vec3 p);
 double pat_eval_at(const struct mat_ctx *ctx, const iris_pattern *pat,
                    vec3 q, const struct mat_point *pt);
 
+/*
+** Where the entries of a map (pigment_map, normal_map, texture_map and the
+** list patterns' pigments) are evaluated. POV-Ray evaluates them at the
+** map pattern's warped point; the parser already gives each entry the map
+** pattern's transforms, so only the warps are missing: this returns 'p'
+** moved by them, taken back to world space (T W T^-1 p), or 'p' itself
+** when the pattern has no warp.
+*/
+vec3 pat_warp_world(const struct mat_ctx *ctx, const iris_pattern *pat,
+                    vec3 p);
+
 /* pat_eval_at(pat_space(p)). */
 double pat_value(const struct mat_ctx *ctx, const iris_pattern *pat,
                  vec3 p, const struct mat_point *pt);

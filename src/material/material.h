@@ -128,4 +128,16 @@ void mat_metallic_tint(double metallic, double cos_angle,
 /* The scene's default noise generator, for pattern evaluation. */
 int mat_noise_generator(const struct mat_ctx *ctx);
 
+/*
+** For function { pattern { ... } } and function { pigment { ... } }
+** (src/fn's IRIS_FN_PATTERN): the value in [0, 1] of 'pat' at world point
+** (x, y, z), with its transform, warps and wave shaping, and the pigment's
+** colour there as r, g, b, filter, transmit. No context is needed: the
+** noise generator is the pattern's own or POV-Ray's default (2), and
+** image maps read as black. Thread-safe; never NaN.
+*/
+double mat_pattern_at(const iris_pattern *pat, double x, double y, double z);
+void mat_pigment_at(const iris_pigment *pig, double x, double y, double z,
+                    double rgbft[5]);
+
 #endif

@@ -18,6 +18,8 @@
 
 #include <math.h>
 #include <pthread.h>
+#include <stdatomic.h>
+#include <stdbool.h>
 #include <stdint.h>
 
 #include "material/noise.h"
@@ -163,15 +165,21 @@ static void build_tables(void)
     build_gradients();
 }
 
+/* Set once the tables are built, so that the hot paths skip
+** pthread_once's call after the first time. */
+static atomic_bool noise_ready;
+
 static void init_once(void)
 {
     build_tables();
     build_waves(); /* needs the tables above */
+    atomic_store_explicit(&noise_ready, true, memory_order_release);
 }
 
 void noise_init(void)
 {
-    pthread_once(&noise_once, init_once);
+    if (!atomic_load_explicit(&noise_ready, memory_order_acquire))
+        pthread_once(&noise_once, init_once);
 }
 
 static double scurve(double a)

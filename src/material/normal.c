@@ -171,10 +171,13 @@ vec3 mat_perturb_normal(const struct mat_ctx *ctx, const iris_normal *nrm,
             if (v == nrm->entries[c].value)
                 p = c;
         }
-        vec3 nc = mat_perturb_normal(ctx, nrm->entries[c].normal, pt, n);
+        /* the entries see the map pattern's warps (pat_warp_world) */
+        struct mat_point wpt = *pt;
+        wpt.p = pat_warp_world(ctx, pat, pt->p);
+        vec3 nc = mat_perturb_normal(ctx, nrm->entries[c].normal, &wpt, n);
         if (p == c)
             return v3_norm(nc);
-        vec3 np = mat_perturb_normal(ctx, nrm->entries[p].normal, pt, n);
+        vec3 np = mat_perturb_normal(ctx, nrm->entries[p].normal, &wpt, n);
         double t = (v - nrm->entries[p].value) /
                    (nrm->entries[c].value - nrm->entries[p].value);
         return v3_norm(v3_add(v3_scale(np, 1 - t), v3_scale(nc, t)));
@@ -182,10 +185,12 @@ vec3 mat_perturb_normal(const struct mat_ctx *ctx, const iris_normal *nrm,
     if (pat->kind == IRIS_PAT_AVERAGE && nrm->n_entries > 0) {
         vec3 sum = v3(0, 0, 0);
         double total = 0;
+        struct mat_point wpt = *pt;
+        wpt.p = pat_warp_world(ctx, pat, pt->p);
         for (int i = 0; i < nrm->n_entries; i++) {
             double w = nrm->entries[i].value != 0 ? nrm->entries[i].value : 1;
             sum = v3_madd(sum, mat_perturb_normal(ctx, nrm->entries[i].normal,
-                                                  pt, n), w);
+                                                  &wpt, n), w);
             total += w;
         }
         return total > 0 ? v3_norm(sum) : n;

@@ -14,7 +14,10 @@
 
 #include <math.h>
 #include <pthread.h>
+#include <stdatomic.h>
+#include <stdbool.h>
 #include <stdint.h>
+#include <stdlib.h>
 
 #include "iris/fn.h"
 #include "material/mat_internal.h"
@@ -63,9 +66,19 @@ static void build_rand_table(void)
     }
 }
 
+/* Set once the table is built (see noise.c's noise_ready). */
+static atomic_bool rand_ready;
+
+static void build_rand_once(void)
+{
+    build_rand_table();
+    atomic_store_explicit(&rand_ready, true, memory_order_release);
+}
+
 double pat_rand(unsigned long i)
 {
-    pthread_once(&rand_once, build_rand_table);
+    if (!atomic_load_explicit(&rand_ready, memory_order_acquire))
+        pthread_once(&rand_once, build_rand_once);
     return rand_table[i % RAND_TABLE];
 }
 
@@ -269,6 +282,18 @@ vec3 pat_space(const struct mat_ctx *ctx, const iris_pattern *pat, vec3 p)
     q.y = fmin(fmax(q.y, -COORD_LIMIT), COORD_LIMIT);
     q.z = fmin(fmax(q.z, -COORD_LIMIT), COORD_LIMIT);
     return q;
+}
+
+vec3 pat_warp_world(const struct mat_ctx *ctx, const iris_pattern *pat,
+                    vec3 p)
+{
+    if (pat->n_warps == 0)
+        return p;
+    const iris_warp *classic = classic_turb(pat);
+    if (pat->n_warps == 1 && classic && uses_own_turb(pat->kind))
+        return p;
+    vec3 q = pat_space(ctx, pat, p);
+    return pat->has_transform ? xf_point(&pat->transform, q) : q;
 }
 
 /* ------------------------------------------------------------------ */
@@ -512,6 +537,16 @@ static double crackle_dist(vec3 d, double metric)
            pow(fabs(d.z), metric);
 }
 
+/* The distance along one axis from 'x' to the unit interval [c, c + 1]. */
+static double box_gap(double x, int c)
+{
+    if (x < c)
+        return c - x;
+    if (x > c + 1.0)
+        return x - (c + 1.0);
+    return 0.0;
+}
+
 /* The random point POV-Ray picks in the unit cube at (x, y, z). */
 static vec3 cube_point(int x, int y, int z)
 {
@@ -534,20 +569,37 @@ static double crackle(const struct mat_ctx *ctx, const iris_pattern *pat,
         fz = (int)floor(p.z - PAT_EPSILON);
     double m1 = INFINITY, m2 = INFINITY, m3 = INFINITY;
     vec3 best = p;
-    /* A 5x5x5 neighbourhood holds every candidate POV-Ray's 81 cubes do. */
-    for (int dx = -2; dx <= 2; dx++)
-        for (int dy = -2; dy <= 2; dy++)
-            for (int dz = -2; dz <= 2; dz++) {
-                vec3 c = cube_point(fx + dx, fy + dy, fz + dz);
-                double s = crackle_dist(v3_sub(c, p), metric);
-                if (s < m1) {
-                    m3 = m2; m2 = m1; m1 = s; best = c;
-                } else if (s < m2) {
-                    m3 = m2; m2 = s;
-                } else if (s < m3) {
-                    m3 = s;
+    /*
+    ** A 5x5x5 neighbourhood holds every candidate POV-Ray's 81 cubes do.
+    ** The inner 3x3x3 cubes go first; an outer cube is skipped when even
+    ** its nearest corner is no closer than the third distance found, which
+    ** leaves the three smallest distances exactly as the full search has
+    ** them.
+    */
+    for (int pass = 0; pass < 2; pass++)
+        for (int dx = -2; dx <= 2; dx++)
+            for (int dy = -2; dy <= 2; dy++)
+                for (int dz = -2; dz <= 2; dz++) {
+                    bool inner = abs(dx) <= 1 && abs(dy) <= 1 && abs(dz) <= 1;
+                    if (inner != (pass == 0))
+                        continue;
+                    int cx = fx + dx, cy = fy + dy, cz = fz + dz;
+                    if (!inner && metric > 0) {
+                        vec3 gap = v3(box_gap(p.x, cx), box_gap(p.y, cy),
+                                      box_gap(p.z, cz));
+                        if (crackle_dist(gap, metric) >= m3)
+                            continue;
+                    }
+                    vec3 c = cube_point(cx, cy, cz);
+                    double s = crackle_dist(v3_sub(c, p), metric);
+                    if (s < m1) {
+                        m3 = m2; m2 = m1; m1 = s; best = c;
+                    } else if (s < m2) {
+                        m3 = m2; m2 = s;
+                    } else if (s < m3) {
+                        m3 = s;
+                    }
                 }
-            }
     if (offset != 0) {
         double o = metric == 2 ? offset * offset
                  : metric == 1 ? offset : pow(offset, metric);
@@ -565,6 +617,38 @@ static double crackle(const struct mat_ctx *ctx, const iris_pattern *pat,
              form.z * pow(m3, 1.0 / metric);
     }
     return fmax(fmin(tf, 1.0), 0.0);
+}
+
+/*
+** The mandel and julia patterns (POV-Ray's mandel_pattern, julia_pattern
+** and their higher-exponent forms): z -> z^n + c from z = (x, y), c = the
+** point (mandel) or the pattern's constant (julia), for 'iterations'
+** steps. With POV-Ray's default colouring a point that escapes |z| > 2 at
+** step k gets k / iterations (exterior type 1), one that never does gets
+** 1 (interior type 0).
+*/
+static double fractal(const iris_pattern *pat, vec3 p, bool julia)
+{
+    int it_max = pat->iterations > 0 ? pat->iterations : 1;
+    int n = (int)lround(pat->params[6]);
+    if (n < 2 || n > 33)
+        n = 2;
+    double a = p.x, b = p.y;
+    double ca = julia ? pat->complex_c.u : p.x;
+    double cb = julia ? pat->complex_c.v : p.y;
+    for (int k = 0; k < it_max; k++) {
+        double ra = a, rb = b;
+        for (int e = 1; e < n; e++) {
+            double t = ra * a - rb * b;
+            rb = ra * b + rb * a;
+            ra = t;
+        }
+        a = ra + ca;
+        b = rb + cb;
+        if (a * a + b * b > 4.0)
+            return (double)k / it_max;
+    }
+    return 1.0;
 }
 
 static double function_value(const iris_pattern *pat, vec3 p)
@@ -623,6 +707,8 @@ static double raw_value(const struct mat_ctx *ctx, const iris_pattern *pat,
         return noise_triangle_wave(rad) + noise_triangle_wave(v);
     }
     case IRIS_PAT_WOOD: return wood(pat, p);
+    case IRIS_PAT_MANDEL: return fractal(pat, p, false);
+    case IRIS_PAT_JULIA: return fractal(pat, p, true);
     case IRIS_PAT_WAVES: return waves_sum(ctx, pat, p, false);
     case IRIS_PAT_RIPPLES: return waves_sum(ctx, pat, p, true);
     case IRIS_PAT_WRINKLES: return wrinkles(p, gen);

@@ -172,8 +172,18 @@ bool mat_eval_pigment(const struct mat_ctx *ctx, const iris_pigment *pig,
         }
         return true;
     }
+    /* Map entries that are pigments see the map pattern's warps. */
+    struct mat_point wpt;
+    const struct mat_point *ept = pt;
+    if (pig->n_entries > 0 && (pig->is_pigment_map ||
+                               pig->entries[0].pigment) &&
+        pat->n_warps > 0) {
+        wpt = *pt;
+        wpt.p = pat_warp_world(ctx, pat, pt->p);
+        ept = &wpt;
+    }
     if (pat->kind == IRIS_PAT_AVERAGE)
-        return average(ctx, pig, pt, out);
+        return average(ctx, pig, ept, out);
 
     const iris_map_entry *e = pig->n_entries > 0 ? pig->entries : NULL;
     const struct def_entry *d = NULL;
@@ -185,12 +195,12 @@ bool mat_eval_pigment(const struct mat_ctx *ctx, const iris_pigment *pig,
     int prev, cur;
     search_map(v, e, d, n, &prev, &cur);
     iris_colour c_cur, c_prev;
-    bool found = entry_colour(ctx, pig, d, cur, pt, &c_cur);
+    bool found = entry_colour(ctx, pig, d, cur, ept, &c_cur);
     if (prev == cur) {
         *out = c_cur;
         return found;
     }
-    found = entry_colour(ctx, pig, d, prev, pt, &c_prev) || found;
+    found = entry_colour(ctx, pig, d, prev, ept, &c_prev) || found;
     double v0 = map_value(e, d, prev), v1 = map_value(e, d, cur);
     double t = v1 > v0 ? (v - v0) / (v1 - v0) : 1.0;
     *out = colour_lerp(c_prev, c_cur, t);
@@ -338,4 +348,31 @@ bool mat_image_lookup(const struct mat_ctx *ctx, const iris_image_ref *ref,
     out->f = c0.f * f0 + c1.f * f1 + c2.f * f2 + c3.f * f3;
     out->t = c0.t * f0 + c1.t * f1 + c2.t * f2 + c3.t * f3;
     return true;
+}
+
+/* ------------------------------------------------------------------ */
+/* Context-free evaluation for src/fn                                   */
+/* ------------------------------------------------------------------ */
+
+double mat_pattern_at(const iris_pattern *pat, double x, double y, double z)
+{
+    if (!pat)
+        return 0.0;
+    struct mat_point pt = { v3(x, y, z), v3(0, 1, 0), v3(0, 0, 1), { 0, 0 },
+                            NULL, true };
+    double v = pat_value(NULL, pat, pt.p, &pt);
+    return isfinite(v) ? v : 0.0;
+}
+
+void mat_pigment_at(const iris_pigment *pig, double x, double y, double z,
+                    double rgbft[5])
+{
+    iris_colour c = { 0, 0, 0, 0, 0 };
+    struct mat_point pt = { v3(x, y, z), v3(0, 1, 0), v3(0, 0, 1), { 0, 0 },
+                            NULL, true };
+    if (pig)
+        (void)mat_eval_pigment(NULL, pig, &pt, &c);
+    const double v[5] = { c.r, c.g, c.b, c.f, c.t };
+    for (int i = 0; i < 5; i++)
+        rgbft[i] = isfinite(v[i]) ? v[i] : 0.0;
 }

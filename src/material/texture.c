@@ -294,11 +294,50 @@ static void eval_list(const struct mat_ctx *ctx, const iris_texture *tex,
                       const struct mat_point *pt, struct mat_eval *out,
                       int depth);
 
+/* The most entries of an 'average' texture_map that are shaded. */
+#define MAX_AVERAGE 16
+
+/* An 'average' texture_map: every entry shaded and the colours mixed by
+** the entries' weights (an entry written without one weighs 1), as
+** POV-Ray's average texture does. */
+static void eval_average(const struct mat_ctx *ctx, const iris_texture *t,
+                         const struct mat_point *pt,
+                         const struct mat_eval *rest, struct mat_eval *out,
+                         int depth)
+{
+    int n = t->n_entries < MAX_AVERAGE ? t->n_entries : MAX_AVERAGE;
+    struct mat_eval *alt = iris_malloc((size_t)n * sizeof *alt);
+    if (!alt) {
+        *out = *rest;
+        return;
+    }
+    const struct mat_eval *alts[MAX_AVERAGE];
+    double w[MAX_AVERAGE], total = 0.0;
+    for (int i = 0; i < n; i++) {
+        double wi = t->entries[i].value;
+        w[i] = wi != 0.0 && isfinite(wi) ? fabs(wi) : 1.0;
+        total += w[i];
+    }
+    struct mat_point wpt = *pt;
+    wpt.p = pat_warp_world(ctx, &t->map_pattern, pt->p);
+    for (int i = 0; i < n; i++) {
+        eval_list(ctx, t->entries[i].texture, &wpt, &alt[i], depth + 1);
+        alts[i] = &alt[i];
+        w[i] /= total;
+    }
+    combine(alts, w, n, rest, out);
+    iris_free(alt);
+}
+
 /* A texture_map layer: the two neighbouring entries and their weights. */
 static void eval_map(const struct mat_ctx *ctx, const iris_texture *t,
                      const struct mat_point *pt, const struct mat_eval *rest,
                      struct mat_eval *out, int depth)
 {
+    if (t->map_pattern.kind == IRIS_PAT_AVERAGE) {
+        eval_average(ctx, t, pt, rest, out, depth);
+        return;
+    }
     const iris_map_entry *e = t->entries;
     int n = t->n_entries, p = 0, c = 0;
     double v = pat_value(ctx, &t->map_pattern, pt->p, pt);
@@ -321,6 +360,10 @@ static void eval_map(const struct mat_ctx *ctx, const iris_texture *t,
     double w[2];
     int n_alts = 0;
     double frac = p == c ? 1.0 : (v - e[p].value) / (e[c].value - e[p].value);
+    /* the entries see the map pattern's warps (pat_warp_world) */
+    struct mat_point wpt = *pt;
+    wpt.p = pat_warp_world(ctx, &t->map_pattern, pt->p);
+    pt = &wpt;
     eval_list(ctx, e[c].texture, pt, &alt[0], depth + 1);
     alts[n_alts] = &alt[0];
     w[n_alts++] = frac;
@@ -345,6 +388,18 @@ static void eval_list(const struct mat_ctx *ctx, const iris_texture *tex,
     int n = 0;
     for (const iris_texture *t = tex; t && n < MAT_MAX_LAYERS; t = t->next)
         list[n++] = t;
+    /* The common case, a list of plain layers: one stack, top first. */
+    bool plain = true;
+    for (int i = 0; i < n && plain; i++)
+        plain = !(list[i]->map_pattern.kind != IRIS_PAT_NONE &&
+                  list[i]->n_entries > 0);
+    if (plain) {
+        for (int i = 0; i < n; i++)
+            eval_layer(ctx, list[i], pt, &out->layers[i]);
+        out->n_layers = n;
+        out->stacks[0].n = n;
+        return;
+    }
     for (int i = n - 1; i >= 0; i--) {
         const iris_texture *t = list[i];
         if (t->map_pattern.kind != IRIS_PAT_NONE && t->n_entries > 0) {
@@ -356,16 +411,18 @@ static void eval_list(const struct mat_ctx *ctx, const iris_texture *tex,
             iris_free(rest);
             continue;
         }
-        /* A plain layer goes on top of every stack. */
+        /* A plain layer goes on top of every stack: the stacks are
+        ** rebuilt from a copy of the layers only. */
         struct mat_layer l;
         eval_layer(ctx, t, pt, &l);
-        struct mat_eval *prev = iris_malloc(sizeof *prev);
-        if (!prev)
-            return;
-        *prev = *out;
+        struct mat_layer prev[MAT_MAX_LAYERS];
+        struct mat_stack pstack[MAT_MAX_STACKS];
+        int n_prev = out->n_layers;
+        memcpy(prev, out->layers, (size_t)n_prev * sizeof *prev);
+        memcpy(pstack, out->stacks, (size_t)out->n_stacks * sizeof *pstack);
         out->n_layers = 0;
-        for (int s = 0; s < prev->n_stacks; s++) {
-            struct mat_stack *ps = &prev->stacks[s], *os = &out->stacks[s];
+        for (int s = 0; s < out->n_stacks; s++) {
+            struct mat_stack *ps = &pstack[s], *os = &out->stacks[s];
             os->weight = ps->weight;
             os->first = out->n_layers;
             os->n = 0;
@@ -374,11 +431,10 @@ static void eval_list(const struct mat_ctx *ctx, const iris_texture *tex,
                 os->n++;
             }
             for (int k = 0; k < ps->n && out->n_layers < MAT_MAX_LAYERS; k++) {
-                out->layers[out->n_layers++] = prev->layers[ps->first + k];
+                out->layers[out->n_layers++] = prev[ps->first + k];
                 os->n++;
             }
         }
-        iris_free(prev);
     }
 }
 

@@ -18,6 +18,20 @@
 ** photon becomes linear sRGB through spec_lambda_rgb_weight(lambda_j).
 ** POV-Ray also adds phong/specular highlights from photons; iris does not
 ** (yet).
+**
+** Progressive passes (progressive.c) scale the estimate radius: r_e = s·r
+** with s = estimate_scale <= 1 from the pass schedule, and only photons
+** closer than r_e count (the cone weight is 0 beyond it). Why the scaled
+** k-nearest radius of the pass's own map is the per-point radius: it adapts
+** to the density (a focused caustic is 1e3 times denser than its
+** surroundings, where any one global radius fails), and for s < 1 the
+** estimate stays unbiased over a uniform density although the radius comes
+** from the same photons: given r, the other k-1 photons are uniform in the
+** disc of radius r, (k-1)·s^2 of them fall inside r_e on average, and
+** E[(k-1)/(pi·r^2)] = rho exactly (pi·r^2·rho is Gamma(k, 1) distributed).
+** All passes shoot the same number of photons, so r is distributed alike in
+** every pass: the pass's own k-nearest radius stands for the pilot radius
+** r_1(x) of Knaus and Zwicker's schedule without storing a radius per point.
 */
 #include "config.h"
 
@@ -74,6 +88,8 @@ void photon_map_shade(const struct photon_map *m,
         if (!accept)
             n = gather(m, in->p, m->radius, buf, &r);
     }
+    if (m->estimate_scale > 0.0 && m->estimate_scale < 1.0)
+        r *= m->estimate_scale;
     double sum[3] = { 0, 0, 0 };
     double kc = m->cone_k;
     for (int i = 0; i < n && r > 0.0; i++) {
@@ -91,7 +107,7 @@ void photon_map_shade(const struct photon_map *m,
         double a = 1.0 / (cos_raw < 0.1 ? 0.1 : cos_raw > 1.0 ? 1.0 : cos_raw);
         double d = sqrt(buf[i].d2);
         double w = 1.0 - d / (kc * r);
-        if (w <= 0.0)
+        if (w <= 0.0 || d > r)
             continue;
         double lambda = pstore_lambda(&m->store, j);
         double rho = spec_reflectance(in->pigment_rgb, lambda);

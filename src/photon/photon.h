@@ -37,8 +37,9 @@ struct photon_options {
     int threads;               /* worker threads (< 1: one) */
     uint64_t seed;             /* random streams: (seed, pass, photon) */
     int pass;                  /* progressive pass number, 0 first */
-    double radius_scale;       /* gather radius multiplier (0 = 1); the
-                                  progressive driver shrinks it per pass */
+    double radius_scale;       /* progressive pass: the estimate radius is
+                                  this times the k-nearest radius (0 = 1;
+                                  estimate.c); progressive.c shrinks it */
     const struct mat_ctx *mat; /* texture evaluation (material.h); NULL:
                                   solid top-layer pigments only */
 };

@@ -37,6 +37,8 @@ struct photon_map {
     double expand_tol;
     int expand_min;
     double cone_k;             /* cone filter constant (1) */
+    double estimate_scale;     /* progressive pass: the estimate radius is
+                                  this times the k-nearest radius (1) */
 };
 
 /* photon_map_build() against any world. */

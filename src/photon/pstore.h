@@ -52,6 +52,7 @@ struct pstore {
     size_t n;
     double lo[3];              /* box corner */
     double step[3];            /* quantisation step per axis */
+    size_t n_dropped;          /* far photons left out (pstore.c) */
 };
 
 /* A neighbour found by pstore_knn(). */
@@ -62,7 +63,8 @@ struct pstore_found {
 
 /*
 ** Builds the tree from 'n' raw photons ('raw' is reordered; it may be
-** freed afterwards). Returns IRIS_OK or IRIS_ENOMEM. n may be 0.
+** freed afterwards). Photons far outside the bulk of the others are left
+** out (counted in n_dropped; see robust_box() in pstore.c). Returns IRIS_OK or IRIS_ENOMEM. n may be 0.
 */
 IRIS_NODISCARD enum iris_status pstore_build(struct pstore *s,
                                              struct pstore_raw *raw,

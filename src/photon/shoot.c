@@ -44,6 +44,15 @@
 ** buffers are concatenated in batch order, so the map does not depend on
 ** the thread count. POV-Ray's autostop (which needs rings in sequence) is
 ** not used: all rings up to theta_max are shot.
+**
+** Progressive passes (opts->pass > 0). Pass 0 keeps POV-Ray's jitter, so a
+** single render matches POV-Ray's photon layout. POV-Ray's jitter (a
+** fraction of the cell, uniform in theta and phi) leaves every pass on
+** nearly the same ring lattice, and averaging passes would then keep the
+** lattice's pattern. Later passes instead place each photon uniformly
+** by area (solid angle for point lights) inside its whole cell: each pass
+** is an unbiased stratified sample of the light's flux, independent of the
+** other passes, which is what averaging passes needs (progressive.c).
 */
 #include "config.h"
 
@@ -353,6 +362,28 @@ static double lambda_lattice(int64_t ring, int64_t k_phi, int64_t k_area)
     return x - floor(x);
 }
 
+/*
+** A direction uniform by area (parallel lights) or solid angle inside the
+** whole cell (ring 'rg', column 'k_phi'): theta from the inverse of the
+** cell's cumulative measure, phi uniform over the column.
+*/
+static void cell_uniform(const struct combo *c, const struct ring *rg,
+                         int64_t k_phi, rng *r, double *th, double *ph)
+{
+    double lo = fmax(0.0, rg->theta - 0.5 * c->dtheta);
+    double hi = rg->theta + 0.5 * c->dtheta;
+    double u = rng_uniform(r), v = rng_uniform(r);
+    if (c->tc.parallel) {
+        *th = sqrt(lo * lo + u * (hi * hi - lo * lo));
+    } else {
+        hi = fmin(hi, M_PI);
+        double z = cos(lo) + u * (cos(hi) - cos(lo));
+        *th = acos(z < -1.0 ? -1.0 : z > 1.0 ? 1.0 : z);
+    }
+    double dphi = 2.0 * M_PI / rg->n_phi;
+    *ph = -M_PI + dphi * ((double)k_phi + v);
+}
+
 /* Emits and traces photon 'j'. */
 static void shoot_one(const struct shoot *s, int64_t j,
                       struct ptrace_out *out)
@@ -371,6 +402,8 @@ static void shoot_one(const struct shoot *s, int64_t j,
     if (rg->theta == 0.0)
         ph = 2.0 * M_PI * rng_uniform(&r); /* the central cell: any phi */
     th = fabs(th);
+    if (s->opts->pass > 0)
+        cell_uniform(c, rg, k_phi, &r, &th, &ph);
     vec3 radial = v3_add(v3_scale(c->a, cos(ph)), v3_scale(c->b, sin(ph)));
     vec3 o, d;
     if (c->tc.parallel) {
@@ -513,8 +546,9 @@ enum iris_status pmap_build(const iris_scene *scene, const struct pmap_world *w,
     m->radius = ps->radius > 0.0 ? ps->radius
                                  : pmap_auto_radius(&m->store, m->gather_max);
     m->radius *= rmul;
-    if (opts->radius_scale > 0.0)
-        m->radius *= opts->radius_scale;
+    /* The progressive schedule shrinks the estimate radius, not the
+    ** search radius (estimate.c) */
+    m->estimate_scale = opts->radius_scale > 0.0 ? opts->radius_scale : 1.0;
     st.stored = (int64_t)m->store.n;
     st.bytes = (int64_t)(m->store.n * sizeof(struct pstore_photon));
     st.gather_radius = m->radius;

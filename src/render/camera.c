@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /*
 ** camera.c: POV-Ray's camera types (CreateCameraRay of tracepixel.cpp):
-** perspective, orthographic, fisheye and panoramic. The scene's camera
+** perspective, orthographic, fisheye, panoramic, ultra_wide_angle,
+** cylinder 1-4, omnimax and spherical. The scene's camera
 ** vectors are final (look_at, sky, angle and transforms resolved by the
 ** parser), so this is only the per-pixel mapping.
 */
@@ -10,6 +11,119 @@
 #include <math.h>
 
 #include "render/camera.h"
+
+/* The unit vector 'v', or 'v' itself when it has no length. */
+static vec3 unit_or_self(vec3 v)
+{
+    double l = v3_len(v);
+    return l > 0 ? v3_scale(v, 1.0 / l) : v;
+}
+
+/* 'p' rotated by 'angle' radians about the unit 'axis' (POV-Ray's
+** Compute_Axis_Rotation_Transform: p cos + (axis x p) sin + axis (axis.p)
+** (1 - cos)). */
+static vec3 rotate_about(vec3 p, vec3 axis, double angle)
+{
+    double c = cos(angle), s = sin(angle);
+    return v3_add(v3_add(v3_scale(p, c), v3_scale(v3_cross(axis, p), s)),
+                  v3_scale(axis, v3_dot(axis, p) * (1.0 - c)));
+}
+
+/*
+** The cameras that map the image to angles (ultra_wide_angle, cylinder
+** 1-4, omnimax, spherical) from the image position u in [0, 1) to the
+** right and v in [0, 1) upwards. They work with unit right, up and
+** direction vectors; the lengths only set the aspect ratio.
+*/
+static bool angular_ray(const iris_camera *cam, double u, double v, ray *r)
+{
+    double lr = v3_len(cam->right), lu = v3_len(cam->up);
+    vec3 R = unit_or_self(cam->right), U = unit_or_self(cam->up),
+         D = unit_or_self(cam->direction);
+    double x0 = u - 0.5, y0 = v - 0.5;
+    double deg = M_PI / 180.0;
+    vec3 d;
+    switch (cam->kind) {
+    case IRIS_CAM_ULTRA_WIDE: {
+        double angle = cam->angle > 0 ? cam->angle : 180.0;
+        double aspect = lr > 0 ? lu / lr : 1.0;
+        x0 *= angle * deg;
+        y0 *= angle * aspect * deg;
+        d = v3_add(v3_add(v3_scale(R, sin(x0)), v3_scale(U, sin(y0))),
+                   v3_scale(D, cos(x0) * cos(y0)));
+        break;
+    }
+    case IRIS_CAM_CYLINDER: {
+        double angle = cam->angle > 0 ? cam->angle : 90.0;
+        int type = cam->cylinder_type >= 1 && cam->cylinder_type <= 4
+                       ? cam->cylinder_type : 1;
+        double aspect = (type == 1 || type == 3) ? lu : lr;
+        if (type == 1 || type == 3) {
+            x0 *= angle * deg;
+            y0 *= aspect;
+            if (type == 1) {
+                d = v3_add(v3_add(v3_scale(R, sin(x0)), v3_scale(U, y0)),
+                           v3_scale(D, cos(x0)));
+            } else {
+                d = v3_add(v3_scale(R, sin(x0)), v3_scale(D, cos(x0)));
+                r->o = v3_madd(cam->location, U, y0);
+            }
+        } else {
+            y0 *= angle * deg;
+            x0 *= aspect;
+            if (type == 2) {
+                d = v3_add(v3_add(v3_scale(R, x0), v3_scale(U, sin(y0))),
+                           v3_scale(D, cos(y0)));
+            } else {
+                d = v3_add(v3_scale(U, sin(y0)), v3_scale(D, cos(y0)));
+                r->o = v3_madd(cam->location, R, x0);
+            }
+        }
+        break;
+    }
+    case IRIS_CAM_OMNIMAX: {
+        double aspect = lu > 0 ? lr / lu : 1.0;
+        x0 *= 2.0;
+        y0 *= 2.0;
+        if (aspect > 1.0) {
+            if (aspect > 1.283458) {
+                x0 *= aspect / 1.283458;
+                y0 = (y0 - 1.0) / 1.283458 + 1.0;
+            } else {
+                y0 = (y0 - 1.0) / aspect + 1.0;
+            }
+        } else if (aspect > 0) {
+            y0 /= aspect;
+        }
+        double rad = sqrt(x0 * x0 + y0 * y0);
+        if (rad > 1.0)
+            return false;
+        double phi = rad == 0.0 ? 0.0
+                   : x0 < 0.0 ? M_PI - asin(y0 / rad) : asin(y0 / rad);
+        double th = 1.411269 * rad - 0.09439 * rad * rad * rad +
+                    0.25674 * pow(rad, 5);
+        double sx = sin(phi), sy = sin(th), cy = cos(th);
+        /* nothing below 45 degrees under the projection axis */
+        if (sx * sy < tan(135.0 * deg) * cy)
+            return false;
+        d = v3_add(v3_add(v3_scale(R, cos(phi) * sy), v3_scale(U, sx * sy)),
+                   v3_scale(D, cy));
+        break;
+    }
+    default: { /* spherical: angle = horizontal field, half of it vertical */
+        double ha = cam->angle > 0 ? cam->angle : 360.0, va = ha * 0.5;
+        y0 *= va * deg;
+        x0 *= ha * deg;
+        d = rotate_about(rotate_about(D, R, -y0), U, x0);
+        break;
+    }
+    }
+    double len = v3_len(d);
+    if (!(len > 0) || !isfinite(len))
+        return false;
+    r->d = v3_scale(d, 1.0 / len);
+    return true;
+}
 
 bool camera_ray(const iris_camera *cam, int width, int height, double x,
                 double y, ray *r)
@@ -55,7 +169,12 @@ bool camera_ray(const iris_camera *cam, int width, int height, double x,
                    v3_scale(cam->direction, sin(px)));
         break;
     }
-    default: /* perspective, and the types not implemented */
+    case IRIS_CAM_ULTRA_WIDE:
+    case IRIS_CAM_CYLINDER:
+    case IRIS_CAM_OMNIMAX:
+    case IRIS_CAM_SPHERICAL:
+        return angular_ray(cam, x / w, ((h - 1) - y) / h, r);
+    default: /* perspective */
         d = v3_add(v3_add(cam->direction, v3_scale(cam->right, x0)),
                    v3_scale(cam->up, y0));
         break;

@@ -83,14 +83,27 @@ static void trace_sample(struct job *j, struct trace_ctx *c, double x,
         }
 }
 
-/* The colour compared by the AA threshold: gamma-adjusted (§4.1). */
-static double aa_distance(const struct job *j, const double a[3],
-                          const double b[3])
+/* A traced sample of the AA buffers: its colour and, once, the colour the
+** AA threshold compares (gamma-adjusted, §4.1), so that the pow() calls
+** are not repeated at every comparison. */
+struct px {
+    double c[3];
+    double g[3];               /* c^(1/aa_gamma), see px_gamma */
+    bool done;                 /* already supersampled (or not allowed) */
+};
+
+static void px_gamma(const struct job *j, struct px *p)
 {
-    double g = j->aa_gamma > 0 ? 1.0 / j->aa_gamma : 1.0, d = 0;
+    double g = j->aa_gamma > 0 ? 1.0 / j->aa_gamma : 1.0;
     for (int k = 0; k < 3; k++)
-        d += fabs(pow(fmax(a[k], 0.0), g) - pow(fmax(b[k], 0.0), g));
-    return d;
+        p->g[k] = g == 1.0 ? fmax(p->c[k], 0.0) : pow(fmax(p->c[k], 0.0), g);
+}
+
+/* The difference the AA threshold is compared with. */
+static double aa_distance(const struct px *a, const struct px *b)
+{
+    return fabs(a->g[0] - b->g[0]) + fabs(a->g[1] - b->g[1]) +
+           fabs(a->g[2] - b->g[2]);
 }
 
 /* Method 1: (centre + R x R jittered samples) / (R^2 + 1). */
@@ -166,11 +179,6 @@ static void put_pixel(struct job *j, int x, int y, const double col[3])
 ** the top and left. */
 #define TB(buf, x, y) (buf)[((y) - ty0 + 1) * (tw + 2) + ((x) - tx0 + 1)]
 
-struct px {
-    double c[3];
-    bool done;                 /* already supersampled (or not allowed) */
-};
-
 static void tile_method1(struct job *j, struct trace_ctx *c, int tx0,
                          int ty0, int tx1, int ty1)
 {
@@ -182,22 +190,25 @@ static void tile_method1(struct job *j, struct trace_ctx *c, int tx0,
     }
     for (int x = tx0; x <= tx1; x++) {
         trace_sample(j, c, x, ty0 - 1, TB(buf, x, ty0 - 1).c);
+        px_gamma(j, &TB(buf, x, ty0 - 1));
         TB(buf, x, ty0 - 1).done = true;
     }
     for (int y = ty0; y <= ty1; y++) {
         trace_sample(j, c, tx0 - 1, y, TB(buf, tx0 - 1, y).c);
+        px_gamma(j, &TB(buf, tx0 - 1, y));
         TB(buf, tx0 - 1, y).done = true;
         for (int x = tx0; x <= tx1; x++) {
             struct px *cur = &TB(buf, x, y), *left = &TB(buf, x - 1, y),
                       *top = &TB(buf, x, y - 1);
             trace_sample(j, c, x, y, cur->c);
-            bool ldiff = aa_distance(j, left->c, cur->c) >= j->aa_threshold;
-            bool tdiff = aa_distance(j, top->c, cur->c) >= j->aa_threshold;
+            px_gamma(j, cur);
+            bool ldiff = aa_distance(left, cur) >= j->aa_threshold;
+            bool tdiff = aa_distance(top, cur) >= j->aa_threshold;
             bool sl = !left->done && ldiff, st = !top->done && tdiff;
             bool sc = ldiff || tdiff;
-            if (sl) supersample(j, c, x - 1, y, left->c);
-            if (st) supersample(j, c, x, y - 1, top->c);
-            if (sc) supersample(j, c, x, y, cur->c);
+            if (sl) { supersample(j, c, x - 1, y, left->c); px_gamma(j, left); }
+            if (st) { supersample(j, c, x, y - 1, top->c); px_gamma(j, top); }
+            if (sc) { supersample(j, c, x, y, cur->c); px_gamma(j, cur); }
             if (sl) left->done = true;
             if (st) top->done = true;
             if (sc) cur->done = true;
@@ -231,12 +242,9 @@ static void subdivide(struct job *j, struct trace_ctx *c, double x, double y,
     int h = bstep / 2;
     double thr = j->aa_threshold;
     if (level > 0 && h > 0 &&
-        (aa_distance(j, c00->c, c02->c) >= thr ||
-         aa_distance(j, c00->c, c20->c) >= thr ||
-         aa_distance(j, c00->c, c22->c) >= thr ||
-         aa_distance(j, c02->c, c20->c) >= thr ||
-         aa_distance(j, c02->c, c22->c) >= thr ||
-         aa_distance(j, c20->c, c22->c) >= thr)) {
+        (aa_distance(c00, c02) >= thr || aa_distance(c00, c20) >= thr ||
+         aa_distance(c00, c22) >= thr || aa_distance(c02, c20) >= thr ||
+         aa_distance(c02, c22) >= thr || aa_distance(c20, c22) >= thr)) {
         const struct { int bx, by; double dx, dy; } mids[5] = {
             { bx, by + h, -d, 0 }, { bx + h, by, 0, -d },
             { bx + bstep, by + h, d, 0 }, { bx + h, by + bstep, 0, d },
@@ -253,6 +261,7 @@ static void subdivide(struct job *j, struct trace_ctx *c, double x, double y,
                 sy += ry * js;
             }
             trace_sample(j, c, sx, sy, p->c);
+            px_gamma(j, p);
             p->done = true;
         }
         double d2 = d * 0.5, r[4][3];
@@ -287,9 +296,11 @@ static void tile_method2(struct job *j, struct trace_ctx *c, int tx0,
         return;
     }
     for (int y = ty0; y <= ty1 + 1; y++)
-        for (int x = tx0; x <= tx1 + 1; x++)
-            trace_sample(j, c, x - 0.5, y - 0.5,
-                         corners[(y - ty0) * (tw + 1) + (x - tx0)].c);
+        for (int x = tx0; x <= tx1 + 1; x++) {
+            struct px *p = &corners[(y - ty0) * (tw + 1) + (x - tx0)];
+            trace_sample(j, c, x - 0.5, y - 0.5, p->c);
+            px_gamma(j, p);
+        }
     double js = j->jitter / (double)(sub + 1);
     for (int y = ty0; y <= ty1; y++)
         for (int x = tx0; x <= tx1; x++) {

@@ -4,3 +4,4 @@ libiris_core_la_SOURCES += %reldir%/render.c \
 	%reldir%/query.h %reldir%/trace.c %reldir%/trace.h \
 	%reldir%/plan.c %reldir%/plan.h %reldir%/eyepass.c %reldir%/eyepass.h \
 	%reldir%/jitter.c %reldir%/jitter.h
+libiris_core_la_SOURCES += %reldir%/progressive.c %reldir%/progressive.h

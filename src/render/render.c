@@ -18,7 +18,9 @@
 #include "photon/photon.h"
 #include "render/eyepass.h"
 #include "render/plan.h"
+#include "render/progressive.h"
 #include "render/trace.h"
+#include "util/mem.h"
 #include "util/thread.h"
 
 void iris_render_defaults(iris_render_options *o)
@@ -114,6 +116,41 @@ static enum iris_status photon_pass(const struct render_plan *plan,
     return IRIS_OK;
 }
 
+/*
+** A light's looks_like object is rendered as an ordinary object (the
+** parser has moved it to the light and made it no_shadow) but the parser
+** keeps it on the light only. The render therefore works on a shallow
+** copy of the scene whose object list has those objects appended; every
+** node stays the caller's. Returns 'scene' itself when no light has one,
+** NULL when memory runs out.
+*/
+static const iris_scene *with_looks_like(const iris_scene *scene,
+                                         iris_scene *copy,
+                                         iris_object ***objects)
+{
+    *objects = NULL;
+    int n = 0;
+    for (int i = 0; i < scene->n_lights; i++)
+        if (scene->lights[i] && scene->lights[i]->looks_like)
+            n++;
+    if (n == 0)
+        return scene;
+    iris_object **o = iris_calloc((size_t)(scene->n_objects + n), sizeof *o);
+    if (!o)
+        return NULL;
+    for (int i = 0; i < scene->n_objects; i++)
+        o[i] = scene->objects[i];
+    int k = scene->n_objects;
+    for (int i = 0; i < scene->n_lights; i++)
+        if (scene->lights[i] && scene->lights[i]->looks_like)
+            o[k++] = scene->lights[i]->looks_like;
+    *copy = *scene;
+    copy->objects = o;
+    copy->n_objects = k;
+    *objects = o;
+    return copy;
+}
+
 static void set_err(char *err, size_t errlen, const char *msg)
 {
     if (err && errlen) {
@@ -140,6 +177,13 @@ enum iris_status iris_render(const iris_scene *scene,
         return IRIS_EINVAL;
     }
     FILE *log = opts->log ? opts->log : stderr;
+    iris_scene scene_copy;
+    iris_object **extra_objects = NULL;
+    scene = with_looks_like(scene, &scene_copy, &extra_objects);
+    if (!scene) {
+        set_err(err, errlen, "iris_render: out of memory");
+        return IRIS_ENOMEM;
+    }
     double t0 = par_now();
     int threads = opts->threads > 0 ? opts->threads : par_cores();
     if (threads > 256)
@@ -153,12 +197,15 @@ enum iris_status iris_render(const iris_scene *scene,
 
     struct accel *acc = NULL;
     enum iris_status st = accel_build(scene, &acc, log, err, errlen);
-    if (st != IRIS_OK)
+    if (st != IRIS_OK) {
+        iris_free(extra_objects);
         return st;
+    }
     struct mat_ctx *mat = NULL;
     st = mat_ctx_create(scene, log, &mat);
     if (st != IRIS_OK) {
         accel_destroy(acc);
+        iris_free(extra_objects);
         set_err(err, errlen, "iris_render: out of memory building materials");
         return st;
     }
@@ -174,12 +221,16 @@ enum iris_status iris_render(const iris_scene *scene,
     struct photon_map *pmap = NULL;
     st = photon_pass(&plan, &tr, acc, mat, threads, opts, &pmap, stats);
     double t2 = par_now();
-    if (st == IRIS_OK)
+    double more_photon_s = 0.0; /* maps of progressive passes after the first */
+    if (st == IRIS_OK && progressive_wanted(opts))
+        st = progressive_run(&tr, acc, mat, threads, opts, t0, &pmap, out,
+                             stats, &more_photon_s, err, errlen);
+    else if (st == IRIS_OK)
         st = eyepass_run(&tr, opts, threads, out, stats);
     if (stats) {
         stats->time_build_s = t1 - t0;
-        stats->time_photon_s = t2 - t1;
-        stats->time_render_s = par_now() - t2;
+        stats->time_photon_s = t2 - t1 + more_photon_s;
+        stats->time_render_s = par_now() - t2 - more_photon_s;
     }
     if (st == IRIS_ENOMEM)
         set_err(err, errlen, "iris_render: out of memory");
@@ -192,5 +243,6 @@ done:
     tracer_fini(&tr);
     mat_ctx_destroy(mat);
     accel_destroy(acc);
+    iris_free(extra_objects);
     return st;
 }

@@ -921,10 +921,11 @@ static void texture_colour(struct trace_ctx *c, const struct tray *eye,
         raw = v3_neg(raw);
     struct mat_point pt = { h->p, raw, eye->r.d, h->uv, h->obj,
                             !(t->quality & TQ_NORMAL) };
-    struct mat_eval *ev = iris_malloc(sizeof *ev);
+    /* On the stack: a heap block per hit costs more than the shading of
+    ** a plain texture (the recursion depth is bounded by max_level). */
+    struct mat_eval evs;
+    struct mat_eval *ev = &evs;
     out[0] = out[1] = out[2] = 0.0;
-    if (!ev)
-        return;
     mat_eval_texture(t->mat, hit_texture(h, nd > 0.0), &pt, ev);
     struct light_cache cache;
     memset(cache.tested, 0, sizeof cache.tested);
@@ -937,7 +938,6 @@ static void texture_colour(struct trace_ctx *c, const struct tray *eye,
         for (int k = 0; k < 3; k++)
             out[k] += sk->weight * col[k];
     }
-    iris_free(ev);
 }
 
 /* ------------------------------------------------------------------ */

@@ -2,7 +2,10 @@
 /*
 ** imgcheck.c: image measurements for the stability tests.
 **
-**   imgcheck FILE   prints "bad maxc maxY meanY"
+**   imgcheck FILE        prints "bad maxc maxY meanY"
+**   imgcheck same A B    exits 0 when A and B hold the same pixels, bit
+**                        for bit (file metadata such as a DateTime is
+**                        not compared), else prints the first difference
 **
 ** over the linear r, g, b of every pixel: 'bad' counts NaN, Inf and
 ** negative values, 'maxc' is the largest channel value, 'maxY' and
@@ -15,21 +18,62 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 
 #include "iris/image.h"
+
+static int load(iris_image *img, const char *path)
+{
+    char err[512];
+    if (iris_image_read(img, path, err, sizeof err) != IRIS_OK) {
+        fprintf(stderr, "imgcheck: %s\n", err);
+        return -1;
+    }
+    return 0;
+}
+
+/* Compares the pixels of two files exactly: 0 same, 1 different. */
+static int same(const char *pa, const char *pb)
+{
+    iris_image a, b;
+    if (load(&a, pa))
+        return 1;
+    if (load(&b, pb)) {
+        iris_image_fini(&a);
+        return 1;
+    }
+    int rc = 0;
+    if (a.width != b.width || a.height != b.height) {
+        printf("sizes differ: %dx%d, %dx%d\n", a.width, a.height, b.width,
+               b.height);
+        rc = 1;
+    } else {
+        size_t n = (size_t)a.width * (size_t)a.height * 4;
+        for (size_t i = 0; i < n; i++)
+            if (memcmp(&a.pixels[i], &b.pixels[i], sizeof(float))) {
+                printf("pixel (%zu, %zu) channel %zu: %.9g, %.9g\n",
+                       i / 4 % (size_t)a.width, i / 4 / (size_t)a.width,
+                       i % 4, a.pixels[i], b.pixels[i]);
+                rc = 1;
+                break;
+            }
+    }
+    iris_image_fini(&a);
+    iris_image_fini(&b);
+    return rc;
+}
 
 int main(int argc, char **argv)
 {
     iris_image img;
-    char err[512];
+    if (argc == 4 && !strcmp(argv[1], "same"))
+        return same(argv[2], argv[3]);
     if (argc != 2) {
-        fputs("usage: imgcheck FILE\n", stderr);
+        fputs("usage: imgcheck FILE | imgcheck same A B\n", stderr);
         return 2;
     }
-    if (iris_image_read(&img, argv[1], err, sizeof err) != IRIS_OK) {
-        fprintf(stderr, "imgcheck: %s\n", err);
+    if (load(&img, argv[1]))
         return 1;
-    }
     long bad = 0;
     double maxc = 0, maxy = 0, sumy = 0;
     size_t n = (size_t)img.width * (size_t)img.height;

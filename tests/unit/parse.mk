@@ -15,3 +15,5 @@ tests_unit_test_parse_LDADD = $(TEST_LDADD)
 tests_unit_test_fn_SOURCES = tests/unit/test_fn.c tests/testutil.h
 tests_unit_test_fn_CFLAGS = $(TEST_CFLAGS)
 tests_unit_test_fn_LDADD = $(TEST_LDADD)
+# The libFuzzer target is built by tests/fuzz/build.sh (clang), not here.
+EXTRA_DIST += tests/fuzz/fuzz_parse.c tests/fuzz/build.sh

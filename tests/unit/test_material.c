@@ -439,6 +439,181 @@ static void test_normals(void **state)
     assert_near(n.y, 1 / sqrt(1 + a * a), 1e-8);
 }
 
+/* The mapping warps by hand from their definitions (POV-Ray's
+** warp_planar, warp_cylindrical, warp_spherical, warp_toroidal): the
+** angle around y from +x as a fraction of a turn, the height or latitude,
+** and the distance. */
+static vec3 warped(enum iris_warp_kind kind, vec3 orient, double off,
+                   double major, vec3 p)
+{
+    iris_pattern pat;
+    iris_warp w;
+    memset(&pat, 0, sizeof pat);
+    memset(&w, 0, sizeof w);
+    w.kind = kind;
+    w.orientation = orient;
+    w.offset.x = off;
+    w.major_radius = major;
+    pat.kind = IRIS_PAT_GRADIENT;
+    pat.n_warps = 1;
+    pat.warps = &w;
+    return pat_space(NULL, &pat, p);
+}
+
+static void test_mapping_warps(void **state)
+{
+    (void)state;
+    vec3 z = v3(0, 0, 1);
+    /* planar: z becomes the offset */
+    vec3 q = warped(IRIS_WARP_PLANAR, z, 0.7, 0, v3(1, 2, 3));
+    assert_near(q.x, 1, 1e-12); assert_near(q.y, 2, 1e-12);
+    assert_near(q.z, 0.7, 1e-12);
+    /* planar facing x: (o.x z, o.x y, -o.x x) */
+    q = warped(IRIS_WARP_PLANAR, v3(2, 0, 0), 0, 0, v3(1, 2, 3));
+    assert_near(q.x, 0, 1e-12); assert_near(q.y, 2, 1e-12);
+    assert_near(q.z, -1, 1e-12);
+    /* cylindrical: (0, .5, 2) is a quarter turn from +x at radius 2 */
+    q = warped(IRIS_WARP_CYLINDRICAL, z, 0, 0, v3(0, 0.5, 2));
+    assert_near(q.x, 0.25, 1e-12); assert_near(q.y, 0.5, 1e-12);
+    assert_near(q.z, 2, 1e-12);
+    /* three quarters of a turn below the x axis */
+    q = warped(IRIS_WARP_CYLINDRICAL, z, 0, 0, v3(0, 0, -1));
+    assert_near(q.x, 0.75, 1e-12);
+    /* spherical: on the equator latitude 0.5; at the north pole 1 */
+    q = warped(IRIS_WARP_SPHERICAL, z, 0, 0, v3(0, 0, 2));
+    assert_near(q.x, 0.25, 1e-12); assert_near(q.y, 0.5, 1e-12);
+    assert_near(q.z, 2, 1e-12);
+    q = warped(IRIS_WARP_SPHERICAL, z, 0, 0, v3(0, 3, 0));
+    assert_near(q.y, 1, 1e-12); assert_near(q.z, 3, 1e-12);
+    /* toroidal, major radius 1: (2, 0, 0) is on the outer equator of the
+    ** tube, half a turn around it from the inside, at distance 1 */
+    q = warped(IRIS_WARP_TOROIDAL, z, 0, 1, v3(2, 0, 0));
+    assert_near(q.x, 0, 1e-12); assert_near(q.y, 0.5, 1e-12);
+    assert_near(q.z, 1, 1e-12);
+    /* on the axis the angle is undefined: the point stays */
+    q = warped(IRIS_WARP_CYLINDRICAL, z, 0, 0, v3(0, 5, 0));
+    assert_near(q.y, 5, 0); assert_near(q.x, 0, 0);
+}
+
+/* mandel and julia by iterating z^2 + c by hand: (0.5, 0) escapes at the
+** fourth step (0.75, 1.0625, 1.6289, 3.1533 > 2), the origin never. */
+static void test_fractals(void **state)
+{
+    (void)state;
+    iris_pattern m;
+    memset(&m, 0, sizeof m);
+    m.kind = IRIS_PAT_MANDEL;
+    m.iterations = 10;
+    assert_near(pat_eval_at(NULL, &m, v3(0.5, 0, 0), NULL), 0.3, 1e-12);
+    assert_near(pat_eval_at(NULL, &m, v3(0, 0, 0), NULL), 1, 0);
+    assert_near(pat_eval_at(NULL, &m, v3(2, 2, 0), NULL), 0, 0);
+    /* julia with c = 0: the unit circle is the boundary; 1.2 escapes at
+    ** the second step (1.44, 2.0736) */
+    iris_pattern j = m;
+    j.kind = IRIS_PAT_JULIA;
+    assert_near(pat_eval_at(NULL, &j, v3(1.2, 0, 0), NULL), 0.1, 1e-12);
+    assert_near(pat_eval_at(NULL, &j, v3(0.9, 0, 0), NULL), 1, 0);
+}
+
+/* An average texture_map weighs its entries (1 when written without a
+** weight); a map pattern's warps move the points its entries see. */
+static void test_average_and_entry_warps(void **state)
+{
+    (void)state;
+    iris_finish f;
+    memset(&f, 0, sizeof f);
+    iris_pigment pa, pb;
+    memset(&pa, 0, sizeof pa);
+    memset(&pb, 0, sizeof pb);
+    pa.colour = rgb(1, 0, 0);
+    pb.colour = rgb(0, 0, 1);
+    iris_texture ta, tb, map;
+    memset(&ta, 0, sizeof ta);
+    memset(&tb, 0, sizeof tb);
+    memset(&map, 0, sizeof map);
+    ta.pigment = &pa; ta.finish = &f;
+    tb.pigment = &pb; tb.finish = &f;
+    iris_map_entry e[2];
+    memset(e, 0, sizeof e);
+    e[0].value = 3; e[0].texture = &ta;
+    e[1].value = 0; e[1].texture = &tb;
+    map.map_pattern.kind = IRIS_PAT_AVERAGE;
+    map.n_entries = 2;
+    map.entries = e;
+    struct mat_point pt;
+    memset(&pt, 0, sizeof pt);
+    pt.p = v3(0.25, 0, 0);
+    pt.n = v3(0, 1, 0);
+    struct mat_eval ev;
+    mat_eval_texture(NULL, &map, &pt, &ev);
+    assert_int_equal(ev.n_stacks, 2);
+    for (int s = 0; s < 2; s++) {
+        const struct mat_layer *l = &ev.layers[ev.stacks[s].first];
+        assert_near(ev.stacks[s].weight, l->pigment.r == 1 ? 0.75 : 0.25,
+                    1e-12);
+    }
+
+    /* checker of two gradient pigments, the checker warped by a repeat
+    ** warp of width 1 along x */
+    iris_pigment gx, gy, ck;
+    memset(&gx, 0, sizeof gx);
+    memset(&gy, 0, sizeof gy);
+    memset(&ck, 0, sizeof ck);
+    gx.pattern.kind = IRIS_PAT_GRADIENT;
+    gx.pattern.vector = v3(1, 0, 0);
+    gy = gx;
+    iris_map_entry ce[2];
+    memset(ce, 0, sizeof ce);
+    ce[0].value = 0; ce[0].pigment = &gx;
+    ce[1].value = 1; ce[1].pigment = &gy;
+    iris_warp w;
+    memset(&w, 0, sizeof w);
+    w.kind = IRIS_WARP_REPEAT;
+    w.repeat = v3(1, 0, 0);
+    w.flip = v3(0, 0, 0);
+    ck.pattern.kind = IRIS_PAT_CHECKER;
+    ck.pattern.n_warps = 1;
+    ck.pattern.warps = &w;
+    ck.n_entries = 2;
+    ck.entries = ce;
+    ck.is_pigment_map = true;
+    /* block k of the repeat is shifted by k * 0.2: x = 3.3 (block 3)
+    ** warps to 0.3 + 0.6 = 0.9, where the checker is 0 and the gradient
+    ** entry, seeing the warped point, is grey 0.9; unwarped it would be
+    ** 3.3 mod 1 = 0.3 */
+    w.offset = v3(0.2, 0, 0);
+    iris_colour c;
+    pt.p = v3(3.3, 0.5, 0.5);
+    mat_eval_pigment(NULL, &ck, &pt, &c);
+    assert_near(c.r, 0.9, 1e-9);
+}
+
+/* The context-free evaluators src/fn calls for pattern functions. */
+static void test_pattern_at(void **state)
+{
+    (void)state;
+    iris_pigment g;
+    memset(&g, 0, sizeof g);
+    g.pattern.kind = IRIS_PAT_GRADIENT;
+    g.pattern.vector = v3(0, 1, 0);
+    g.pattern.frequency = 1;
+    assert_near(mat_pattern_at(&g.pattern, 5, 0.25, 7), 0.25, 1e-12);
+    iris_map_entry e[2];
+    memset(e, 0, sizeof e);
+    e[0].value = 0; e[0].colour = rgb(0, 0, 0);
+    e[1].value = 1; e[1].colour = rgb(1, 0.5, 0);
+    e[1].colour.t = 1;
+    g.n_entries = 2;
+    g.entries = e;
+    double v[5];
+    mat_pigment_at(&g, 0, 0.5, 0, v);
+    assert_near(v[0], 0.5, 1e-12);
+    assert_near(v[1], 0.25, 1e-12);
+    assert_near(v[4], 0.5, 1e-12);
+    mat_pigment_at(NULL, 0, 0, 0, v);
+    assert_near(v[0], 0, 0);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -454,6 +629,10 @@ int main(void)
         cmocka_unit_test(test_reflectivity),
         cmocka_unit_test(test_transmittance),
         cmocka_unit_test(test_normals),
+        cmocka_unit_test(test_mapping_warps),
+        cmocka_unit_test(test_fractals),
+        cmocka_unit_test(test_average_and_entry_warps),
+        cmocka_unit_test(test_pattern_at),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -225,6 +225,65 @@ static void test_camera_orthographic(void **state)
 /* Lights                                                               */
 /* ------------------------------------------------------------------ */
 
+/* The angular cameras by hand from POV-Ray's formulas (tracepixel.cpp):
+** cylinder 1 turns x0 * angle about up and keeps y0 * |up| as height;
+** spherical turns direction by -y0 * v_angle about right, then x0 *
+** h_angle about up; ultra_wide_angle uses sin/cos of both angles. */
+static void test_camera_angular(void **state)
+{
+    (void)state;
+    iris_camera cam;
+    memset(&cam, 0, sizeof cam);
+    cam.kind = IRIS_CAM_CYLINDER;
+    cam.cylinder_type = 1;
+    cam.angle = 180;
+    cam.location = v3(0, 0, 0);
+    cam.direction = v3(0, 0, 2);
+    cam.right = v3(1.5, 0, 0);
+    cam.up = v3(0, 2, 0);
+    ray r;
+    /* the right edge of a 4 x 4 image at mid height: x0 = .5, a quarter
+    ** turn to the right; y0 = 0 */
+    assert_true(camera_ray(&cam, 4, 4, 3.5, 1.5, &r));
+    assert_near(r.d.x, 1, 1e-12);
+    assert_near(r.d.y, 0, 1e-12);
+    /* pixel (2, 0): x0 = 0.125 (22.5 deg), y0 = 0.5 * |up| = 1 */
+    assert_true(camera_ray(&cam, 4, 4, 2, -0.5, &r));
+    vec3 e = v3_norm(v3(sin(M_PI / 8), 1, cos(M_PI / 8)));
+    assert_near(r.d.x, e.x, 1e-12);
+    assert_near(r.d.y, e.y, 1e-12);
+    assert_near(r.d.z, e.z, 1e-12);
+    /* cylinder 3: the height moves the origin instead */
+    cam.cylinder_type = 3;
+    assert_true(camera_ray(&cam, 4, 4, 2, -0.5, &r));
+    assert_near(r.o.y, 1, 1e-12);
+    assert_near(r.d.y, 0, 1e-12);
+
+    /* spherical 360 x 180: the image's left edge looks backwards, the
+    ** top edge straight up */
+    cam.kind = IRIS_CAM_SPHERICAL;
+    cam.angle = 360;
+    assert_true(camera_ray(&cam, 4, 4, -0.5, 1.5, &r));
+    assert_near(r.d.z, -1, 1e-12);
+    assert_true(camera_ray(&cam, 4, 4, 1.5, -0.5, &r));
+    assert_near(r.d.y, 1, 1e-12);
+
+    /* ultra_wide_angle 180: x0 = .5 is 90 degrees to the right */
+    cam.kind = IRIS_CAM_ULTRA_WIDE;
+    cam.angle = 180;
+    assert_true(camera_ray(&cam, 4, 4, 3.5, 1.5, &r));
+    assert_near(r.d.x, 1, 1e-12);
+    assert_near(r.d.z, 0, 1e-12);
+
+    /* omnimax: no ray outside the unit circle (an image corner) */
+    cam.kind = IRIS_CAM_OMNIMAX;
+    cam.right = v3(1, 0, 0);
+    cam.up = v3(0, 1, 0);
+    assert_false(camera_ray(&cam, 4, 4, -0.5, -0.5, &r));
+    assert_true(camera_ray(&cam, 4, 4, 1.5, 1.5, &r));
+    assert_near(r.d.z, 1, 1e-12);
+}
+
 static void test_light_spot(void **state)
 {
     (void)state;
@@ -707,6 +766,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_camera_perspective),
         cmocka_unit_test(test_camera_orthographic),
+        cmocka_unit_test(test_camera_angular),
         cmocka_unit_test(test_light_spot),
         cmocka_unit_test(test_light_fade_cylinder),
         cmocka_unit_test(test_refraction_snell),

@@ -1,3 +1,4 @@
+// options: -w
 // One of every object type the parser builds.
 #version 3.7;
 sphere { <1, 2, 3>, 0.5 }

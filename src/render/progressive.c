@@ -1,0 +1,374 @@
+/* SPDX-License-Identifier: MIT */
+/*
+** progressive.c: progressive photon mapping (see progressive.h).
+**
+** DESIGN. A photon map of a fixed size is biased and stays biased: its
+** estimate blurs the caustic over the gather radius however many times it
+** is repeated. Knaus and Zwicker (2011) make the error vanish with
+** INDEPENDENT passes whose radius shrinks, r_i^2 = r_1^2 ·
+** prod_{k<i} (k + alpha)/(k + 1), alpha = 2/3, the images averaged: the
+** bias falls with r^2 and the noise of the average still falls, as
+** N^-1/3 each. A pass here is
+**   1. a photon map built with pass = i (photon random streams keyed by
+**      (seed, i, photon), cells sampled uniformly: shoot.c) whose
+**      estimate radius is progressive_radius_scale(i) times the k-nearest
+**      radius at the point (estimate.c explains why that per-point radius
+**      needs no stored pilot);
+**   2. an eye pass with new jitter: pass 0 is exactly the ordinary render
+**      (pixel centres, the user's seed); later passes take one stratified
+**      sample per pixel (when antialiasing is off) and a seed mixed from
+**      (seed, pass), so every eye-side random stream is keyed by (seed,
+**      pass, pixel);
+**   3. the pass image added into a double-precision sum buffer.
+** The map of pass i is freed before pass i+1 is built, so memory is one
+** map plus two images whatever the pass count.
+**
+** Determinism: the maps and the eye pass do not depend on the thread
+** count, and each pixel's sum adds the passes in order, so the image does
+** not either. A checkpoint stores the sum buffer bit for bit; resuming
+** continues with the next pass number, so checkpoint + resume gives the
+** image an uninterrupted run with the same total passes gives.
+**
+** Checkpoint file (native byte order; a checkpoint is for the machine that
+** wrote it): "IRISPPM1", then int32 width, height, passes; uint64 seed,
+** photons; double seconds; then width·height·4 doubles (the RGBA sums,
+** row 0 first). Written to FILE.tmp, then renamed.
+*/
+#include "config.h"
+
+#include "render/progressive.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "photon/photon.h"
+#include "render/eyepass.h"
+#include "util/mem.h"
+#include "util/rng.h"
+#include "util/thread.h"
+
+/* Seconds between checkpoint writes during a run (and one at the end). */
+#define CHECKPOINT_EVERY_S 10.0
+
+static const char CKPT_MAGIC[8] = { 'I', 'R', 'I', 'S', 'P', 'P', 'M', '1' };
+
+bool progressive_wanted(const iris_render_options *opts)
+{
+    return opts->passes > 1 || opts->time_limit > 0.0 ||
+           (opts->resume && opts->resume[0]);
+}
+
+double progressive_radius_scale(int pass)
+{
+    if (pass <= 0)
+        return 1.0;
+    const double a = PROGRESSIVE_ALPHA;
+    if (pass < 1000) {
+        double prod = 1.0;
+        for (int k = 1; k <= pass; k++)
+            prod *= (k + a) / (k + 1.0);
+        return sqrt(prod);
+    }
+    /* prod_{k=1}^{p} (k+a)/(k+1) = Gamma(p+1+a) / (Gamma(1+a)·Gamma(p+2)) */
+    double lp = lgamma(pass + 1.0 + a) - lgamma(1.0 + a) - lgamma(pass + 2.0);
+    return sqrt(exp(lp));
+}
+
+/* err = "path: msg" */
+static void set_err(char *err, size_t errlen, const char *path,
+                    const char *msg)
+{
+    if (err && errlen)
+        snprintf(err, errlen, "%s: %s", path, msg);
+}
+
+/* The accumulation: what a checkpoint holds. */
+struct accum {
+    int width, height, passes;
+    uint64_t seed, photons;
+    double seconds;            /* wall time of the runs before this one */
+    double *sum;               /* width·height·4 */
+};
+
+static size_t accum_len(const struct accum *a)
+{
+    return (size_t)a->width * (size_t)a->height * 4;
+}
+
+static enum iris_status ckpt_write(const struct accum *a, const char *path)
+{
+    size_t n = strlen(path) + 5;
+    char *tmp = iris_malloc(n);
+    if (!tmp)
+        return IRIS_ENOMEM;
+    snprintf(tmp, n, "%s.tmp", path);
+    FILE *f = fopen(tmp, "wb");
+    bool ok = f != NULL;
+    int32_t dims[3] = { a->width, a->height, a->passes };
+    uint64_t u[2] = { a->seed, a->photons };
+    ok = ok && fwrite(CKPT_MAGIC, 1, 8, f) == 8 &&
+         fwrite(dims, sizeof dims, 1, f) == 1 &&
+         fwrite(u, sizeof u, 1, f) == 1 &&
+         fwrite(&a->seconds, sizeof a->seconds, 1, f) == 1 &&
+         fwrite(a->sum, sizeof *a->sum, accum_len(a), f) == accum_len(a);
+    if (f && fclose(f) != 0)
+        ok = false;
+    if (ok && rename(tmp, path) != 0)
+        ok = false;
+    if (!ok)
+        remove(tmp);
+    iris_free(tmp);
+    return ok ? IRIS_OK : IRIS_EIO;
+}
+
+/* Reads a checkpoint into 'a' (its size and seed already set: they must
+** match). */
+static enum iris_status ckpt_read(struct accum *a, const char *path,
+                                  char *err, size_t errlen)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f) {
+        set_err(err, errlen, path, "cannot read the checkpoint");
+        return IRIS_EIO;
+    }
+    char magic[8];
+    int32_t dims[3];
+    uint64_t u[2];
+    double sec;
+    bool ok = fread(magic, 1, 8, f) == 8 &&
+              memcmp(magic, CKPT_MAGIC, 8) == 0 &&
+              fread(dims, sizeof dims, 1, f) == 1 &&
+              fread(u, sizeof u, 1, f) == 1 &&
+              fread(&sec, sizeof sec, 1, f) == 1;
+    if (!ok) {
+        fclose(f);
+        set_err(err, errlen, path, "not an iris checkpoint");
+        return IRIS_EIO;
+    }
+    if (dims[0] != a->width || dims[1] != a->height || u[0] != a->seed ||
+        dims[2] < 0 || !(sec >= 0.0) || !isfinite(sec)) {
+        fclose(f);
+        set_err(err, errlen, path,
+                "the checkpoint was made with another image size or seed");
+        return IRIS_EIO;
+    }
+    ok = fread(a->sum, sizeof *a->sum, accum_len(a), f) == accum_len(a);
+    char extra;
+    ok = ok && fread(&extra, 1, 1, f) == 0;
+    fclose(f);
+    for (size_t i = 0; ok && i < accum_len(a); i++)
+        ok = isfinite(a->sum[i]);
+    if (!ok) {
+        set_err(err, errlen, path, "truncated or damaged checkpoint");
+        return IRIS_EIO;
+    }
+    a->passes = dims[2];
+    a->photons = u[1];
+    a->seconds = sec;
+    return IRIS_OK;
+}
+
+/* out = sum / passes (a partial first pass is left as it is). */
+static void accum_average(const struct accum *a, iris_image *out)
+{
+    if (a->passes <= 0)
+        return;
+    double inv = 1.0 / a->passes;
+    size_t n = accum_len(a);
+    for (size_t i = 0; i < n; i++)
+        out->pixels[i] = (float)(a->sum[i] * inv);
+}
+
+/* The seed of the eye pass of pass 'pass': the user's for pass 0. */
+static uint64_t pass_seed(uint64_t seed, int pass)
+{
+    if (pass == 0)
+        return seed;
+    return rng_mix64(seed ^ rng_mix64(0x70617373ULL ^ rng_mix64(
+                                          (uint64_t)pass)));
+}
+
+/* Replaces *map by pass 'pass''s map. */
+static enum iris_status build_map(struct tracer *tr, const struct accel *acc,
+                                  const struct mat_ctx *mat, int threads,
+                                  uint64_t seed, int pass,
+                                  struct photon_map **map,
+                                  struct photon_stats *ps)
+{
+    photon_map_destroy(*map);
+    *map = NULL;
+    tr->photon_map = NULL;
+    struct photon_options po;
+    memset(&po, 0, sizeof po);
+    po.threads = threads;
+    po.seed = seed;
+    po.pass = pass;
+    po.radius_scale = progressive_radius_scale(pass);
+    po.mat = mat;
+    memset(ps, 0, sizeof *ps);
+    enum iris_status st = photon_map_build(tr->scene, acc, &po, map, ps);
+    tr->photon_map = *map;
+    return st;
+}
+
+/* Should the loop start pass 'pass'? */
+static bool another_pass(const iris_render_options *opts, int pass,
+                         int first, double elapsed, double last_dt)
+{
+    if (opts->interrupt && *opts->interrupt)
+        return false;
+    if (opts->passes > 0 && pass >= opts->passes)
+        return false;
+    if (opts->passes <= 0 && opts->time_limit <= 0.0)
+        return pass < 1; /* --resume alone: one more pass */
+    /* The time limit: stop when the next pass, as long as the last one,
+    ** would end past it; this run always does at least one pass */
+    if (opts->time_limit > 0.0 && pass > first &&
+        elapsed + last_dt > opts->time_limit)
+        return false;
+    return true;
+}
+
+enum iris_status progressive_run(struct tracer *tr, const struct accel *acc,
+                                 const struct mat_ctx *mat, int threads,
+                                 const iris_render_options *opts,
+                                 double t_start, struct photon_map **map,
+                                 iris_image *out, iris_render_stats *stats,
+                                 double *photon_s, char *err, size_t errlen)
+{
+    *photon_s = 0.0;
+    struct accum a;
+    memset(&a, 0, sizeof a);
+    a.width = out->width;
+    a.height = out->height;
+    a.seed = opts->seed;
+    a.photons = stats ? stats->photons_emitted : 0;
+    a.sum = iris_calloc(accum_len(&a), sizeof *a.sum);
+    iris_image img;
+    memset(&img, 0, sizeof img);
+    enum iris_status st = a.sum ? iris_image_init(&img, a.width, a.height)
+                                : IRIS_ENOMEM;
+    bool photons = tr->photon_shade != NULL;
+    if (st == IRIS_OK && opts->resume && opts->resume[0]) {
+        st = ckpt_read(&a, opts->resume, err, errlen);
+        /* pass 0's map (built by the caller) is not needed any more */
+        if (st == IRIS_OK && photons && a.passes > 0) {
+            photon_map_destroy(*map);
+            *map = NULL;
+            tr->photon_map = NULL;
+        }
+    }
+    if (st != IRIS_OK) {
+        iris_free(a.sum);
+        iris_image_fini(&img);
+        if (st == IRIS_ENOMEM)
+            set_err(err, errlen, "progressive", "out of memory");
+        return st;
+    }
+    if (a.passes > 0)
+        accum_average(&a, out);
+
+    const uint64_t seed0 = tr->seed;
+    int first = a.passes;
+    double last_ckpt = par_now(), last_dt = 0.0;
+    uint64_t stored = stats ? stats->photons_stored : 0;
+    uint64_t bytes = stats ? stats->photon_bytes : 0;
+    iris_render_stats es_sum;
+    memset(&es_sum, 0, sizeof es_sum);
+    for (int p = first;
+         another_pass(opts, p, first, par_now() - t_start, last_dt); p++) {
+        double tp = par_now();
+        if (photons && (p > 0 || *map == NULL)) {
+            struct photon_stats ps;
+            st = build_map(tr, acc, mat, threads, opts->seed, p, map, &ps);
+            if (st != IRIS_OK)
+                break;
+            a.photons += (uint64_t)ps.shot;
+            stored = (uint64_t)ps.stored;
+            if ((uint64_t)ps.bytes > bytes)
+                bytes = (uint64_t)ps.bytes;
+            *photon_s += par_now() - tp;
+        }
+        iris_render_options po = *opts;
+        po.progress = NULL;
+        po.plan_out = NULL;
+        po.seed = pass_seed(opts->seed, p);
+        if (p > 0 && po.aa == IRIS_AA_NONE) {
+            po.aa = IRIS_AA_STRATIFIED; /* one jittered sample per pixel */
+            po.aa_depth = 1;
+        }
+        tr->seed = po.seed;
+        iris_render_stats es;
+        memset(&es, 0, sizeof es);
+        st = eyepass_run(tr, &po, threads, &img, &es);
+        es_sum.rays_traced += es.rays_traced;
+        es_sum.nan_pixels += es.nan_pixels;
+        es_sum.threads = es.threads;
+        if (st != IRIS_OK) {
+            if (st == IRIS_EINTR && a.passes == 0) /* the partial image */
+                memcpy(out->pixels, img.pixels,
+                       accum_len(&a) * sizeof *img.pixels);
+            break;
+        }
+        size_t n = accum_len(&a);
+        for (size_t i = 0; i < n; i++)
+            a.sum[i] += img.pixels[i];
+        a.passes++;
+        accum_average(&a, out);
+        double now = par_now();
+        last_dt = now - tp;
+        if (opts->on_pass) {
+            iris_pass_info info = { a.passes, a.seconds + (now - t_start),
+                                    a.photons,
+                                    progressive_radius_scale(p) };
+            opts->on_pass(opts->on_pass_user, out, &info);
+        }
+        if (opts->progress)
+            opts->progress(opts->progress_user, "passes",
+                           opts->passes > 0
+                               ? (double)a.passes / opts->passes
+                               : fmin(1.0, (now - t_start) /
+                                               opts->time_limit));
+        if (opts->checkpoint && opts->checkpoint[0] &&
+            now - last_ckpt >= CHECKPOINT_EVERY_S) {
+            double keep = a.seconds;
+            a.seconds += now - t_start;
+            enum iris_status cs = ckpt_write(&a, opts->checkpoint);
+            a.seconds = keep;
+            last_ckpt = now;
+            if (cs != IRIS_OK) {
+                set_err(err, errlen, opts->checkpoint,
+                        "cannot write the checkpoint");
+                st = cs;
+                break;
+            }
+        }
+    }
+    tr->seed = seed0;
+    if (st == IRIS_OK && opts->interrupt && *opts->interrupt)
+        st = IRIS_EINTR;
+    /* The checkpoint at the end, of the passes completed (interrupted or
+    ** not) */
+    if ((st == IRIS_OK || st == IRIS_EINTR) && opts->checkpoint &&
+        opts->checkpoint[0] && a.passes > 0) {
+        a.seconds += par_now() - t_start;
+        if (ckpt_write(&a, opts->checkpoint) != IRIS_OK) {
+            set_err(err, errlen, opts->checkpoint,
+                    "cannot write the checkpoint");
+            st = IRIS_EIO;
+        }
+    }
+    if (stats) {
+        stats->passes = a.passes;
+        stats->photons_emitted = a.photons;
+        stats->photons_stored = stored;
+        stats->photon_bytes = bytes;
+        stats->rays_traced += es_sum.rays_traced;
+        stats->nan_pixels += es_sum.nan_pixels;
+        stats->threads = es_sum.threads ? es_sum.threads : threads;
+    }
+    iris_free(a.sum);
+    iris_image_fini(&img);
+    return st;
+}

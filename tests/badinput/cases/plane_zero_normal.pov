@@ -1,0 +1,3 @@
+// expect: 2 3
+#version 3.7;
+plane { <0, 0, 0>, 1 pigment { rgb 1 } }

@@ -1,0 +1,3 @@
+// expect: 2 3
+#version 3.7;
+#declare X = sqrt(-1);

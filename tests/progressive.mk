@@ -1,0 +1,7 @@
+## tests/progressive.mk: progressive photon mapping (issue 6) end to end:
+## determinism, checkpoint/resume, interruption, the error log.
+check_PROGRAMS += tests/progressive/imgdiff
+tests_progressive_imgdiff_SOURCES = tests/progressive/imgdiff.c
+tests_progressive_imgdiff_LDADD = libiris_core.la $(IRIS_LIBS)
+TESTS += tests/progressive/progressive.sh
+EXTRA_DIST += tests/progressive/progressive.sh tests/progressive/ball.pov

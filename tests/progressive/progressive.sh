@@ -1,0 +1,103 @@
+#!/bin/sh
+# SPDX-License-Identifier: MIT
+# tests/progressive/progressive.sh: progressive photon mapping (issue 6)
+# through the iris command: --passes, --time-limit, --checkpoint,
+# --resume, --reference, --error-log, SIGINT. Exact comparisons use
+# imgdiff (largest absolute difference of linear values, 0 = identical).
+. "$top_srcdir/tests/tap.sh"
+tap_plan 17
+scene="$top_srcdir/tests/progressive/ball.pov"
+imgdiff="$top_builddir/tests/progressive/imgdiff"
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+r() { "$IRIS" -q "$scene" +W24 +H24 "$@"; }
+
+# --passes 1 is the ordinary render
+r -o "$tmp/plain.exr" && r -o "$tmp/p1.exr" --passes 1
+tap_is "--passes 1 gives the ordinary render" \
+    "$("$imgdiff" "$tmp/plain.exr" "$tmp/p1.exr")" "0"
+
+# Passes average: 4 passes differ from 1 (new photons, new jitter)
+r -o "$tmp/p4.exr" --passes 4 --stats "$tmp/s4.json"
+d=$("$imgdiff" "$tmp/p1.exr" "$tmp/p4.exr")
+tap_ok "4 passes differ from 1" test "$d" != "0"
+tap_ok "--stats counts the passes" grep -q '"passes": 4' "$tmp/s4.json"
+
+# The image does not depend on the thread count
+r -o "$tmp/p4t1.exr" --passes 4 --threads 1
+r -o "$tmp/p4t2.exr" --passes 4 --threads 2
+tap_is "same image for 1 and 2 threads" \
+    "$("$imgdiff" "$tmp/p4t1.exr" "$tmp/p4t2.exr")" "0"
+tap_is "... and for the default thread count" \
+    "$("$imgdiff" "$tmp/p4.exr" "$tmp/p4t2.exr")" "0"
+
+# Checkpoint + resume = an uninterrupted run with the same total passes
+r -o "$tmp/c2.exr" --passes 2 --checkpoint "$tmp/run.ckpt"
+tap_ok "--checkpoint writes the accumulation" test -s "$tmp/run.ckpt"
+r -o "$tmp/c4.exr" --passes 4 --resume "$tmp/run.ckpt" --threads 1
+tap_is "resume continues exactly (2 + 2 passes = 4 passes)" \
+    "$("$imgdiff" "$tmp/p4.exr" "$tmp/c4.exr")" "0"
+"$IRIS" -q "$scene" +W20 +H24 -o "$tmp/bad.exr" --resume "$tmp/run.ckpt" \
+    2>"$tmp/err"
+tap_is "a checkpoint of another size is refused (exit 1)" "$?" "1"
+printf 'not a checkpoint' >"$tmp/junk.ckpt"
+r -o "$tmp/bad.exr" --resume "$tmp/junk.ckpt" 2>"$tmp/err"
+rc=$?
+grep -q "not an iris checkpoint" "$tmp/err"
+tap_is "a damaged checkpoint is refused with a message" "$rc:$?" "1:0"
+
+# Error log against a reference: an independent long run (another seed).
+# The relative RMSE must fall: 8 passes below 0.8 of 1 pass (expected
+# ratio about 8^-1/3 = 0.5 for bias and noise alike, and the reference's
+# own error, ~1/3 of one pass, is common to both).
+r -o "$tmp/ref.exr" --passes 24 --seed 7
+r -o "$tmp/e.exr" --passes 8 --reference "$tmp/ref.exr" \
+    --error-log "$tmp/err.csv"
+tap_is "the error log has a header and one line a pass" \
+    "$(head -1 "$tmp/err.csv"),$(($(wc -l <"$tmp/err.csv") - 1))" \
+    "time_s,passes,photons,rmse,rel_rmse,bias,8"
+tap_ok "... with passes 1..8 and increasing photons and time" awk -F, '
+    NR > 1 { if ($2 != NR - 1 || $3 <= p || $1 < t || NF != 6) bad = 1;
+             p = $3; t = $1 } END { exit bad }' "$tmp/err.csv"
+first=$(awk -F, 'NR == 2 { print $5 }' "$tmp/err.csv")
+last=$(awk -F, 'END { print $5 }' "$tmp/err.csv")
+tap_ok "relative RMSE falls: $first (1 pass) -> $last (8)" \
+    awk -v a="$first" -v b="$last" 'BEGIN { exit !(b < 0.8 * a && b > 0) }'
+r -o "$tmp/e.exr" --error-log "$tmp/x.csv" 2>/dev/null
+tap_is "--error-log without --reference is a usage error" "$?" "2"
+
+# --time-limit stops on time
+t0=$(date +%s)
+r -o "$tmp/t.exr" --time-limit 2 --stats "$tmp/t.json"
+t1=$(date +%s)
+n=$(sed -n 's/.*"passes": \([0-9]*\).*/\1/p' "$tmp/t.json")
+tap_ok "--time-limit 2 ran $n passes in $((t1 - t0)) s" \
+    test "$n" -ge 2 -a $((t1 - t0)) -le 6
+
+# SIGINT: the average so far is written, exit 130, checkpoint usable
+# (iris itself in the background: a subshell running it would ignore
+# SIGINT, as background jobs of a non-interactive shell do)
+"$IRIS" -q "$scene" +W24 +H24 -o "$tmp/int.exr" --time-limit 60 \
+    --checkpoint "$tmp/int.ckpt" &
+pid=$!
+i=0
+while [ ! -s "$tmp/int.exr" ] && [ $i -lt 300 ]; do sleep 0.1; i=$((i + 1)); done
+sleep 0.5
+kill -INT $pid
+wait $pid
+tap_is "SIGINT exits 130" "$?" "130"
+tap_ok "... after writing the image and the checkpoint" \
+    test -s "$tmp/int.exr" -a -s "$tmp/int.ckpt"
+
+# Memory stays flat as passes accumulate: a map of ~1e5 photons (2 MB
+# packed, 4 MB raw while building) freed each pass; 8 passes may not
+# use 6 MB more than 2.
+"$IRIS" -q "$scene" +W8 +H8 Declare=Photons=80000 --passes 2 \
+    -o "$tmp/m.exr" --stats "$tmp/m2.json"
+"$IRIS" -q "$scene" +W8 +H8 Declare=Photons=80000 --passes 8 \
+    -o "$tmp/m.exr" --stats "$tmp/m8.json"
+m2=$(sed -n 's/.*"peak_rss_bytes": \([0-9]*\).*/\1/p' "$tmp/m2.json")
+m8=$(sed -n 's/.*"peak_rss_bytes": \([0-9]*\).*/\1/p' "$tmp/m8.json")
+tap_ok "flat memory: peak RSS $m2 (2 passes), $m8 (8 passes)" \
+    test $((m8 - m2)) -lt 6000000
+[ "$tap_failed" -eq 0 ]
