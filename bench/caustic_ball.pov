@@ -13,6 +13,8 @@
 #version 3.7;
 #ifndef (Photons) #declare Photons = 100000; #end
 #ifndef (Spacing) #declare Spacing = 0.01; #end
+// Fresnel=1: POV-Ray weighs refracted photons by 1 - F (iris always does)
+#ifndef (Fresnel) #declare Fresnel = 0; #end
 #declare Elev = radians(40);
 global_settings {
   assumed_gamma 1
@@ -38,7 +40,12 @@ plane { y, 0
 }
 sphere { <0, 2.5, 0>, 1
   pigment { color rgbf <1, 1, 1, 1> }
-  finish { ambient 0 diffuse 0 }
+  #if (Fresnel)
+    // photons lose the reflected share at each surface, as in nature
+    finish { ambient 0 diffuse 0 reflection { 0, 1 fresnel } conserve_energy }
+  #else
+    finish { ambient 0 diffuse 0 }
+  #end
   interior { ior 1.5 }
   photons { target refraction on reflection on collect off }
 }

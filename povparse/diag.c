@@ -298,6 +298,19 @@ _Noreturn void pp_unexpected(pp_state *ps, const pp_token *at,
 
 void pp_enter(pp_state *ps, const pp_token *at)
 {
-    if (++ps->depth > PP_MAX_DEPTH)
-        pp_error(ps, at, "nested more than %d deep", PP_MAX_DEPTH);
+    if (++ps->depth == 1 && at) {
+        ps->outer_file = at->file;
+        ps->outer_off = at->off;
+        ps->outer_len = at->len;
+    }
+    /* The stack grows down on every platform iris builds for; the
+    ** distance from the parse's first frame is the stack in use. Which
+    ** limit is met first depends on the build's frame sizes, so both
+    ** give the same error at the outermost construct. */
+    uintptr_t here = (uintptr_t)__builtin_frame_address(0);
+    if (ps->depth > PP_MAX_DEPTH ||
+        (ps->stack_base > here && ps->stack_base - here > ps->stack_limit))
+        pp_error_at(ps, ps->outer_file, ps->outer_off, ps->outer_len,
+                    "nested too deep (the parser allows %d levels, fewer "
+                    "when each level uses much of its stack)", PP_MAX_DEPTH);
 }

@@ -443,6 +443,9 @@ static void do_fopen(pp_state *ps)
 {
     ident(ps, "a file identifier");
     pp_token name = ps->tok;
+    pp_next(ps);
+    pp_token path_tok = ps->tok;
+    pp_unget(ps);
     const char *path = pp_string(ps);
     pp_token mode = ps->tok;
     pp_next(ps);
@@ -465,6 +468,11 @@ static void do_fopen(pp_state *ps)
                      path);
         else
             snprintf(full, sizeof full, "%s", path);
+        if (write && !pp_write_allowed(ps, full))
+            pp_error(ps, &path_tok, "writing \"%s\" is refused: scenes may "
+                     "write only inside their own directory", path);
+        if (!write)
+            pp_check_read(ps, &path_tok, full);
         fh->fp = fopen(full, mode.kind == T_READ ? "r" :
                              mode.kind == T_WRITE ? "w" : "a");
         if (!fh->fp)

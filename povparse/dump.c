@@ -261,6 +261,10 @@ static void object(FILE *o, int d, const iris_object *ob,
         { ob->photon_target, "photon_target" },
         { !ob->photon_collect, "photon_collect_off" },
         { ob->photon_pass_through, "photon_pass_through" },
+        { ob->photon_refraction == IRIS_ON, "photon_refraction_on" },
+        { ob->photon_refraction == IRIS_OFF, "photon_refraction_off" },
+        { ob->photon_reflection == IRIS_ON, "photon_reflection_on" },
+        { ob->photon_reflection == IRIS_OFF, "photon_reflection_off" },
     };
     for (size_t i = 0; i < sizeof flags / sizeof flags[0]; i++)
         if (flags[i].v)
@@ -364,10 +368,18 @@ static void object(FILE *o, int d, const iris_object *ob,
         fprintf(o, "children %d\n", ob->u.csg.n_children);
         break;
     case IRIS_OBJ_JULIA_FRACTAL:
-        fprintf(o, "c <%.6g, %.6g, %.6g, %.6g> type %d iterations %d "
-                "precision %.6g\n", ob->u.julia.data[0], ob->u.julia.data[1],
+        fprintf(o, "c <%.6g, %.6g, %.6g, %.6g> type %d fn %d iterations %d "
+                "precision %.6g slice <%.6g, %.6g, %.6g, %.6g> %.6g",
+                ob->u.julia.data[0], ob->u.julia.data[1],
                 ob->u.julia.data[2], ob->u.julia.data[3], ob->u.julia.type,
-                ob->u.julia.iterations, ob->u.julia.precision);
+                ob->u.julia.fn, ob->u.julia.iterations,
+                ob->u.julia.precision, ob->u.julia.slice.x,
+                ob->u.julia.slice.y, ob->u.julia.slice.z,
+                ob->u.julia.data[5], ob->u.julia.distance);
+        if (ob->u.julia.fn == IRIS_JULIA_PWR)
+            fprintf(o, " pwr <%.6g, %.6g>", ob->u.julia.data[6],
+                    ob->u.julia.data[7]);
+        fputc('\n', o);
         break;
     case IRIS_OBJ_BICUBIC_PATCH:
         fprintf(o, "type %d flatness %.6g steps %d %d last ",

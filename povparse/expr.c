@@ -17,6 +17,7 @@
 #include <string.h>
 #include <sys/stat.h>
 
+#include "material/noise.h"
 #include "math/vec3.h"
 #include "pp.h"
 
@@ -70,13 +71,6 @@ void pp_value_promote(pp_value *v, int dim)
     v->dim = dim;
     if (v->kind == V_FLOAT)
         v->kind = dim == 5 ? V_COLOUR : V_VECTOR;
-}
-
-double pp_srgb_decode(double c)
-{
-    if (c <= 0.04045)
-        return c / 12.92;
-    return pow((c + 0.055) / 1.055, 2.4);
 }
 
 static void need_numeric(pp_state *ps, const pp_token *at, const pp_value *v)
@@ -275,42 +269,15 @@ static const iris_object *object_arg(pp_state *ps)
     return o;
 }
 
-/* Evaluates a spline at 't' (linear between keys; cubic splines use the
-** Catmull-Rom form through the keys). */
+/* A spline's value at 't' (POV-Ray's definitions, src/fn/spline.c). */
 static pp_value spline_eval(const pp_spline *s, double t)
 {
     pp_value v;
     memset(&v, 0, sizeof v);
-    v.kind = s->dim == 1 ? V_FLOAT : V_VECTOR;
-    v.dim = s->dim;
-    if (s->n == 0)
-        return v;
-    int i = 0;
-    if (t <= s->t[0] || s->n == 1) {
-        memcpy(v.v, s->p[0], sizeof v.v);
-        return v;
-    }
-    if (t >= s->t[s->n - 1]) {
-        memcpy(v.v, s->p[s->n - 1], sizeof v.v);
-        return v;
-    }
-    while (i + 1 < s->n && s->t[i + 1] < t)
-        i++;
-    double t0 = s->t[i], t1 = s->t[i + 1];
-    double u = t1 > t0 ? (t - t0) / (t1 - t0) : 0;
-    for (int k = 0; k < 5; k++) {
-        double p1 = s->p[i][k], p2 = s->p[i + 1][k];
-        if (s->type >= 1 && s->n >= 3) {
-            double p0 = i > 0 ? s->p[i - 1][k] : 2 * p1 - p2;
-            double p3 = i + 2 < s->n ? s->p[i + 2][k] : 2 * p2 - p1;
-            double u2 = u * u, u3 = u2 * u;
-            v.v[k] = 0.5 * ((2 * p1) + (-p0 + p2) * u +
-                            (2 * p0 - 5 * p1 + 4 * p2 - p3) * u2 +
-                            (-p0 + 3 * p1 - 3 * p2 + p3) * u3);
-        } else {
-            v.v[k] = p1 + (p2 - p1) * u;
-        }
-    }
+    v.kind = s->dim <= 1 ? V_FLOAT : V_VECTOR;
+    v.dim = s->dim < 1 ? 1 : s->dim;
+    iris_fn_spline view = pp_spline_view(s);
+    iris_fn_spline_eval(&view, t, v.v);
     return v;
 }
 
@@ -389,7 +356,7 @@ static pp_value colour_body(pp_state *ps)
             }
             if (srgb)
                 for (int i = 0; i < 3; i++)
-                    c.v[i] = pp_srgb_decode(c.v[i]);
+                    c.v[i] = pp_srgb_to_working(ps, &at, c.v[i]);
             started = true;
         }
         if (pp_next_is_directive(ps))
@@ -482,6 +449,21 @@ static pp_value call_fn(pp_state *ps, const iris_fn *fn)
         memset(&v, 0, sizeof v);
         v.kind = fn->n_results == 5 ? V_COLOUR : V_VECTOR;
         v.dim = fn->n_results;
+        /* A pigment, spline or transform function: its result, one
+        ** component at a time */
+        const iris_fn_insn *body = fn->code;
+        if (fn->n_code == 1 && (body->op == IRIS_FN_SPLINE ||
+                                body->op == IRIS_FN_TRANSFORM ||
+                                (body->op == IRIS_FN_PATTERN &&
+                                 body->pigment))) {
+            for (int k = 0; k < fn->n_results && k < 5; k++) {
+                iris_fn_insn in = fn->code[0];
+                in.arg = k;
+                in.nargs = 0;
+                iris_fn one = { fn->n_params, NULL, 1, &in, 1, 1 };
+                v.v[k] = iris_fn_eval(&one, args, n);
+            }
+        }
         return v;
     }
     return fval(iris_fn_eval(fn, args, n));
@@ -723,17 +705,22 @@ static pp_value factor(pp_state *ps)
         return vval(3, p.x, p.y, p.z, 0);
     }
     case T_VTURBULENCE: {
+        /* vturbulence(lambda, omega, octaves, <p>): POV-Ray's DTurbulence,
+        ** octaves clamped to 1..10 as POV-Ray does */
         lparen(ps);
-        pp_float(ps);
+        struct noise_turb t;
+        t.lambda = pp_float(ps);
         comma(ps);
-        pp_float(ps);
+        t.omega = pp_float(ps);
         comma(ps);
-        pp_float(ps);
+        double oct = pp_float(ps);
+        t.octaves = !(oct >= 1) ? 1 : oct > 10 ? 10 : (int)oct;
         comma(ps);
-        pp_vector(ps);
+        iris_vec3 p = pp_vector(ps);
+        pp_accept(ps, T_COMMA);
         rparen(ps);
-        pp_warn_once(ps, &at, T_VTURBULENCE, "vturbulence (returns <0,0,0>)");
-        return vval(3, 0, 0, 0, 0);
+        vec3 d = noise_dturbulence(p, &t);
+        return vval(3, d.x, d.y, d.z, 0);
     }
     case T_SEED: {
         double s = arg1(ps);
@@ -821,7 +808,8 @@ static pp_value factor(pp_state *ps)
             snprintf(full, sizeof full, "%s/%s", ps->files[at.file].dir, s);
         else
             snprintf(full, sizeof full, "%s", s);
-        return fval(stat(full, &st) == 0);
+        /* A file the scene may not read does not exist for it. */
+        return fval(stat(full, &st) == 0 && pp_read_allowed(ps, full));
     }
     case T_MIN_EXTENT: case T_MAX_EXTENT: {
         const iris_object *o = object_arg(ps);

@@ -7,7 +7,11 @@
 ** resolved at compile time: parameters become PARAM, declared floats are
 ** folded to constants (POV-Ray does the same: a function captures values,
 ** not variables), other functions become CALL, and internal(N) becomes
-** INTERNAL, which passes the caller's arguments through.
+** INTERNAL, which passes the caller's arguments through. sum() and prod()
+** compile their body as a function of one more parameter (the index);
+** pattern and pigment functions become one PATTERN instruction, and a
+** call of a pigment function with .red/.gray/... evaluates the pigment
+** in place.
 */
 #include "config.h"
 
@@ -63,7 +67,10 @@ static int param_index(fnc *c, const pp_token *t)
         case T_X: case T_U: return 0;
         case T_Y: case T_V: return 1;
         case T_Z: return 2;
-        default: return -1;
+        default:
+            if (c->n_params <= 3)
+                return -1;
+            break; /* a sum()/prod() index after x, y, z */
         }
     }
     if (t->kind != T_IDENT && t->kind < T_KW_FIRST)
@@ -131,6 +138,61 @@ static int builtin_of(int k, int *arity)
     }
 }
 
+/* The result index that .red, .x, .gray ... select of a pigment
+** function: 0..4 = r, g, b, f, t; 5 = gray; -1 for anything else. */
+static int component_of(int k)
+{
+    switch (k) {
+    case T_RED: case T_X: case T_U: return 0;
+    case T_GREEN: case T_Y: case T_V: return 1;
+    case T_BLUE: case T_Z: return 2;
+    case T_FILTER: case T_T: return 3;
+    case T_TRANSMIT: return 4;
+    case T_GRAY: return 5;
+    default: return -1;
+    }
+}
+
+static iris_fn *finish_fn(fnc *c, int n_results);
+
+/* sum(i, a, b, body) and prod(i, a, b, body): the body is compiled as a
+** function of this one's parameters plus i, which the SUM instruction
+** calls for i = a..b. */
+static void sum_prod(fnc *c, const pp_token *at)
+{
+    pp_state *ps = c->ps;
+    pp_expect(ps, T_LPAREN, "'('");
+    ps->no_expand++;
+    pp_next(ps);
+    ps->no_expand--;
+    pp_token name = ps->tok;
+    if (name.kind != T_IDENT && name.kind < T_KW_FIRST)
+        pp_error(ps, &name, "expected the name of the %s() index",
+                 lex_keyword_name(at->kind));
+    if (c->n_params >= 32)
+        pp_error(ps, &name, "too many function parameters");
+    pp_expect(ps, T_COMMA, "','");
+    cexpr(c);
+    pp_expect(ps, T_COMMA, "','");
+    cexpr(c);
+    pp_expect(ps, T_COMMA, "','");
+    fnc body;
+    memset(&body, 0, sizeof body);
+    body.ps = ps;
+    body.default_params = c->default_params;
+    body.n_params = c->n_params + 1;
+    memcpy(body.params, c->params, (size_t)c->n_params * sizeof c->params[0]);
+    body.params[c->n_params] = pp_strdup(ps, pp_tok_text(ps, &name),
+                                         name.len);
+    pp_enter(ps, at);
+    cexpr(&body);
+    pp_leave(ps);
+    pp_expect(ps, T_RPAREN, "')'");
+    iris_fn *fn = finish_fn(&body, 1);
+    emit(c, IRIS_FN_SUM, at->kind == T_PROD, c->n_params, 0, -1);
+    c->code[c->n - 1].callee = fn;
+}
+
 static void cfactor(fnc *c)
 {
     pp_state *ps = c->ps;
@@ -196,21 +258,39 @@ static void cfactor(fnc *c)
         return;
     }
     case T_PROD: case T_SUM:
-        pp_error(ps, &at, "%s() in functions is not supported",
-                 lex_keyword_name(k));
+        sum_prod(c, &at);
+        return;
     case T_IDENT: {
         pp_value v = at.val;
         if (v.kind == V_FUNCTION) {
             int n = args(c);
             emit(c, IRIS_FN_CALL, 0, n, 0, 1 - n);
             c->code[c->n - 1].callee = v.u.fn;
-            /* F(x,y,z).gray and friends of colour functions: the
-            ** evaluator returns the first result only */
+            /* F(x,y,z).red and friends of pigment functions evaluate the
+            ** pigment directly; other results are the first one */
             if (!pp_next_is_directive(ps) && pp_accept(ps, T_DOT)) {
                 pp_next(ps);
-                if (v.u.fn->n_results == 1)
+                int comp = component_of(ps->tok.kind);
+                const iris_fn_insn *body = v.u.fn->code;
+                int want = body->op == IRIS_FN_SPLINE ? 1 : 3;
+                bool inline_op = v.u.fn->n_code == 1 && comp >= 0 &&
+                    (body->op == IRIS_FN_SPLINE ||
+                     body->op == IRIS_FN_TRANSFORM ||
+                     (body->op == IRIS_FN_PATTERN && body->pigment)) &&
+                    (comp < v.u.fn->n_results || body->pigment);
+                if (inline_op && n == want) {
+                    /* the component evaluated in place, at the call's
+                    ** arguments (the op pops them) */
+                    iris_fn_insn *in = &c->code[c->n - 1];
+                    *in = *body;
+                    in->arg = comp;
+                    in->nargs = n;
+                } else if (v.u.fn->n_results == 1) {
                     pp_warn_once(ps, &ps->tok, T_DOT, "'.' after a float "
                                  "function call");
+                } else if (comp < 0) {
+                    pp_unexpected(ps, &ps->tok, "colour component");
+                }
             }
             return;
         }
@@ -414,19 +494,50 @@ iris_fn *pp_function(pp_state *ps)
     pp_next(ps);
     int k = ps->tok.kind;
     if (k == T_PATTERN || k == T_PIGMENT) {
-        /* pattern and pigment functions: evaluated by the renderer's
-        ** pattern code; the evaluator here returns 0 for them */
+        /* pattern and pigment functions: src/fn evaluates them with the
+        ** pattern code of src/material */
         iris_pigment *pg = pp_pigment(ps, NULL);
         iris_pattern *pat = pp_alloc(ps, sizeof *pat);
         *pat = pg->pattern;
         emit(&c, IRIS_FN_PATTERN, 0, 0, 0, 1);
         c.code[c.n - 1].pattern = pat;
+        if (k == T_PIGMENT)
+            c.code[c.n - 1].pigment = pg;
         pp_expect(ps, T_RBRACE, "'}'");
         return finish_fn(&c, k == T_PIGMENT ? 5 : 1);
     }
-    if (k == T_TRANSFORM || k == T_SPLINE) {
-        pp_error(ps, &ps->tok, "%s functions are not supported",
-                 lex_keyword_name(k));
+    if (k == T_SPLINE) {
+        /* a spline function: S(t) is the spline's value; the keys are
+        ** copied into the scene arena, where the function lives */
+        pp_spline *sp = pp_spline_block(ps);
+        iris_fn_spline *fs = pp_alloc(ps, sizeof *fs);
+        *fs = pp_spline_view(sp);
+        size_t n = (size_t)(sp->n ? sp->n : 1);
+        double *t = pp_alloc(ps, n * sizeof *t);
+        double (*pv)[5] = pp_alloc(ps, n * sizeof *pv);
+        if (sp->n) {
+            memcpy(t, sp->t, (size_t)sp->n * sizeof *t);
+            memcpy(pv, sp->p, (size_t)sp->n * sizeof *pv);
+        }
+        fs->t = t;
+        fs->p = (const double (*)[5])pv;
+        if (sp->coeff) {
+            double (*cf)[5] = pp_alloc(ps, n * sizeof *cf);
+            memcpy(cf, sp->coeff, (size_t)sp->n * sizeof *cf);
+            fs->coeff = (const double (*)[5])cf;
+        }
+        emit(&c, IRIS_FN_SPLINE, 0, 0, 0, 1);
+        c.code[c.n - 1].spline = fs;
+        pp_expect(ps, T_RBRACE, "'}'");
+        return finish_fn(&c, sp->dim > 1 ? sp->dim : 1);
+    }
+    if (k == T_TRANSFORM) {
+        /* a transform function: F(x,y,z) is the transformed point */
+        iris_transform *xf = pp_transform_block(ps);
+        emit(&c, IRIS_FN_TRANSFORM, 0, 0, 0, 1);
+        c.code[c.n - 1].xform = xf;
+        pp_expect(ps, T_RBRACE, "'}'");
+        return finish_fn(&c, 3);
     }
     pp_unget(ps);
     cexpr(&c);

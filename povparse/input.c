@@ -158,6 +158,8 @@ void pp_open_file(pp_state *ps, const char *path, bool is_include,
             pp_error(ps, at, "cannot find include file \"%s\"", path);
         pp_error(ps, NULL, "cannot open \"%s\"", path);
     }
+    if (at)
+        pp_check_read(ps, at, full);
     int limit = ps->opt.max_include_depth;
     if (is_include && ps->include_depth >= limit)
         pp_error(ps, at, "#include nested more than %d deep (does a file "

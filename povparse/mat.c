@@ -241,8 +241,11 @@ const char *pp_find_file(pp_state *ps, const pp_token *at, const char *name)
 {
     char buf[4096];
     struct stat st;
-    if (name[0] == '/')
+    if (name[0] == '/') {
+        if (stat(name, &st) == 0)
+            pp_check_read(ps, at, name);
         return pp_strdup(ps, name, strlen(name));
+    }
     const char *dirs[66];
     int nd = 0;
     dirs[nd++] = ps->files[at->file].dir;
@@ -255,9 +258,15 @@ const char *pp_find_file(pp_state *ps, const pp_token *at, const char *name)
 #endif
     for (int i = 0; i < nd; i++) {
         int n = snprintf(buf, sizeof buf, "%s/%s", dirs[i], name);
-        if (n > 0 && (size_t)n < sizeof buf && stat(buf, &st) == 0)
+        if (n > 0 && (size_t)n < sizeof buf && stat(buf, &st) == 0) {
+            pp_check_read(ps, at, buf);
             return pp_strdup(ps, buf, (size_t)n);
+        }
     }
+    /* The name as written is opened from the working directory later:
+    ** under the restricted policy it must not lead elsewhere either. */
+    if (stat(name, &st) == 0)
+        pp_check_read(ps, at, name);
     pp_warning(ps, at, "file \"%s\" not found", name);
     return pp_strdup(ps, name, strlen(name));
 }
@@ -380,8 +389,18 @@ static bool pattern_kind(pp_state *ps, iris_pattern *p)
     case T_RADIAL: p->kind = IRIS_PAT_RADIAL; break;
     case T_RIPPLES: p->kind = IRIS_PAT_RIPPLES; break;
     case T_SPHERICAL: p->kind = IRIS_PAT_SPHERICAL; break;
-    case T_SPIRAL1: p->kind = IRIS_PAT_SPIRAL1; p->params[0] = pp_float(ps); break;
-    case T_SPIRAL2: p->kind = IRIS_PAT_SPIRAL2; p->params[0] = pp_float(ps); break;
+    /* POV-Ray's spirals default to triangle_wave (parstxtr.cpp sets
+    ** kWaveType_Triangle with the arms); a later *_wave overrides it. */
+    case T_SPIRAL1:
+        p->kind = IRIS_PAT_SPIRAL1;
+        p->params[0] = pp_float(ps);
+        p->wave = IRIS_WAVE_TRIANGLE;
+        break;
+    case T_SPIRAL2:
+        p->kind = IRIS_PAT_SPIRAL2;
+        p->params[0] = pp_float(ps);
+        p->wave = IRIS_WAVE_TRIANGLE;
+        break;
     case T_SPOTTED: p->kind = IRIS_PAT_SPOTTED; break;
     case T_WAVES: p->kind = IRIS_PAT_WAVES; break;
     case T_WOOD: p->kind = IRIS_PAT_WOOD; p->wave = IRIS_WAVE_TRIANGLE; break;
@@ -454,8 +473,27 @@ static bool pattern_kind(pp_state *ps, iris_pattern *p)
         *p = pg->pattern;
         break;
     }
-    case T_DENSITY_FILE:
-        pp_error(ps, &at, "density_file patterns are not supported");
+    case T_DENSITY_FILE: {
+        /* density_file df3 "file" [interpolate n]: the file is found and
+        ** checked against the read policy, but scene.h has no voxel
+        ** data, so the pattern reads as 0 everywhere (a function
+        ** pattern without a function) */
+        pp_next(ps);
+        if (ps->tok.kind != T_DF3)
+            pp_unexpected(ps, &ps->tok, "density_file (expected df3)");
+        pp_next(ps);
+        pp_token ft = ps->tok;
+        pp_unget(ps);
+        const char *name = pp_string(ps);
+        pp_find_file(ps, &ft, name);
+        if (pp_accept(ps, T_INTERPOLATE))
+            pp_int(ps);
+        pp_warn_once(ps, &at, T_DENSITY_FILE, "density_file (the pattern "
+                     "reads as 0)");
+        p->kind = IRIS_PAT_FUNCTION;
+        p->fn = NULL;
+        break;
+    }
     default:
         return false;
     }
@@ -480,6 +518,13 @@ static bool pattern_mod(pp_state *ps, iris_pattern *p)
     case T_LAMBDA: classic_turb(ps, p)->lambda = pp_float(ps); return true;
     case T_WARP: warp_block(ps, p); return true;
     case T_FREQUENCY: p->frequency = pp_float(ps); return true;
+    case T_INTERPOLATE:
+        /* density_file's interpolation (POV-Ray accepts it as a pattern
+        ** modifier); the density file itself is not rendered */
+        if (p->kind != IRIS_PAT_FUNCTION || p->fn)
+            return false;
+        pp_int(ps);
+        return true;
     case T_PHASE: p->phase = pp_float(ps); return true;
     case T_RAMP_WAVE: p->wave = IRIS_WAVE_RAMP; return true;
     case T_SINE_WAVE: p->wave = IRIS_WAVE_SINE; return true;

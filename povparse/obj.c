@@ -152,6 +152,30 @@ static void add_light_to(pp_state *ps, iris_object *o, iris_light *l)
     po->lights = n;
 }
 
+/* POV-Ray's CheckPassThru: target, pass_through and refraction (not off)
+** cannot all hold; the flag set last decides which one is turned off
+** ('which' is the keyword just parsed: pass_through turns refraction
+** off; refraction on turns pass_through off; target turns off
+** pass_through when refraction is explicitly on, else refraction). */
+static void check_pass_through(pp_state *ps, const pp_token *at,
+                               iris_object *o, int which)
+{
+    if (!o->photon_pass_through || !o->photon_target ||
+        o->photon_refraction == IRIS_OFF)
+        return;
+    bool off_pass = which == T_REFRACTION ||
+                    (which == T_TARGET && o->photon_refraction == IRIS_ON);
+    if (off_pass) {
+        pp_warning(ps, at, "cannot use pass_through with refraction and "
+                   "target: turning off pass_through");
+        o->photon_pass_through = false;
+    } else {
+        pp_warning(ps, at, "cannot use pass_through with refraction and "
+                   "target: turning off refraction");
+        o->photon_refraction = IRIS_OFF;
+    }
+}
+
 /* photons { target [f] refraction b reflection b collect b pass_through } */
 static void object_photons(pp_state *ps, iris_object *o)
 {
@@ -171,16 +195,21 @@ static void object_photons(pp_state *ps, iris_object *o)
             o->photon_density = d;
             if (d <= 0)
                 o->photon_target = false;
+            check_pass_through(ps, &at, o, T_TARGET);
             break;
         }
         case T_REFRACTION:
             o->photon_refraction = pp_bool_opt(ps) ? IRIS_ON : IRIS_OFF;
+            check_pass_through(ps, &at, o, T_REFRACTION);
             break;
         case T_REFLECTION:
             o->photon_reflection = pp_bool_opt(ps) ? IRIS_ON : IRIS_OFF;
             break;
         case T_COLLECT: o->photon_collect = pp_bool_opt(ps); break;
-        case T_PASS_THROUGH: o->photon_pass_through = pp_bool_opt(ps); break;
+        case T_PASS_THROUGH:
+            o->photon_pass_through = pp_bool_opt(ps);
+            check_pass_through(ps, &at, o, T_PASS_THROUGH);
+            break;
         default: {
             pp_unexpected(ps, &at, "photons");
         }
@@ -1193,15 +1222,30 @@ static void shape_body(pp_state *ps, iris_object *o, int kw, const pp_token *at)
             switch (jt.kind) {
             case T_QUATERNION: o->u.julia.type = 0; continue;
             case T_HYPERCOMPLEX: o->u.julia.type = 1; continue;
-            case T_SQR: case T_CUBE: case T_EXP: case T_RECIPROCAL:
-            case T_SIN: case T_ASIN: case T_SINH: case T_ASINH: case T_COS:
-            case T_ACOS: case T_COSH: case T_ACOSH: case T_TAN: case T_ATAN:
-            case T_TANH: case T_ATANH: case T_LN:
-                o->u.julia.data[4] = jt.kind;
-                continue;
+            case T_SQR: o->u.julia.fn = IRIS_JULIA_SQR; continue;
+            case T_CUBE: o->u.julia.fn = IRIS_JULIA_CUBE; continue;
+            case T_EXP: o->u.julia.fn = IRIS_JULIA_EXP; continue;
+            case T_RECIPROCAL: o->u.julia.fn = IRIS_JULIA_RECIPROCAL; continue;
+            case T_SIN: o->u.julia.fn = IRIS_JULIA_SIN; continue;
+            case T_ASIN: o->u.julia.fn = IRIS_JULIA_ASIN; continue;
+            case T_SINH: o->u.julia.fn = IRIS_JULIA_SINH; continue;
+            case T_ASINH: o->u.julia.fn = IRIS_JULIA_ASINH; continue;
+            case T_COS: o->u.julia.fn = IRIS_JULIA_COS; continue;
+            case T_ACOS: o->u.julia.fn = IRIS_JULIA_ACOS; continue;
+            case T_COSH: o->u.julia.fn = IRIS_JULIA_COSH; continue;
+            case T_ACOSH: o->u.julia.fn = IRIS_JULIA_ACOSH; continue;
+            case T_TAN: o->u.julia.fn = IRIS_JULIA_TAN; continue;
+            case T_ATAN: o->u.julia.fn = IRIS_JULIA_ATAN; continue;
+            case T_TANH: o->u.julia.fn = IRIS_JULIA_TANH; continue;
+            case T_ATANH: o->u.julia.fn = IRIS_JULIA_ATANH; continue;
+            case T_LN: o->u.julia.fn = IRIS_JULIA_LN; continue;
             case T_PWR: {
+                /* pwr(x, y): the exponent, kept in data[6..7] */
+                o->u.julia.fn = IRIS_JULIA_PWR;
                 pp_expect(ps, T_LPAREN, "'('");
-                pp_float(ps); comma(ps); pp_float(ps);
+                o->u.julia.data[6] = pp_float(ps);
+                comma(ps);
+                o->u.julia.data[7] = pp_float(ps);
                 pp_expect(ps, T_RPAREN, "')'");
                 continue;
             }
@@ -1450,8 +1494,12 @@ iris_object *pp_object(pp_state *ps)
     if (kind >= IRIS_OBJ_UNION) {
         if (kind == IRIS_OBJ_LIGHT_GROUP) {
             ((pp_obj *)o)->is_light_group = true;
-            pp_warn_once(ps, &at, T_LIGHT_GROUP, "light_group (its lights "
-                         "become scene lights: they light every object)");
+            if (!ps->warned[T_LIGHT_GROUP]) {
+                ps->warned[T_LIGHT_GROUP] = 1;
+                pp_warning(ps, &at, "light_group is not rendered as a group: "
+                           "its lights become scene lights that light every "
+                           "object");
+            }
         }
         pp_enter(ps, &at);
         csg_body(ps, o, &open);

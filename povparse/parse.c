@@ -14,6 +14,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/resource.h>
 
 #include "pp.h"
 #include "pp_test.h"
@@ -105,6 +106,19 @@ static void release(pp_state *ps)
     arena_destroy(ps->S);
 }
 
+/* The C stack the grammar may use: half the stack size limit (the
+** parser may run on a thread whose stack is the default, which Linux
+** takes from the same limit), at most 4 MiB, at least 256 KiB. */
+static size_t stack_limit(void)
+{
+    size_t lim = (size_t)4 << 20;
+    struct rlimit rl;
+    if (getrlimit(RLIMIT_STACK, &rl) == 0 && rl.rlim_cur != RLIM_INFINITY &&
+        rl.rlim_cur / 2 < lim)
+        lim = (size_t)(rl.rlim_cur / 2);
+    return lim < ((size_t)256 << 10) ? (size_t)256 << 10 : lim;
+}
+
 static enum iris_status run(const char *name, const char *text, size_t len,
                             const iris_parse_options *opts,
                             iris_scene **out, iris_diag_list *diags,
@@ -129,6 +143,8 @@ static enum iris_status run(const char *name, const char *text, size_t len,
     if (ps->opt.image_height <= 0)
         ps->opt.image_height = 600;
     ps->diags = diags;
+    ps->stack_base = (uintptr_t)__builtin_frame_address(0);
+    ps->stack_limit = stack_limit();
     ps->A = arena_create(ps->opt.max_memory);
     ps->S = arena_create(ps->opt.max_memory);
     if (!ps->A || !ps->S) {
@@ -177,7 +193,6 @@ static enum iris_status run(const char *name, const char *text, size_t len,
         pp_cond *c = &ps->conds[ps->n_conds - 1];
         pp_error_at(ps, c->file, c->off, 1, "directive without #end");
     }
-    pp_decode_gamma(ps);
     fill_files(ps);
     if (probe && res) {
         pp_sym *s = sym_resolve(sym_lookup(ps, probe, strlen(probe)));

@@ -147,13 +147,14 @@ typedef struct pp_map {
     iris_map_entry *e;
 } pp_map;
 
-/* A spline{} (linear, quadratic, cubic, natural: all evaluated as
-** POV-Ray's piecewise forms; see expr.c). */
+/* A spline{} (linear, quadratic, cubic, natural: evaluated by src/fn's
+** iris_fn_spline_eval, POV-Ray's definitions). */
 typedef struct pp_spline {
-    int type;              /* 0 linear, 1 quadratic, 2 cubic, 3 natural */
+    int type;              /* enum iris_fn_spline_type */
     int n, dim;
     double *t;
     double (*p)[5];
+    double (*coeff)[5];    /* natural splines: from iris_fn_spline_coeffs */
 } pp_spline;
 
 /* A file opened by #fopen. */
@@ -277,10 +278,18 @@ struct pp_state {
     pp_fileh *open_files[32];
     int n_open_files;
 
+    /* Resolved directories reads may use (access.c); [0] = the scene's */
+    const char **io_roots;
+    int n_io_roots;
+
     double version;
     bool in_vector;        /* inside <..>: '>' closes, is no operator */
     bool gamma_given;
+    bool srgb_warned;      /* "sRGB colour before assumed_gamma" once */
     int depth;             /* nesting of the grammar's recursion */
+    uintptr_t stack_base;  /* frame address where the parse started */
+    size_t stack_limit;    /* bytes of C stack the grammar may use */
+    uint32_t outer_file, outer_off, outer_len; /* where depth 1 began */
     int lex_peek;          /* > 0: strings are not decoded (look-ahead) */
 };
 
@@ -295,7 +304,9 @@ void pp_warning(pp_state *ps, const pp_token *at, const char *fmt, ...)
 /* Warns once per token kind 'kw' that a feature is parsed but ignored. */
 void pp_warn_once(pp_state *ps, const pp_token *at, int kw, const char *what);
 _Noreturn void pp_nomem(pp_state *ps);
-/* Guards the C stack: nesting deeper than PP_MAX_DEPTH is an error. */
+/* Guards the C stack: nesting deeper than PP_MAX_DEPTH, or using more
+** than stack_limit bytes of stack (sanitizer builds have large frames),
+** is an error. */
 #define PP_MAX_DEPTH 1000
 void pp_enter(pp_state *ps, const pp_token *at);
 static inline void pp_leave(pp_state *ps) { ps->depth--; }
@@ -308,6 +319,14 @@ void pp_line_col(pp_state *ps, uint32_t file, uint32_t off,
 const char *pp_tok_name(pp_state *ps, const pp_token *t, char *buf,
                         size_t n);
 const char *pp_kind_name(int kind);
+
+/* ---- access.c: the file access policy (issue 7) ------------------ */
+/* True when 'path' may be read under opt.read_policy. */
+bool pp_read_allowed(pp_state *ps, const char *path);
+/* A located error at 'at' when 'path' may not be read. */
+void pp_check_read(pp_state *ps, const pp_token *at, const char *path);
+/* True when writes are allowed and 'path' lies in the scene's tree. */
+bool pp_write_allowed(pp_state *ps, const char *path);
 
 /* ---- lex.c -------------------------------------------------------- */
 void lex_init_keywords(pp_state *ps);
@@ -370,8 +389,11 @@ const char *pp_string(pp_state *ps);
 bool pp_bool_opt(pp_state *ps);       /* optional on/off after a flag */
 /* Parses the value of #declare X = ...; (any kind). */
 pp_value pp_rvalue(pp_state *ps);
+/* spline { ... } after 'spline' (rvalue.c); scratch arena. */
+pp_spline *pp_spline_block(pp_state *ps);
+/* The public view of a spline, for iris_fn_spline_eval. */
+iris_fn_spline pp_spline_view(const pp_spline *s);
 void pp_value_promote(pp_value *v, int dim);
-double pp_srgb_decode(double c);
 /* True when the current token can start a float/vector expression. */
 bool pp_starts_expr(pp_state *ps);
 iris_colour pp_value_colour(const pp_value *v);
@@ -431,8 +453,9 @@ void pp_add_object(pp_state *ps, iris_object *o);
 void pp_add_light(pp_state *ps, iris_light *l);
 
 /* ---- gamma.c ------------------------------------------------------ */
-/* Decodes colours written for assumed_gamma G != 1 (c -> c^G). */
-void pp_decode_gamma(pp_state *ps);
+double pp_srgb_decode(double c);     /* sRGB-encoded -> linear light */
+/* An srgb colour channel in the working space of assumed_gamma. */
+double pp_srgb_to_working(pp_state *ps, const pp_token *at, double c);
 
 /* ---- memory ------------------------------------------------------- */
 void *pp_alloc(pp_state *ps, size_t n);          /* scene arena, zeroed */

@@ -74,8 +74,28 @@ static pp_array *array_value(pp_state *ps, const pp_token *at)
     return arr;
 }
 
+iris_fn_spline pp_spline_view(const pp_spline *s)
+{
+    iris_fn_spline v = { s->type, s->n, s->dim, s->t,
+                         (const double (*)[5])s->p,
+                         (const double (*)[5])s->coeff };
+    return v;
+}
+
+/* A natural spline's coefficients, once its keys are final. */
+static void spline_finish(pp_state *ps, pp_spline *s)
+{
+    s->coeff = NULL;
+    if (s->type != IRIS_FN_SPLINE_NATURAL || s->n < 3)
+        return;
+    s->coeff = pp_salloc(ps, (size_t)s->n * sizeof *s->coeff);
+    iris_fn_spline v = pp_spline_view(s);
+    if (!iris_fn_spline_coeffs(&v, s->coeff))
+        pp_nomem(ps);
+}
+
 /* spline { [type] t, <v> [,] ... } */
-static pp_spline *spline_value(pp_state *ps)
+pp_spline *pp_spline_block(pp_state *ps)
 {
     pp_expect(ps, T_LBRACE, "'{'");
     pp_spline *s = pp_salloc(ps, sizeof *s);
@@ -88,10 +108,20 @@ static pp_spline *spline_value(pp_state *ps)
         case T_CUBIC_SPLINE: s->type = 2; continue;
         case T_NATURAL_SPLINE: s->type = 3; continue;
         case T_RBRACE:
+            spline_finish(ps, s);
             return s;
         case T_IDENT:
             if (ps->tok.val.kind == V_SPLINE) {
-                *s = *ps->tok.val.u.spline;
+                /* a copy: keys added here must not change the original */
+                const pp_spline *o = ps->tok.val.u.spline;
+                *s = *o;
+                s->t = pp_salloc(ps, (size_t)(o->n ? o->n : 1) * sizeof *s->t);
+                s->p = pp_salloc(ps, (size_t)(o->n ? o->n : 1) * sizeof *s->p);
+                if (o->n) {
+                    memcpy(s->t, o->t, (size_t)o->n * sizeof *s->t);
+                    memcpy(s->p, o->p, (size_t)o->n * sizeof *s->p);
+                }
+                cap = o->n;
                 continue;
             }
             break;
@@ -115,7 +145,25 @@ static pp_spline *spline_value(pp_state *ps)
             s->p = np;
             cap = nc;
         }
-        /* keys are kept sorted by t */
+        /* A key at an existing t replaces it (POV-Ray's
+        ** Insert_Spline_Entry); keys are kept sorted by t. */
+        int lo = 0, hi = s->n;   /* the first key with t[j] >= t */
+        while (lo < hi) {
+            int mid = lo + (hi - lo) / 2;
+            if (s->t[mid] < t)
+                lo = mid + 1;
+            else
+                hi = mid;
+        }
+        int same = lo < s->n && s->t[lo] == t ? lo : -1;
+        if (same >= 0) {
+            memset(s->p[same], 0, sizeof s->p[same]);
+            for (int k = 0; k < v.dim && k < 5; k++)
+                s->p[same][k] = v.v[k];
+            if (v.dim > s->dim)
+                s->dim = v.dim;
+            continue;
+        }
         int i = s->n;
         while (i > 0 && s->t[i - 1] > t) {
             s->t[i] = s->t[i - 1];
@@ -170,7 +218,7 @@ pp_value pp_rvalue(pp_state *ps)
     case T_FOG: return make(V_FOG, pp_fog(ps));
     case T_SKY_SPHERE: return make(V_SKY_SPHERE, pp_sky_sphere(ps, NULL));
     case T_FUNCTION: return make(V_FUNCTION, pp_function(ps));
-    case T_SPLINE: return make(V_SPLINE, spline_value(ps));
+    case T_SPLINE: return make(V_SPLINE, pp_spline_block(ps));
     case T_ARRAY: return make(V_ARRAY, array_value(ps, &at));
     case T_COLOR_MAP: return make(V_COLOUR_MAP, pp_map_block(ps, V_COLOUR_MAP));
     case T_PIGMENT_MAP:

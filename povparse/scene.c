@@ -58,6 +58,32 @@ static void add_fog(pp_state *ps, iris_fog *f)
 ** Items are applied in POV-Ray's order whatever order they are written
 ** in: right, direction, angle, up, sky, location, look_at; then the
 ** transforms (semantics §3.8). */
+/* mesh_camera { rays_per_pixel, distribution [smooth] mesh... }: parsed
+** so that the scene parses, but not rendered (scene.h has no camera made
+** of a mesh): the camera keeps its other settings, with a warning. */
+static void mesh_camera(pp_state *ps, const pp_token *at)
+{
+    pp_warning(ps, at, "mesh_camera is not rendered: the camera keeps its "
+               "other settings");
+    pp_expect(ps, T_LBRACE, "'{' after mesh_camera");
+    pp_int(ps);
+    pp_accept(ps, T_COMMA);
+    int dist = pp_int(ps);
+    if (dist < 0 || dist > 3)
+        pp_error(ps, at, "mesh_camera distribution type must be 0 to 3");
+    for (;;) {
+        pp_next(ps);
+        if (ps->tok.kind == T_RBRACE)
+            return;
+        if (ps->tok.kind == T_SMOOTH)
+            continue;
+        pp_token ot = ps->tok;
+        pp_unget(ps);
+        if (!pp_object(ps))
+            pp_unexpected(ps, &ot, "mesh_camera");
+    }
+}
+
 iris_camera *pp_camera(pp_state *ps, const iris_camera *base)
 {
     pp_token open = ps->tok;
@@ -105,7 +131,8 @@ iris_camera *pp_camera(pp_state *ps, const iris_camera *base)
                 pp_error(ps, &at, "cylinder camera type must be 1 to 4");
             break;
         case T_MESH_CAMERA:
-            pp_error(ps, &at, "mesh_camera is not supported");
+            mesh_camera(ps, &at);
+            break;
         case T_LOCATION: loc = pp_vector(ps); has_loc = true; break;
         case T_DIRECTION: dir = pp_vector(ps); has_dir = true; break;
         case T_RIGHT: right = pp_vector(ps); has_right = true; break;
@@ -300,11 +327,8 @@ static void global_settings(pp_state *ps)
             if (!(gm > 0))
                 pp_error(ps, &at, "assumed_gamma must be > 0");
             g->assumed_gamma = gm;
+            /* Colours stay as written: see gamma.c */
             ps->gamma_given = true;
-            if (fabs(gm - 1) > 1e-6)
-                pp_warning(ps, &at, "assumed_gamma %g: colours are decoded "
-                           "as c^%g to linear light, an approximation of "
-                           "POV-Ray's shading in gamma space", gm, gm);
             break;
         }
         case T_MAX_TRACE_LEVEL: {

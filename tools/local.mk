@@ -42,6 +42,7 @@ tools_ball_reference_LDADD = libiris_core.la $(IRIS_LIBS)
 tools_error_plot_SOURCES = tools/error_plot.c
 tools_error_plot_LDADD = libiris_core.la $(IRIS_LIBS)
 CLEANFILES += tools/ball_reference$(EXEEXT) tools/error_plot$(EXEEXT)
+EXTRA_DIST += tools/ball_reference.c tools/error_plot.c
 error-plot: tools/error_plot$(EXEEXT)
 	tools/error_plot$(EXEEXT) $(PLOT) $(LOGS)
 .PHONY: error-plot

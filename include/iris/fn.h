@@ -10,6 +10,8 @@
 #ifndef IRIS_FN_H
 #define IRIS_FN_H
 
+#include <stdbool.h>
+
 #ifdef __cplusplus
 extern "C" {
 #endif
@@ -28,7 +30,18 @@ enum iris_fn_op {
     IRIS_FN_BUILTIN,   /* 'arg' = enum iris_fn_builtin, pops its arity */
     IRIS_FN_CALL,      /* call 'callee' with 'arg' arguments */
     IRIS_FN_INTERNAL,  /* functions.inc internal('arg'), pops 'nargs' */
-    IRIS_FN_PATTERN,   /* a pattern function: 'pattern' at (x,y,z) */
+    IRIS_FN_PATTERN,   /* a pattern function: 'pattern' at (x,y,z), or
+                          component 'arg' (0..4 = r,g,b,f,t; 5 = gray) of
+                          'pigment'; (x,y,z) are the function's own
+                          arguments when 'nargs' is 0, else 3 popped */
+    IRIS_FN_SUM,       /* sum/prod(i, a, b, body): pops a and b; 'callee'
+                          is the body, called with the function's own
+                          arguments then i = a, a+1, ..., b at index
+                          'nargs'; 'arg' 0 = sum, 1 = product */
+    IRIS_FN_SPLINE,    /* component 'arg' of 'spline' at t = the first
+                          argument (nargs 0) or 1 popped (nargs 1) */
+    IRIS_FN_TRANSFORM, /* component 'arg' of 'xform' applied to (x,y,z):
+                          the arguments (nargs 0) or 3 popped (nargs 3) */
     IRIS_FN_OP_COUNT
 };
 
@@ -46,6 +59,29 @@ enum iris_fn_builtin {
 
 typedef struct iris_fn iris_fn;
 struct iris_pattern;
+struct iris_pigment;
+struct iris_transform;
+
+/* An SDL spline{} (keys t[i], increasing, with values p[i][0..dim-1]),
+** evaluated as POV-Ray 3.7's splines.cpp does: outside the keys the end
+** value; cubic_spline is Catmull-Rom between the second and next-to-last
+** keys; natural_spline needs 'coeff' (n rows) from iris_fn_spline_coeffs. */
+enum iris_fn_spline_type { IRIS_FN_SPLINE_LINEAR = 0,
+                           IRIS_FN_SPLINE_QUADRATIC, IRIS_FN_SPLINE_CUBIC,
+                           IRIS_FN_SPLINE_NATURAL };
+typedef struct iris_fn_spline {
+    int type;              /* enum iris_fn_spline_type */
+    int n, dim;
+    const double *t;
+    const double (*p)[5];
+    const double (*coeff)[5];
+} iris_fn_spline;
+
+/* The natural spline's second derivatives at the keys, into 'out' (n
+** rows); false when out of memory (then 'out' is zero: linear). */
+bool iris_fn_spline_coeffs(const iris_fn_spline *s, double (*out)[5]);
+/* The spline's value at 't' (all 5 components; zeros when empty). */
+void iris_fn_spline_eval(const iris_fn_spline *s, double t, double out[5]);
 
 /* One instruction. */
 typedef struct iris_fn_insn {
@@ -55,6 +91,9 @@ typedef struct iris_fn_insn {
     double value;          /* CONST */
     const iris_fn *callee; /* CALL */
     const struct iris_pattern *pattern; /* PATTERN */
+    const struct iris_pigment *pigment; /* PATTERN of a pigment function */
+    const iris_fn_spline *spline;       /* SPLINE */
+    const struct iris_transform *xform; /* TRANSFORM */
 } iris_fn_insn;
 
 /* A compiled function: 'n_params' named parameters, 'n_code' insns. */

@@ -243,7 +243,8 @@ typedef struct iris_interior {
     double ior;                /* 0 = unset (POV-Ray: becomes 1) */
     double dispersion;         /* 1 */
     int dispersion_samples;    /* 7 */
-    double caustics;           /* fake caustics, 0 */
+    double caustics;           /* fake caustics k as written, 0 (the
+                                  renderer uses k*45, as POV-Ray stores) */
     double fade_distance;      /* 0 */
     double fade_power;         /* 0 */
     iris_colour fade_colour;   /* 0 */

@@ -187,7 +187,8 @@ int main(int argc, char **argv)
         st = IRIS_EINTR;
     if (plog.calls == 0 && o.reference && st == IRIS_OK) {
         /* one ordinary render: log it as one pass */
-        iris_pass_info info = { 1, par_now() - t_render, rs.photons_emitted,
+        iris_pass_info info = { rs.passes > 0 ? rs.passes : 1,
+                                par_now() - t_render, rs.photons_emitted,
                                 1.0 };
         plog.out_name = NULL;
         passlog_on_pass(&plog, &img, &info);

@@ -6,7 +6,11 @@
 ** A plain stack machine over doubles; every result is made finite (a
 ** domain error or a division by zero gives 0, as fn.h promises), the
 ** stack and the call depth are bounded, and nothing is allocated, so
-** evaluation is reentrant and thread-safe.
+** evaluation is reentrant and thread-safe. The internal functions are in
+** fnintern.c; pattern and pigment functions are evaluated by the pattern
+** code of src/material (mat_pattern_at, mat_pigment_at).
+**
+** Depends on: material/material.h (pattern evaluation).
 */
 #include "config.h"
 
@@ -14,6 +18,8 @@
 #include <string.h>
 
 #include "iris/fn.h"
+#include "iris/scene.h"
+#include "material/material.h"
 
 static double finite_or_0(double v)
 {
@@ -83,6 +89,62 @@ static double builtin(int b, const double *a, int n)
     }
     default: return 0;
     }
+}
+
+/* A pattern function's value, a pigment function's component, a spline's
+** component at t = p[0], or a transformed point's component, at the point
+** given by the first three of 'p' (missing ones are 0). */
+static double point_value(const iris_fn_insn *in, const double *p, int n)
+{
+    double x = n > 0 ? p[0] : 0, y = n > 1 ? p[1] : 0, z = n > 2 ? p[2] : 0;
+    int k = in->arg;
+    if (in->op == IRIS_FN_SPLINE) {
+        double v[5];
+        iris_fn_spline_eval(in->spline, x, v);
+        return k >= 0 && k < 5 ? v[k] : v[0];
+    }
+    if (in->op == IRIS_FN_TRANSFORM) {
+        if (!in->xform || k < 0 || k > 2)
+            return 0;
+        const double *m = in->xform->m[k];
+        return m[0] * x + m[1] * y + m[2] * z + m[3];
+    }
+    if (in->pigment) {
+        double c[5];
+        mat_pigment_at(in->pigment, x, y, z, c);
+        if (in->arg == 5) /* POV-Ray's Greyscale() weights */
+            return 0.297 * c[0] + 0.589 * c[1] + 0.114 * c[2];
+        return in->arg >= 0 && in->arg < 5 ? c[in->arg] : c[0];
+    }
+    return in->pattern ? mat_pattern_at(in->pattern, x, y, z) : 0;
+}
+
+static double eval(const iris_fn *fn, const double *args, int n_args,
+                   int depth);
+
+/* sum()/prod(): the body called for i = a, a+1, ..., b (POV-Ray's bounds
+** are inclusive). Past SUM_MAX_TERMS terms the loop stops: a render must
+** not hang on a huge bound. */
+#define SUM_MAX_TERMS 1000000
+#define SUM_MAX_ARGS 64
+
+static double sum_loop(const iris_fn_insn *in, const double *args,
+                       int n_args, double a, double b, int depth)
+{
+    double buf[SUM_MAX_ARGS + 1];
+    int slot = in->nargs;
+    if (slot < 0 || slot > SUM_MAX_ARGS || !(a <= b) || !isfinite(a))
+        return in->arg ? 1 : 0;
+    for (int k = 0; k < slot; k++)
+        buf[k] = args && k < n_args ? args[k] : 0;
+    double r = in->arg ? 1 : 0;
+    long n = 0;
+    for (double i = a; i <= b && n < SUM_MAX_TERMS; i += 1, n++) {
+        buf[slot] = i;
+        double v = eval(in->callee, buf, slot + 1, depth + 1);
+        r = in->arg ? r * v : r + v;
+    }
+    return r;
 }
 
 static double eval(const iris_fn *fn, const double *args, int n_args,
@@ -173,10 +235,26 @@ static double eval(const iris_fn *fn, const double *args, int n_args,
                 r = iris_fn_internal(in->arg, args, args ? n_args : 0);
             }
             break;
-        case IRIS_FN_PATTERN:
-            /* Patterns are evaluated by the renderer's pattern code. */
-            r = 0;
+        case IRIS_FN_SUM:
+            if (sp < 2)
+                return 0;
+            r = sum_loop(in, args, n_args, st[sp - 2], st[sp - 1], depth);
+            pop = 2;
             break;
+        case IRIS_FN_PATTERN: case IRIS_FN_SPLINE: case IRIS_FN_TRANSFORM: {
+            /* the point is the function's own arguments, or popped */
+            const double *p = args;
+            int np = args ? n_args : 0;
+            if (in->nargs > 0) {
+                if (sp < in->nargs)
+                    return 0;
+                p = &st[sp - in->nargs];
+                np = in->nargs;
+                pop = in->nargs;
+            }
+            r = point_value(in, p, np);
+            break;
+        }
         default:
             return 0;
         }
@@ -191,86 +269,4 @@ static double eval(const iris_fn *fn, const double *args, int n_args,
 double iris_fn_eval(const iris_fn *fn, const double *args, int n_args)
 {
     return finite_or_0(eval(fn, args, n_args, 0));
-}
-
-/* Argument i, or 'def' when the caller passed fewer. */
-static double A(const double *a, int n, int i, double def)
-{
-    return i < n && a ? a[i] : def;
-}
-
-/* Clamps to [-10, 10] as POV-Ray's algebraic-surface functions do. */
-static double clamp10(double v)
-{
-    return fmin(10.0, fmax(v, -10.0));
-}
-
-/*
-** The internal functions of functions.inc that are implemented, with the
-** definitions of POV-Ray 3.7's vm/fnintern.cpp (checked against it; the
-** numbers are the internal(N) indices of functions.inc). Arguments: x, y,
-** z, then the parameters functions.inc documents for each. The others
-** return 0; see the list in the povparse report.
-*/
-double iris_fn_internal(int n, const double *a, int na)
-{
-    double x = A(a, na, 0, 0), y = A(a, na, 1, 0), z = A(a, na, 2, 0);
-    double p0 = A(a, na, 3, 0), p1 = A(a, na, 4, 0), p2 = A(a, na, 5, 0);
-    double p3 = A(a, na, 6, 0);
-    double r = 0;
-    switch (n) {
-    case 17: /* f_ellipsoid(x,y,z, A, B, C) */
-        r = sqrt(x * x * p0 * p0 + y * y * p1 * p1 + z * z * p2 * p2);
-        break;
-    case 45: /* f_paraboloid(x,y,z, field strength) */
-        r = clamp10(p0 * -(x * x - y + z * z));
-        break;
-    case 47: /* f_ph: polar angle measured from +y */
-        r = atan2(sqrt(x * x + z * z), y);
-        break;
-    case 57: /* f_r: distance from the origin */
-        r = sqrt(x * x + y * y + z * z);
-        break;
-    case 60: { /* f_rounded_box(x,y,z, radius, half sizes x, y, z) */
-        double dx = fmax(fabs(x) - (p1 - p0), 0);
-        double dy = fmax(fabs(y) - (p2 - p0), 0);
-        double dz = fmax(fabs(z) - (p3 - p0), 0);
-        r = sqrt(dx * dx + dy * dy + dz * dz) - p0 - 1e-6;
-        break;
-    }
-    case 61: /* f_sphere(x,y,z, radius) */
-        r = sqrt(x * x + y * y + z * z) - p0;
-        break;
-    case 68: { /* f_superellipsoid(x,y,z, east-west e, north-south n) */
-        if (p0 <= 0 || p1 <= 0)
-            return 0;
-        double e = 2 / p0, nn = 1 / p1;
-        double xy = pow(pow(fabs(x), e) + pow(fabs(y), e), p0 * nn);
-        r = 1 - pow(xy + pow(fabs(z), 2 * nn), p1 * 0.5);
-        break;
-    }
-    case 69: /* f_th: azimuth around y, from +z towards +x */
-        r = atan2(x, z);
-        break;
-    case 70: { /* f_torus(x,y,z, major, minor) */
-        double d = sqrt(x * x + z * z) - p0;
-        r = sqrt(d * d + y * y) - p1;
-        break;
-    }
-    case 71: { /* f_torus2(x,y,z, field strength, major, minor) */
-        double x2 = x * x, y2 = y * y, z2 = z * z;
-        double ph = p1 * p1, th = p2 * p2;
-        double q = x2 * x2 + y2 * y2 + z2 * z2 + 2 * x2 * y2 + 2 * x2 * z2 +
-                   2 * y2 * z2 - 2 * (ph + th) * x2 + 2 * (ph - th) * y2 -
-                   2 * (ph + th) * z2 + (ph - th) * (ph - th);
-        r = clamp10(-p0 * q);
-        break;
-    }
-    default:
-        /* f_noise3d (76) and f_noise_generator (78) need the noise of the
-        ** pattern code; the rest are not written yet */
-        r = 0;
-        break;
-    }
-    return finite_or_0(r);
 }

@@ -1,2 +1,2 @@
 ## src/fn: the evaluator of compiled SDL functions.
-libiris_core_la_SOURCES += %reldir%/fn.c
+libiris_core_la_SOURCES += %reldir%/fn.c %reldir%/fnintern.c %reldir%/spline.c

@@ -235,6 +235,12 @@ static int cmp_double(const void *a, const void *b)
     return x < y ? -1 : x > y;
 }
 
+static int cmp_piece(const void *a, const void *b)
+{
+    return cmp_double(&((const struct piece *)a)->ta,
+                      &((const struct piece *)b)->ta);
+}
+
 void geom_blob_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
                     double t1, struct isect_list *out)
 {
@@ -256,29 +262,39 @@ void geom_blob_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
         component_pieces(bc, co, cd, a - ts, b - ts, &l);
     }
 
-    /* Breakpoints: every piece end */
+    /* Breakpoints: every piece end. The intervals between them are swept
+    ** in order with the pieces sorted by start, keeping the list of those
+    ** that cover the interval ('act'): each interval sums only its own
+    ** pieces (afresh, so no rounding accumulates), and a ray through
+    ** thousands of components costs O(k log k), not O(k^2) (issue 7). */
     int nb = 0;
     double *bp = iris_malloc((size_t)(2 * l.n + 2) * sizeof *bp);
-    if (bp) {
+    int *act = iris_malloc((size_t)(l.n + 1) * sizeof *act);
+    if (bp && act) {
         for (int i = 0; i < l.n; i++) {
             bp[nb++] = l.v[i].ta;
             bp[nb++] = l.v[i].tb;
         }
         qsort(bp, (size_t)nb, sizeof *bp, cmp_double);
+        qsort(l.v, (size_t)l.n, sizeof *l.v, cmp_piece);
+        int n_act = 0, next = 0;
         for (int k = 0; k + 1 < nb; k++) {
             double lo = bp[k], hi = bp[k + 1];
             if (!(lo < hi))
                 continue;
             double mid = 0.5 * (lo + hi), c[5] = { -o->u.blob.threshold, 0, 0,
                                                     0, 0 };
-            int active = 0;
-            for (int i = 0; i < l.n; i++)
-                if (l.v[i].ta <= mid && mid < l.v[i].tb) {
-                    for (int e = 0; e < 5; e++)
-                        c[e] += l.v[i].c[e];
-                    active++;
-                }
-            if (!active)
+            while (next < l.n && l.v[next].ta <= mid)
+                act[n_act++] = next++;
+            int keep = 0;
+            for (int i = 0; i < n_act; i++)
+                if (mid < l.v[act[i]].tb)
+                    act[keep++] = act[i];
+            n_act = keep;
+            for (int i = 0; i < n_act; i++)
+                for (int e = 0; e < 5; e++)
+                    c[e] += l.v[act[i]].c[e];
+            if (!n_act)
                 continue;
             double r[4];
             int n = roots_in_interval(c, 4, lo, hi, r);
@@ -295,8 +311,9 @@ void geom_blob_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
                     out->v[at].part = part;
             }
         }
-        iris_free(bp);
     }
+    iris_free(bp);
+    iris_free(act);
     if (l.v != l.inline_buf)
         iris_free(l.v);
 }

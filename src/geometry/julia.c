@@ -20,6 +20,15 @@
 
 /* Steps one ray may take: a bad precision cannot stall a render */
 #define MAX_STEPS 100000
+/*
+** Iterations of the map one ray may spend in all, marching and bisecting
+** (issue 7: bounded time). A heavy POV-Ray setting (max_iteration 50,
+** precision 1000, radius 2) needs about 2e5; max_iteration 1e6 with
+** precision 1e9 would need 1e11 and stall the render for hours. Past the
+** budget the march stops and the rest of the ray is treated as missing
+** the set: about 5 ms of work per ray at most.
+*/
+#define MAX_WORK 1000000L
 
 struct jset {
     double c[4], s[4], sdist;
@@ -85,9 +94,10 @@ static void qmul(const double a[4], const double b[4], double r[4])
 /*
 ** Iterates from 'p'. Returns whether the orbit stays bounded; '*dist'
 ** (when not NULL) receives POV-Ray's lower bound on the distance to the
-** set for escaping orbits (the minimum step otherwise).
+** set for escaping orbits (the minimum step otherwise). '*work' (when not
+** NULL) grows by the iterations spent.
 */
-static bool iterate(const struct jset *j, vec3 p, double *dist)
+static bool iterate(const struct jset *j, vec3 p, double *dist, long *work)
 {
     double q[4], normp = 1;
     lift(j, p, q);
@@ -96,6 +106,8 @@ static bool iterate(const struct jset *j, vec3 p, double *dist)
         double n2 = q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3];
         normp *= sqrt(n2);
         if (n2 > j->exit2) {
+            if (work)
+                *work += i;
             if (dist) {
                 /* Pow · sqrt(Norm) / |q_0 q_1 ... q_i| · log(Norm),
                 ** POV-Ray's estimator (quatern.cpp); the norm of the
@@ -114,6 +126,8 @@ static bool iterate(const struct jset *j, vec3 p, double *dist)
         for (int k = 0; k < 4; k++)
             q[k] = r[k] + j->c[k];
     }
+    if (work)
+        *work += j->iters;
     if (dist)
         *dist = j->step_min;
     return true;
@@ -186,7 +200,7 @@ bool geom_julia_inside(const iris_object *o, vec3 p)
     struct jset j;
     if (!setup(o, &j) || v3_len2(p) > j.radius * j.radius)
         return false;
-    return iterate(&j, p, NULL);
+    return iterate(&j, p, NULL, NULL);
 }
 
 double geom_julia_radius(const iris_object *o)
@@ -212,17 +226,19 @@ void geom_julia_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
     if (!(a < b))
         return;
     double t = a, dist;
-    bool in = iterate(&j, v3_madd(ro, d, t), &dist);
-    for (int step = 0; step < MAX_STEPS && t < b; step++) {
+    long work = 0;
+    bool in = iterate(&j, v3_madd(ro, d, t), &dist, &work);
+    for (int step = 0; step < MAX_STEPS && t < b && work < MAX_WORK;
+         step++) {
         double tn = fmin(t + fmax(dist, j.step_min), b), dn;
-        bool inn = iterate(&j, v3_madd(ro, d, tn), &dn);
+        bool inn = iterate(&j, v3_madd(ro, d, tn), &dn, &work);
         if (inn != in) {
             /* Bisect to adjacent doubles (at most ~60 halvings) */
             double lo = t, hi = tn;
             for (int k = 0; k < 80 && hi - lo > 2e-16 * fmax(fabs(lo),
                                                            fabs(hi)); k++) {
                 double m = 0.5 * (lo + hi);
-                if (iterate(&j, v3_madd(ro, d, m), NULL) == in)
+                if (iterate(&j, v3_madd(ro, d, m), NULL, &work) == in)
                     lo = m;
                 else
                     hi = m;

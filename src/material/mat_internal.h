@@ -21,6 +21,7 @@ struct mat_ctx {
     int noise_generator;       /* the scene's default, 1..3 */
     int n_waves;               /* number_of_waves */
     bool legacy_opacity;       /* #version < 3.7 */
+    bool quick_colour;         /* quality below 6 (mat_ctx_set_quick_colour) */
     int n_images;
     struct mat_image *images;
 };
@@ -67,5 +68,12 @@ const iris_image *mat_find_image(const struct mat_ctx *ctx,
 ** pattern-space point 'q'. Returns false outside a 'once' image. */
 bool mat_image_lookup(const struct mat_ctx *ctx, const iris_image_ref *ref,
                       vec3 q, iris_colour *out);
+
+/* POV-Ray's bump_map: the normal 'n' (in pattern space) replaced by the
+** normal of the image's grey levels around pattern-space point 'q', scaled
+** by 'amount' (bump_size). Returns false where the map gives no normal
+** ('once' outside the image, a missing image). */
+bool mat_image_bump(const struct mat_ctx *ctx, const iris_image_ref *ref,
+                    vec3 q, double amount, vec3 n, vec3 *out);
 
 #endif

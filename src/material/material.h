@@ -46,6 +46,10 @@ IRIS_NODISCARD enum iris_status mat_ctx_create(const iris_scene *scene,
                                                struct mat_ctx **out);
 void mat_ctx_destroy(struct mat_ctx *ctx);
 
+/* Below quality 6 POV-Ray replaces every pigment that has a quick_colour
+** (one not all zero) by it. Call before the context is shared. */
+void mat_ctx_set_quick_colour(struct mat_ctx *ctx, bool on);
+
 /* A surface point as the texture sees it. */
 struct mat_point {
     vec3 p;                    /* world point */

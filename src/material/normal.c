@@ -198,6 +198,13 @@ vec3 mat_perturb_normal(const struct mat_ctx *ctx, const iris_normal *nrm,
     vec3 np = warp_normal(pat, n);
     vec3 q = pat_space(ctx, pat, pt->p);
     switch (pat->kind) {
+    case IRIS_PAT_IMAGE_MAP:
+        if (nrm->bump_map) {
+            vec3 b;
+            if (mat_image_bump(ctx, nrm->bump_map, q, nrm->amount, np, &b))
+                np = b;
+        }
+        break;
     case IRIS_PAT_BUMPS:
         np = v3_madd(np, noise_vector(q), nrm->amount);
         break;

@@ -157,6 +157,12 @@ bool mat_eval_pigment(const struct mat_ctx *ctx, const iris_pigment *pig,
     if (!pig)
         return true;
     const iris_pattern *pat = &pig->pattern;
+    const iris_colour *qc = &pig->quick_colour;
+    if (ctx && ctx->quick_colour &&
+        (qc->r != 0 || qc->g != 0 || qc->b != 0 || qc->f != 0 || qc->t != 0)) {
+        *out = *qc;
+        return true;
+    }
     if (pat->kind == IRIS_PAT_NONE) {
         *out = pig->colour;
         return true;
@@ -316,19 +322,14 @@ static iris_colour texel(const iris_image *img, const iris_image_ref *ref,
     return c;
 }
 
-bool mat_image_lookup(const struct mat_ctx *ctx, const iris_image_ref *ref,
-                      vec3 q, iris_colour *out)
+/* The image's colour at image coordinates (x, y), interpolated as the
+** reference asks (POV-Ray's image_colour_at). */
+static void sample_at(const iris_image *img, const iris_image_ref *ref,
+                      double x, double y, iris_colour *out)
 {
-    memset(out, 0, sizeof *out);
-    const iris_image *img = mat_find_image(ctx, ref);
-    if (!img || img->width <= 0 || img->height <= 0)
-        return true; /* a missing image renders black (reported once) */
-    double x, y;
-    if (!map_pos(ref, img->width, img->height, q, &x, &y))
-        return false;
     if (ref->interpolate != 2 && ref->interpolate != 4) {
         *out = texel(img, ref, x, y);
-        return true;
+        return;
     }
     /* Bilinear over the four texels around the sample (POV-Ray's Interp;
     ** normalised-distance interpolation uses the same weights here). */
@@ -347,6 +348,78 @@ bool mat_image_lookup(const struct mat_ctx *ctx, const iris_image_ref *ref,
     out->b = c0.b * f0 + c1.b * f1 + c2.b * f2 + c3.b * f3;
     out->f = c0.f * f0 + c1.f * f1 + c2.f * f2 + c3.f * f3;
     out->t = c0.t * f0 + c1.t * f1 + c2.t * f2 + c3.t * f3;
+}
+
+bool mat_image_lookup(const struct mat_ctx *ctx, const iris_image_ref *ref,
+                      vec3 q, iris_colour *out)
+{
+    memset(out, 0, sizeof *out);
+    const iris_image *img = mat_find_image(ctx, ref);
+    if (!img || img->width <= 0 || img->height <= 0)
+        return true; /* a missing image renders black (reported once) */
+    double x, y;
+    if (!map_pos(ref, img->width, img->height, q, &x, &y))
+        return false;
+    sample_at(img, ref, x, y, out);
+    return true;
+}
+
+/* The grey level of a bump map sample, on the decoded (linear) values as
+** POV-Ray 3.7 decodes the file's gamma for bump maps too (the encoded
+** values match textures/normals/bumpmap.pov slightly worse, 38.0 against
+** 38.6 dB). */
+static double bump_grey(const iris_image *img, const iris_image_ref *ref,
+                        double x, double y)
+{
+    iris_colour c;
+    sample_at(img, ref, x, y, &c);
+    const double g[3] = { c.r, c.g, c.b };
+    return mat_greyscale(g);
+}
+
+/* 'v' wrapped into [0, n) by one period, as POV-Ray's bump_map does. */
+static double wrap_once(double v, double n)
+{
+    if (v < 0.0)
+        return v + n;
+    if (v >= n)
+        return v - n;
+    return v;
+}
+
+bool mat_image_bump(const struct mat_ctx *ctx, const iris_image_ref *ref,
+                    vec3 q, double amount, vec3 n, vec3 *out)
+{
+    const iris_image *img = mat_find_image(ctx, ref);
+    if (!img || img->width <= 0 || img->height <= 0)
+        return false;
+    double x, y;
+    if (!map_pos(ref, img->width, img->height, q, &x, &y))
+        return false;
+    double w = img->width, h = img->height;
+    /* three samples: here, one pixel left and down, one right and down */
+    double g1 = bump_grey(img, ref, x, y);
+    double x2 = wrap_once(x - 1.0, w), y2 = wrap_once(y + 1.0, h);
+    double g2 = bump_grey(img, ref, x2, y2);
+    double g3 = bump_grey(img, ref, wrap_once(x2 + 2.0, w), y2);
+    /* the normal of the triangle through them, in a frame around 'n' */
+    vec3 p1 = v3(0, amount * g1, 0), p2 = v3(-1, amount * g2, 1),
+         p3 = v3(1, amount * g3, 1);
+    vec3 bn = v3_norm(v3_cross(v3_sub(p3, p2), v3_sub(p1, p2)));
+    vec3 yp = n, xp = v3_cross(n, v3(0, 1, 0));
+    double len = v3_len(xp);
+    if (len < 1e-10) {
+        yp = fabs(n.y - 1.0) < 1e-10 ? v3(0, 1, 0) : v3(0, -1, 0);
+        xp = v3(1, 0, 0);
+        len = 1.0;
+    }
+    xp = v3_scale(xp, 1.0 / len);
+    vec3 zp = v3_norm(v3_cross(xp, yp));
+    vec3 r = v3_sub(v3_add(v3_scale(xp, bn.x), v3_scale(yp, bn.y)),
+                    v3_scale(zp, bn.z));
+    if (!(isfinite(r.x) && isfinite(r.y) && isfinite(r.z)))
+        return false;
+    *out = r;
     return true;
 }
 

@@ -182,6 +182,12 @@ void mat_ctx_destroy(struct mat_ctx *ctx)
     iris_free(ctx);
 }
 
+void mat_ctx_set_quick_colour(struct mat_ctx *ctx, bool on)
+{
+    if (ctx)
+        ctx->quick_colour = on;
+}
+
 int mat_noise_generator(const struct mat_ctx *ctx)
 {
     return ctx ? ctx->noise_generator : 2;

@@ -15,7 +15,9 @@
 ** Phi·a in its direction omega with a = 1/clamp(N_raw·omega, 0.1, 1):
 ** diffuse·|N_layer·omega|^brilliance·opacity — but the pigment enters as
 ** the reflectance rho(lambda_j) at the photon's own wavelength, and the
-** photon becomes linear sRGB through spec_lambda_rgb_weight(lambda_j).
+** photon becomes linear sRGB through spec_lambda_rgb_weight(lambda_j). A
+** white photon (trace.c, pstore.h) stands for every wavelength and adds
+** white·pigment, the mean over the spectrum (pmap_white_matrix()).
 ** POV-Ray also adds phong/specular highlights from photons; iris does not
 ** (yet).
 **
@@ -92,6 +94,11 @@ void photon_map_shade(const struct photon_map *m,
         r *= m->estimate_scale;
     double sum[3] = { 0, 0, 0 };
     double kc = m->cone_k;
+    double white_rgb[3]; /* a white photon's rgb on this pigment */
+    for (int k = 0; k < 3; k++)
+        white_rgb[k] = m->white[k][0] * in->pigment_rgb[0] +
+                       m->white[k][1] * in->pigment_rgb[1] +
+                       m->white[k][2] * in->pigment_rgb[2];
     for (int i = 0; i < n && r > 0.0; i++) {
         size_t j = buf[i].index;
         vec3 om = pstore_direction(&m->store, j);
@@ -109,15 +116,20 @@ void photon_map_shade(const struct photon_map *m,
         double w = 1.0 - d / (kc * r);
         if (w <= 0.0 || d > r)
             continue;
-        double lambda = pstore_lambda(&m->store, j);
-        double rho = spec_reflectance(in->pigment_rgb, lambda);
         double br = fin->brilliance == 1.0 ? cos_l
                                            : pow(cos_l, fin->brilliance);
-        double c = w * m->store.ph[j].power * rho * diffuse * br * a;
+        double c = w * m->store.ph[j].power * diffuse * br * a;
+        if (m->store.ph[j].lambda_q == PSTORE_WHITE) {
+            for (int k = 0; k < 3; k++)
+                sum[k] += c * white_rgb[k];
+            continue;
+        }
+        double lambda = pstore_lambda(&m->store, j);
+        double rho = spec_reflectance(in->pigment_rgb, lambda);
         double wt[3];
         spec_lambda_rgb_weight(lambda, wt);
         for (int k = 0; k < 3; k++)
-            sum[k] += c * wt[k];
+            sum[k] += c * rho * wt[k];
     }
     if (buf != stack_buf)
         iris_free(buf);
@@ -192,6 +204,25 @@ bool photon_blocks_shadow(const struct photon_map *m,
            light->photon_refraction != IRIS_OFF &&
            (blocker->photon_refraction == IRIS_ON ||
             light->photon_refraction == IRIS_ON);
+}
+
+void pmap_white_matrix(double out[3][3])
+{
+    enum { STEPS = 4000 };
+    for (int k = 0; k < 3; k++)
+        for (int c = 0; c < 3; c++)
+            out[k][c] = 0.0;
+    for (int i = 0; i < STEPS; i++) {
+        double lambda = SPEC_LAMBDA_MIN + SPEC_LAMBDA_RANGE * (i + 0.5) / STEPS;
+        double wt[3];
+        spec_lambda_rgb_weight(lambda, wt);
+        for (int c = 0; c < 3; c++) {
+            double e[3] = { c == 0, c == 1, c == 2 };
+            double rho = spec_reflectance(e, lambda);
+            for (int k = 0; k < 3; k++)
+                out[k][c] += rho * wt[k] / STEPS;
+        }
+    }
 }
 
 void photon_map_destroy(struct photon_map *m)

@@ -39,6 +39,8 @@ struct photon_map {
     double cone_k;             /* cone filter constant (1) */
     double estimate_scale;     /* progressive pass: the estimate radius is
                                   this times the k-nearest radius (1) */
+    double white[3][3];        /* rgb of a white photon on pigment p:
+                                  white·p (pmap_white_matrix) */
 };
 
 /* photon_map_build() against any world. */
@@ -56,6 +58,14 @@ bool pmap_shoots(const iris_light *l, const iris_object *target);
 ** critical angle. *cos_t gets the cosine of the refraction angle.
 */
 double pmap_fresnel(double cos_i, double eta, double *cos_t);
+
+/*
+** The mean over the spectrum of Burns' reflectance curve of pigment rgb
+** times the RGB weight: out[k][c] = (1/400)·integral rho_{e_c}(lambda)·
+** w_k(lambda) dlambda, so a white photon of power P on pigment p adds
+** P·out·p (the identity for a white pigment). Midpoint rule, 0.1 nm.
+*/
+void pmap_white_matrix(double out[3][3]);
 
 /* The gather radius POV-Ray picks automatically (semantics §2.6). */
 double pmap_auto_radius(const struct pstore *s, int gather_max);

@@ -9,7 +9,9 @@
 **                          bounding box of the stored photons
 **   bits 60..61 of 'pos'   kd split axis of the node (0, 1, 2)
 **   'power'                scalar photon power (float)
-**   'lambda_q'             wavelength, 380 + 400·q/65535 nm (0.006 nm)
+**   'lambda_q'             wavelength, 380 + 400·q/65535 nm (0.006 nm);
+**                          PSTORE_WHITE (65535): a white photon, the same
+**                          at every wavelength (raw lambda < 0)
 **   'dir_q'                unit direction towards where the photon came
 **                          from, octahedral map with 8 + 8 bits (~1 deg)
 **
@@ -71,6 +73,8 @@ IRIS_NODISCARD enum iris_status pstore_build(struct pstore *s,
                                              size_t n);
 
 void pstore_fini(struct pstore *s);
+
+#define PSTORE_WHITE 65535u
 
 /* Decodes photon 'i'. */
 vec3 pstore_position(const struct pstore *s, size_t i);

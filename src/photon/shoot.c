@@ -81,6 +81,7 @@ struct combo {
                                   light direction; a, b complete a basis */
     vec3 origin;               /* the light's location */
     double rad, dist;
+    double est_rad;            /* the target sphere's radius, for count */
     double dtheta, theta_max;
     int n1, n2;                /* area-light photon grid (1x1 if none) */
     vec3 axis1, axis2;
@@ -193,8 +194,17 @@ static enum iris_status find_combos(struct shoot *s)
             c->tc.max_level = max_level;
             c->tc.mat = s->opts->mat;
             spec_emitter_init(&c->em, l);
+            /* a flat emission (white or grey D65-shaped light) leaves the
+            ** photon's power independent of its wavelength */
+            double e0 = spec_emitter_eval(&c->em, SPEC_LAMBDA_MIN);
+            for (int k = 1; k <= 80 && !c->tc.chromatic; k++)
+                if (fabs(spec_emitter_eval(&c->em, SPEC_LAMBDA_MIN +
+                                                       5.0 * k) - e0) >
+                    1e-12 * fabs(e0))
+                    c->tc.chromatic = true;
             c->ctr = v3_scale(v3_add(lo, hi), 0.5);
             c->rad = 0.5 * v3_len(v3_sub(hi, lo));
+            c->est_rad = c->rad;
             c->origin = l->location;
             if (c->tc.parallel) {
                 c->axis = v3_norm(v3_sub(l->point_at, l->location));
@@ -251,7 +261,9 @@ static double spacing_for(const struct shoot *s)
     for (int i = 0; i < s->n_combos; i++) {
         const struct combo *c = &s->combos[i];
         const iris_object *t = c->tc.target;
-        double x = M_PI * pow(c->rad / (t->photon_density * sp), 2.0);
+        /* the whole target sphere, as POV-Ray, also for cylinder beams
+        ** (whose rings stop at the beam: find_combos) */
+        double x = M_PI * pow(c->est_rad / (t->photon_density * sp), 2.0);
         bool rfr = t->photon_refraction == IRIS_ON ||
                    c->tc.light->photon_refraction == IRIS_ON;
         bool rfl = t->photon_reflection == IRIS_ON ||
@@ -542,6 +554,7 @@ enum iris_status pmap_build(const iris_scene *scene, const struct pmap_world *w,
     m->expand_tol = ps->expand_tol;
     m->expand_min = ps->expand_min;
     m->cone_k = 1.0;
+    pmap_white_matrix(m->white);
     double rmul = ps->radius_mul > 0.0 ? ps->radius_mul : 1.0;
     m->radius = ps->radius > 0.0 ? ps->radius
                                  : pmap_auto_radius(&m->store, m->gather_max);

@@ -18,6 +18,12 @@
 **  - Mirror reflection of surfaces without an interior (finish
 **    reflection) is taken with Russian roulette on the spectral
 **    reflectivity.
+** White photons: when nothing on a photon's path depends on its wavelength
+** (a light of flat emission, no dispersive medium, grey filters, fades and
+** mirrors) the same path and power hold at every wavelength, and the photon
+** is stored as white (pstore.h): it stands for the whole spectrum, and the
+** estimate weighs it by the spectrum's mean instead of by one wavelength's
+** RGB weight, so scenes without dispersion get no colour noise.
 ** As in POV-Ray: photons pass through no_shadow objects (they are "shadow
 ** rays" for this purpose), but NOT through no_image objects, although
 ** POV-Ray 3.7 lets them pass (photons are launched as primary rays, so
@@ -60,6 +66,12 @@ static double clamp01(double x)
     return x > 1.0 ? 1.0 : (x > 0.0 ? x : 0.0);
 }
 
+/* A grey colour upsamples to a flat curve (spectrum.h): no lambda. */
+static bool grey(const double rgb[3])
+{
+    return rgb[0] == rgb[1] && rgb[1] == rgb[2];
+}
+
 /* What a photon needs of the surface it hits. */
 struct psurf {
     double transm;             /* spectral transmittance of the layers */
@@ -68,6 +80,8 @@ struct psurf {
     vec3 n;                    /* top layer normal, facing the photon */
     double refl[3];            /* top layer reflection colour */
     bool reflects;
+    bool transm_grey;          /* the transmittance is the same at every
+                                  wavelength */
 };
 
 /*
@@ -87,6 +101,7 @@ static void eval_surface(const struct ptrace_combo *c, const struct hit *h,
     s->fin = h->texture ? h->texture->finish : NULL;
     s->n = nf;
     s->reflects = false;
+    s->transm_grey = true;
     double cos_i = -v3_dot(d, nf);
     if (!c->mat) {
         iris_colour col = { 0, 0, 0, 0, 0 };
@@ -95,6 +110,7 @@ static void eval_surface(const struct ptrace_combo *c, const struct hit *h,
         double rgb[3] = { col.r, col.g, col.b };
         s->transm = clamp01(col.f * clamp01(spec_reflectance(rgb, lambda)) +
                             col.t);
+        s->transm_grey = grey(rgb) || !(col.f > 0.0);
         s->opacity = 1.0 - col.f - col.t;
         if (s->fin) {
             double fl = pow(1.0 - cos_i, s->fin->reflection_falloff);
@@ -131,6 +147,8 @@ static void eval_surface(const struct ptrace_combo *c, const struct hit *h,
         double rgb[3] = { ly->pigment.r, ly->pigment.g, ly->pigment.b };
         t *= clamp01(ly->pigment.f * clamp01(spec_reflectance(rgb, lambda)) +
                      ly->pigment.t);
+        if (!grey(rgb) && ly->pigment.f > 0.0)
+            s->transm_grey = false;
     }
     s->transm = t;
     if (st->n > 0 && ev.layers[st->first].valid) {
@@ -166,6 +184,8 @@ static bool allowed(enum iris_tristate obj, enum iris_tristate light)
            (obj != IRIS_OFF && light == IRIS_ON);
 }
 
+/* Stores a photon; lambda < 0 marks one whose path and power are the same
+** at every wavelength (pstore.h: a white photon). */
 static void deposit(struct ptrace_out *out, vec3 p, double power,
                     double lambda, vec3 from)
 {
@@ -206,6 +226,7 @@ void ptrace_photon(const struct pmap_world *w, const struct ptrace_combo *c,
         stack[i] = c->stack[i];
     double depth = 0.0;
     struct hit h;
+    bool chroma = c->chromatic; /* has lambda changed anything yet? */
     for (int level = 1; level <= c->max_level && power > 0.0; level++) {
         ray ry = { o, d };
         if (!w->intersect(w->ctx, &ry, w->epsilon, INFINITY,
@@ -213,8 +234,14 @@ void ptrace_photon(const struct pmap_world *w, const struct ptrace_combo *c,
             return;
         depth += h.t;
         /* Absorption in the medium just crossed */
-        if (n_stack > 0)
-            power *= fade_factor(stack[n_stack - 1]->interior, h.t, lambda);
+        if (n_stack > 0) {
+            const iris_interior *fi = stack[n_stack - 1]->interior;
+            power *= fade_factor(fi, h.t, lambda);
+            if (fi && fi->fade_power > 0.0 &&
+                !(fi->fade_colour.r == fi->fade_colour.g &&
+                  fi->fade_colour.g == fi->fade_colour.b))
+                chroma = true;
+        }
         const iris_object *obj = h.obj;
         /* The first surface must belong to the target */
         if (level == 1 && h.top != c->target && obj != c->target &&
@@ -234,7 +261,7 @@ void ptrace_photon(const struct pmap_world *w, const struct ptrace_combo *c,
                 p *= depth * depth;
             if (c->fade_power > 0.0 && fabs(c->fade_distance) > 1e-10)
                 p *= 2.0 / (1.0 + pow(depth / c->fade_distance, c->fade_power));
-            deposit(out, h.p, p, lambda, v3_neg(d));
+            deposit(out, h.p, p, chroma ? lambda : -1.0, v3_neg(d));
             if (out->failed)
                 return;
         }
@@ -243,6 +270,7 @@ void ptrace_photon(const struct pmap_world *w, const struct ptrace_combo *c,
         if (obj->photon_pass_through) {
             /* Straight on, filtered; POV-Ray counts the level too */
             power *= transm;
+            chroma = chroma || !sf.transm_grey;
             o = h.p;
             continue;
         }
@@ -284,6 +312,11 @@ void ptrace_photon(const struct pmap_world *w, const struct ptrace_combo *c,
             }
             double cos_t;
             double eta = n_from / n_to;
+            /* n(lambda) decides the path: only dispersive media tie it to
+            ** the wavelength */
+            chroma = chroma || ior_is_dispersive(h.interior);
+            for (int i = 0; i < n_stack && !chroma; i++)
+                chroma = ior_is_dispersive(stack[i]->interior);
             double f = pmap_fresnel(cos_i, eta, &cos_t);
             if (u < f) {
                 /* Reflection off the outside needs 'reflection on', as
@@ -297,6 +330,7 @@ void ptrace_photon(const struct pmap_world *w, const struct ptrace_combo *c,
                 d = v3_norm(v3_add(v3_scale(d, eta),
                                    v3_scale(nf, eta * cos_i - cos_t)));
                 power *= transm;
+                chroma = chroma || !sf.transm_grey;
                 if (action == 0 && n_stack < PTRACE_MAX_STACK)
                     stack[n_stack++] = obj;
                 else if (action == 1)
@@ -311,6 +345,7 @@ void ptrace_photon(const struct pmap_world *w, const struct ptrace_combo *c,
             /* A mirror: POV-Ray's reflection colour (falloff, metallic),
             ** as a spectral reflectivity taken by Russian roulette */
             double p = clamp01(spec_reflectance(sf.refl, lambda));
+            chroma = chroma || !grey(sf.refl);
             if (!(u < p))
                 return;
             d = v3_norm(v3_reflect(d, nf));

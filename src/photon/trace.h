@@ -19,6 +19,7 @@ struct ptrace_combo {
     bool parallel;             /* no D^2 in the stored power */
     double fade_distance, fade_power; /* the light's fade */
     int max_level;             /* photon max_trace_level */
+    bool chromatic;            /* the light's emission varies with lambda */
     const struct mat_ctx *mat; /* NULL: solid pigments (tests) */
     int n_stack;               /* interiors containing the light */
     const iris_object *stack[PTRACE_MAX_STACK];

@@ -63,16 +63,23 @@ static void trace_sample(struct job *j, struct trace_ctx *c, double x,
                          double y, double rgb[3])
 {
     rng_seed(&c->rng, j->opts->seed, 1, pos_key(x, y));
+    /* Only the used part of the interior stack is set: clearing and
+    ** copying the whole struct cost more than a simple scene's shading. */
     struct tray r;
-    memset(&r, 0, sizeof r);
+    r.reflected = false;
+    r.lambda = 0.0;
+    r.tmin = 0.0;
     rgb[0] = rgb[1] = rgb[2] = 0.0;
     if (!camera_ray(&j->scene->camera, j->opts->width, j->opts->height, x, y,
                     &r.r))
         return;
-    if (j->ortho)
+    if (j->ortho) {
         trace_containing(j->tracer, r.r.o, &r.st);
-    else
-        r.st = j->cam_stack;
+    } else {
+        r.st.n = j->cam_stack.n;
+        for (int i = 0; i < r.st.n; i++)
+            r.st.e[i] = j->cam_stack.e[i];
+    }
     c->level = 0;
     trace_ray(c, &r, 1.0, false, rgb);
     for (int k = 0; k < 3; k++)

@@ -221,7 +221,7 @@ static bool another_pass(const iris_render_options *opts, int pass,
     if (opts->passes > 0 && pass >= opts->passes)
         return false;
     if (opts->passes <= 0 && opts->time_limit <= 0.0)
-        return pass < 1; /* --resume alone: one more pass */
+        return pass == first; /* --resume alone: one more pass */
     /* The time limit: stop when the next pass, as long as the last one,
     ** would end past it; this run always does at least one pass */
     if (opts->time_limit > 0.0 && pass > first &&
@@ -326,10 +326,10 @@ enum iris_status progressive_run(struct tracer *tr, const struct accel *acc,
         }
         if (opts->progress)
             opts->progress(opts->progress_user, "passes",
-                           opts->passes > 0
-                               ? (double)a.passes / opts->passes
-                               : fmin(1.0, (now - t_start) /
-                                               opts->time_limit));
+                           opts->passes > 0 ? (double)a.passes / opts->passes
+                           : opts->time_limit > 0.0
+                               ? fmin(1.0, (now - t_start) / opts->time_limit)
+                               : 1.0);
         if (opts->checkpoint && opts->checkpoint[0] &&
             now - last_ckpt >= CHECKPOINT_EVERY_S) {
             double keep = a.seconds;

@@ -209,6 +209,8 @@ enum iris_status iris_render(const iris_scene *scene,
         set_err(err, errlen, "iris_render: out of memory building materials");
         return st;
     }
+    mat_ctx_set_quick_colour(mat, (trace_quality_flags(plan.quality) &
+                                   TQ_QUICK_COLOUR) != 0);
     struct rquery q = { acc, accel_isect, accel_in, accel_epsilon(acc) };
     struct tracer tr;
     if (!tracer_init(&tr, scene, mat, &q, plan.quality)) {

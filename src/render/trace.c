@@ -32,6 +32,7 @@ unsigned trace_quality_flags(int q)
     if (q > 9) q = 9;
     unsigned f = 0;
     if (q <= 1) f |= TQ_FULL_AMBIENT;
+    if (q <= 5) f |= TQ_QUICK_COLOUR;
     if (q >= 4) f |= TQ_SHADOW;
     if (q >= 5) f |= TQ_AREA_LIGHT;
     if (q >= 6) f |= TQ_REFRACT;
@@ -175,6 +176,13 @@ void trace_containing(const struct tracer *t, vec3 p,
     }
 }
 
+/* The tmin of a ray leaving a hit with offset 'eps' (struct hit's eps,
+** at most the scene's accel epsilon; docs/numerics.md §1). */
+static double leave_eps(const struct tracer *t, double eps)
+{
+    return eps > 0.0 && eps < t->q.eps ? eps : t->q.eps;
+}
+
 static unsigned skip_flags(const struct tray *r)
 {
     return r->reflected ? ACCEL_SKIP_NO_REFLECTION : ACCEL_SKIP_NO_IMAGE;
@@ -268,11 +276,16 @@ static void shadow_colour(struct trace_ctx *c, const struct interior_stack *st,
 ** of a segment inside an object applies. */
 static void point_shadow(struct trace_ctx *c, const struct interior_stack *eye_st,
                          const iris_light *light, const iris_object *lit,
-                         vec3 origin, vec3 L, double depth, double lc[3])
+                         vec3 origin, double eps0, vec3 L, double depth,
+                         double lc[3])
 {
     const struct tracer *t = c->t;
-    double eps = t->q.eps;
-    struct interior_stack stack = *eye_st, *st = &stack;
+    double eps = leave_eps(t, eps0);
+    /* The eye ray's stack is copied (its used part) only once the shadow
+    ** ray crosses a surface: most shadow rays meet nothing or an opaque
+    ** object first. */
+    struct interior_stack stack;
+    const struct interior_stack *st = eye_st;
     for (int guard = 0; guard < 1024; guard++) {
         ray r = { origin, L };
         struct hit h;
@@ -292,14 +305,21 @@ static void point_shadow(struct trace_ctx *c, const struct interior_stack *eye_s
             lc[0] = lc[1] = lc[2] = 0.0;
             return;
         }
-        int idx = stack_find(st, interior_key(&h));
+        if (st != &stack) {
+            stack.n = eye_st->n;
+            for (int i = 0; i < eye_st->n; i++)
+                stack.e[i] = eye_st->e[i];
+            st = &stack;
+        }
+        int idx = stack_find(&stack, interior_key(&h));
         if (idx >= 0)
-            stack_remove(st, idx);
+            stack_remove(&stack, idx);
         else
-            stack_push(st, interior_key(&h), h.interior,
+            stack_push(&stack, interior_key(&h), h.interior,
                        h.obj ? h.obj->hollow : true);
         depth -= h.t;
         origin = h.p;
+        eps = leave_eps(t, h.eps);
     }
 }
 
@@ -314,6 +334,7 @@ struct area_job {
     const iris_object *lit;
     vec3 p, a1, a2;
     double lc[3];              /* the light colour entering the test */
+    double eps;                /* the lit hit's offset */
 };
 
 /* One grid sample (u, v): a point-light shadow test from a (jittered)
@@ -337,7 +358,7 @@ static void area_sample(struct trace_ctx *c, const struct area_job *j,
     double depth;
     light_ray(l, j->p, off, &L, &depth);
     memcpy(out, j->lc, sizeof j->lc);
-    point_shadow(c, j->st, l->src, j->lit, j->p, L, depth, out);
+    point_shadow(c, j->st, l->src, j->lit, j->p, j->eps, L, depth, out);
     memcpy(c->grid[idx], out, sizeof c->grid[idx]);
     c->grid_set[idx] = true;
 }
@@ -391,7 +412,8 @@ static void area_axes(const struct rlight *l, vec3 p, vec3 *a1, vec3 *a2)
 /* POV-Ray's TraceShadowRay: past max_trace_level the light is black. */
 static void trace_shadow(struct trace_ctx *c, const struct interior_stack *st,
                          const struct rlight *l, const iris_object *lit,
-                         vec3 p, vec3 L, double depth, double lc[3])
+                         vec3 p, double eps, vec3 L, double depth,
+                         double lc[3])
 {
     const struct tracer *t = c->t;
     if (c->level > t->max_level) {
@@ -401,13 +423,13 @@ static void trace_shadow(struct trace_ctx *c, const struct interior_stack *st,
     c->level++;
     if (l->area && (t->quality & TQ_AREA_LIGHT)) {
         struct area_job j = { l, st, lit, p, v3(0, 0, 0), v3(0, 0, 0),
-                              { lc[0], lc[1], lc[2] } };
+                              { lc[0], lc[1], lc[2] }, eps };
         area_axes(l, p, &j.a1, &j.a2);
         memset(c->grid_set, 0,
                (size_t)(l->size1 * l->size2) * sizeof *c->grid_set);
         area_subset(c, &j, 0, 0, l->size1 - 1, l->size2 - 1, 0, lc);
     } else {
-        point_shadow(c, st, l->src, lit, p, L, depth, lc);
+        point_shadow(c, st, l->src, lit, p, eps, L, depth, lc);
     }
     c->level--;
 }
@@ -525,7 +547,8 @@ static void full_area_light(struct trace_ctx *c, const struct layer_shade *s,
                 continue;
             if ((c->t->quality & TQ_SHADOW) && !l->fill) {
                 c->level++;
-                point_shadow(c, &s->eye->st, l->src, s->h->obj, s->h->p, L,
+                point_shadow(c, &s->eye->st, l->src, s->h->obj, s->h->p,
+                             s->h->eps, L,
                              depth, lc);
                 c->level--;
             }
@@ -574,7 +597,8 @@ static void diffuse_light(struct trace_ctx *c, const struct layer_shade *s,
             if (i < MAX_CACHED_LIGHTS && cache->tested[i]) {
                 memcpy(lc, cache->colour[i], sizeof lc);
             } else {
-                trace_shadow(c, &s->eye->st, l, s->h->obj, p, L, depth, lc);
+                trace_shadow(c, &s->eye->st, l, s->h->obj, p, s->h->eps, L,
+                             depth, lc);
                 if (i < MAX_CACHED_LIGHTS) {
                     cache->tested[i] = true;
                     memcpy(cache->colour[i], lc, sizeof lc);
@@ -615,9 +639,11 @@ static void reflect(struct trace_ctx *c, const struct tray *eye,
         else
             R = v3_madd(R, raw, -2.0 * k);
     }
-    struct tray nr = *eye;
+    struct tray nr;
+    tray_copy(&nr, eye);
     nr.r.o = h->p;
     nr.r.d = v3_norm(R);
+    nr.tmin = h->eps;
     nr.reflected = true;
     trace_ray(c, &nr, weight, false, out);
     if (f && f->irid > 0.0)
@@ -648,7 +674,8 @@ static bool refract_one(struct trace_ctx *c, const struct tray *eye,
             out[k] += tmp[k];
         return true;
     }
-    struct tray nr = *nr_in;
+    struct tray nr;
+    tray_copy(&nr, nr_in);
     nr.r.o = h->p;
     nr.r.d = T;
     out[0] = out[1] = out[2] = 0.0;
@@ -670,7 +697,8 @@ static void refract_spectral(struct trace_ctx *c, const struct tray *eye,
         double lambda = SPEC_LAMBDA_MIN + SPEC_LAMBDA_RANGE *
                         (i + rng_uniform(&c->rng)) / n_samples;
         double eta = ior_eval(from, lambda) / ior_eval(to, lambda);
-        struct tray band = *nr;
+        struct tray band;
+        tray_copy(&band, nr);
         band.lambda = lambda;
         double col[3] = { 0, 0, 0 };
         (void)refract_one(c, eye, &band, h, f, n_top, raw, local, eta,
@@ -695,7 +723,9 @@ static bool refraction(struct trace_ctx *c, const struct tray *eye,
     const iris_interior *in = h->interior;
     const void *key = interior_key(h);
     bool hollow = h->obj ? h->obj->hollow : true;
-    struct tray nr = *eye;
+    struct tray nr;
+    tray_copy(&nr, eye);
+    nr.tmin = h->eps;
     struct interior_stack *st = &nr.st;
     const iris_interior *from = NULL, *to = NULL;
     bool straight = false;
@@ -1077,8 +1107,8 @@ double trace_ray(struct trace_ctx *c, const struct tray *r, double weight,
         return HUGE_VAL;
     struct hit h;
     c->rays++;
-    bool found = t->q.intersect(t->q.impl, &r->r, t->q.eps, t->max_distance,
-                                skip_flags(r), &h);
+    bool found = t->q.intersect(t->q.impl, &r->r, leave_eps(t, r->tmin),
+                                t->max_distance, skip_flags(r), &h);
     if (found && !(h.t > 0 && isfinite(h.t)))
         found = false;
     if (!continued)

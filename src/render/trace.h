@@ -32,7 +32,8 @@
 /* Quality switches of POV-Ray's +Q levels (povrayold.h). */
 enum trace_quality {
     TQ_FULL_AMBIENT = 1, TQ_SHADOW = 2, TQ_AREA_LIGHT = 4, TQ_REFRACT = 8,
-    TQ_REFLECT = 16, TQ_NORMAL = 32, TQ_VOLUME = 64, TQ_ADVANCED = 128
+    TQ_REFLECT = 16, TQ_NORMAL = 32, TQ_VOLUME = 64, TQ_ADVANCED = 128,
+    TQ_QUICK_COLOUR = 256
 };
 
 /* The quality flags of +Q 'q' (clipped to 0..9). */
@@ -106,7 +107,25 @@ struct tray {
     struct interior_stack st;
     bool reflected;            /* once reflected, no longer an image ray */
     double lambda;             /* wavelength in nm, 0 = RGB */
+    double tmin;               /* the hit's eps a secondary ray leaves
+                                  from (docs/numerics.md §1); 0 = the
+                                  scene's accel epsilon */
 };
+
+/* Copies 'src' to 'dst' without the unused tail of the interior stack
+** (most of the struct's size), as every secondary ray does. */
+static inline void tray_copy(struct tray *dst, const struct tray *src)
+{
+    dst->r = src->r;
+    dst->reflected = src->reflected;
+    dst->lambda = src->lambda;
+    dst->tmin = src->tmin;
+    int n = src->st.n < 0 ? 0 : src->st.n > TRACE_MAX_INTERIORS
+                                    ? TRACE_MAX_INTERIORS : src->st.n;
+    dst->st.n = n;
+    for (int i = 0; i < n; i++)
+        dst->st.e[i] = src->st.e[i];
+}
 
 /* One thread's scratch space. */
 struct trace_ctx {

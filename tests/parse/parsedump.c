@@ -3,10 +3,12 @@
 ** parsedump.c: parses a scene and prints its dump (or its diagnostics),
 ** the driver of the golden tests in tests/parse/cases.
 **
-** usage: parsedump [-w] [-L dir] [-D name=value] [-n max_while] file.pov
+** usage: parsedump [-w] [-q] [-U] [-W] [-L dir] [-D name=value]
+**                  [-n max_while] [-m MiB] file.pov
 ** Prints every diagnostic with iris_diag_format(), then the scene dump
 ** when the parse succeeded; exits 0 on success, 2 on a parse error.
-** -w hides warnings.
+** -w hides warnings; -q prints no dump; -U reads files anywhere
+** (IRIS_IO_UNRESTRICTED); -W allows #fopen write in the scene's directory.
 */
 #include "config.h"
 
@@ -30,6 +32,10 @@ int main(int argc, char **argv)
             no_warn = true;
         } else if (!strcmp(argv[i], "-q")) {
             dump = false;
+        } else if (!strcmp(argv[i], "-U")) {
+            opt.read_policy = IRIS_IO_UNRESTRICTED;
+        } else if (!strcmp(argv[i], "-W")) {
+            opt.allow_writes = true;
         } else if (!strcmp(argv[i], "-L") && np < 16) {
             paths[np++] = argv[++i];
         } else if (!strcmp(argv[i], "-n")) {
@@ -50,7 +56,7 @@ int main(int argc, char **argv)
         }
     }
     if (i != argc - 1) {
-        fprintf(stderr, "usage: parsedump [-w] [-q] [-L dir] [-D n=v] "
+        fprintf(stderr, "usage: parsedump [-w] [-q] [-U] [-W] [-L dir] [-D n=v] "
                 "[-n max] [-m MiB] file.pov\n");
         return 64;
     }

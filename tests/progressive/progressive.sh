@@ -46,33 +46,36 @@ rc=$?
 grep -q "not an iris checkpoint" "$tmp/err"
 tap_is "a damaged checkpoint is refused with a message" "$rc:$?" "1:0"
 
-# Error log against a reference: an independent long run (another seed).
-# The relative RMSE must fall: 8 passes below 0.8 of 1 pass (expected
-# ratio about 8^-1/3 = 0.5 for bias and noise alike, and the reference's
-# own error, ~1/3 of one pass, is common to both).
-r -o "$tmp/ref.exr" --passes 24 --seed 7
-r -o "$tmp/e.exr" --passes 8 --reference "$tmp/ref.exr" \
+# Error log against a reference: an independent long run (96 passes,
+# another seed). The relative RMSE must fall from 4 to 16 passes, below
+# 0.8 times (expected 4^-1/3 = 0.63 for the photon estimate's bias and
+# noise, 0.5 for the eye jitter's noise; measured 0.6). The first passes
+# are not compared: pass 1 samples pixel centres, as the reference's does,
+# and the coarse pixels' jitter noise first grows the error.
+r -o "$tmp/ref.exr" --passes 96 --seed 7
+r -o "$tmp/e.exr" --passes 16 --reference "$tmp/ref.exr" \
     --error-log "$tmp/err.csv"
 tap_is "the error log has a header and one line a pass" \
     "$(head -1 "$tmp/err.csv"),$(($(wc -l <"$tmp/err.csv") - 1))" \
-    "time_s,passes,photons,rmse,rel_rmse,bias,8"
-tap_ok "... with passes 1..8 and increasing photons and time" awk -F, '
+    "time_s,passes,photons,rmse,rel_rmse,bias,16"
+tap_ok "... with passes 1..16 and increasing photons and time" awk -F, '
     NR > 1 { if ($2 != NR - 1 || $3 <= p || $1 < t || NF != 6) bad = 1;
              p = $3; t = $1 } END { exit bad }' "$tmp/err.csv"
-first=$(awk -F, 'NR == 2 { print $5 }' "$tmp/err.csv")
-last=$(awk -F, 'END { print $5 }' "$tmp/err.csv")
-tap_ok "relative RMSE falls: $first (1 pass) -> $last (8)" \
+first=$(awk -F, '$2 == 4 { print $5 }' "$tmp/err.csv")
+last=$(awk -F, '$2 == 16 { print $5 }' "$tmp/err.csv")
+tap_ok "relative RMSE falls: $first (4 passes) -> $last (16)" \
     awk -v a="$first" -v b="$last" 'BEGIN { exit !(b < 0.8 * a && b > 0) }'
 r -o "$tmp/e.exr" --error-log "$tmp/x.csv" 2>/dev/null
 tap_is "--error-log without --reference is a usage error" "$?" "2"
 
-# --time-limit stops on time
+# --time-limit stops on time (whole seconds of wall time; a loaded
+# machine may add a few)
 t0=$(date +%s)
-r -o "$tmp/t.exr" --time-limit 2 --stats "$tmp/t.json"
+r -o "$tmp/t.png" --time-limit 1 --stats "$tmp/t.json"
 t1=$(date +%s)
 n=$(sed -n 's/.*"passes": \([0-9]*\).*/\1/p' "$tmp/t.json")
-tap_ok "--time-limit 2 ran $n passes in $((t1 - t0)) s" \
-    test "$n" -ge 2 -a $((t1 - t0)) -le 6
+tap_ok "--time-limit 1 ran $n passes in $((t1 - t0)) s" \
+    test "$n" -ge 2 -a $((t1 - t0)) -le 4
 
 # SIGINT: the average so far is written, exit 130, checkpoint usable
 # (iris itself in the background: a subshell running it would ignore
@@ -89,15 +92,16 @@ tap_is "SIGINT exits 130" "$?" "130"
 tap_ok "... after writing the image and the checkpoint" \
     test -s "$tmp/int.exr" -a -s "$tmp/int.ckpt"
 
-# Memory stays flat as passes accumulate: a map of ~1e5 photons (2 MB
-# packed, 4 MB raw while building) freed each pass; 8 passes may not
-# use 6 MB more than 2.
+# Memory stays flat as passes accumulate: each pass's map (count 80000:
+# ~36000 photons stored, 0.6 MB packed, 2.3 MB raw while building) is
+# freed before the next; 8 passes may not use 1.5 MB more than 2. PNG
+# output: OpenImageIO (EXR) would add its own allocations to the peak.
 "$IRIS" -q "$scene" +W8 +H8 Declare=Photons=80000 --passes 2 \
-    -o "$tmp/m.exr" --stats "$tmp/m2.json"
+    -o "$tmp/m.png" --stats "$tmp/m2.json"
 "$IRIS" -q "$scene" +W8 +H8 Declare=Photons=80000 --passes 8 \
-    -o "$tmp/m.exr" --stats "$tmp/m8.json"
+    -o "$tmp/m.png" --stats "$tmp/m8.json"
 m2=$(sed -n 's/.*"peak_rss_bytes": \([0-9]*\).*/\1/p' "$tmp/m2.json")
 m8=$(sed -n 's/.*"peak_rss_bytes": \([0-9]*\).*/\1/p' "$tmp/m8.json")
 tap_ok "flat memory: peak RSS $m2 (2 passes), $m8 (8 passes)" \
-    test $((m8 - m2)) -lt 6000000
+    test $((m8 - m2)) -lt 1500000
 [ "$tap_failed" -eq 0 ]

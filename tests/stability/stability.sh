@@ -80,7 +80,7 @@ run_case() {
     name=$1; bound=$2; todo=$3; scene=$4; shift 4
     args="$*"
     size="+W$W +H$H"
-    case $name in trap*) size="+W24 +H18" ;; esac
+    case $name in trap*|*endless) size="+W24 +H18" ;; esac
     why=""
     # Random (spectral, photon) and deep (trap) cases render twice, side
     # by side on the two cores; the plain RGB ones once, to save time.
@@ -175,17 +175,28 @@ run_case grazing        "rgb 1" "" grazing.pov
 run_case shapes_degenerate "rgb 1" "" shapes.pov Declare=KIND=0
 run_case shapes_stiff   "rgb 1" "" shapes.pov Declare=KIND=1
 run_case shapes_extreme "rgb 1" "" shapes.pov Declare=KIND=2
+run_case shapes_transforms "rgb 1" "" shapes.pov Declare=KIND=3
+run_case shapes_endless "rgb 1" "" shapes.pov Declare=KIND=4
 
 # A 1e-4 shell in a scene a million times larger (a hidden sphere of
 # radius 1e6): the hidden sphere must not change a pixel. The global
 # accel_epsilon() becomes 1e-3 there; hit.eps (src/accel) stays 1e-9 of
-# the shell, but only when the tracer starts secondary rays with it.
+# the shell, and the tracer starts secondary rays with it.
 render thin_nosky "+W$W +H$H" "$scenes/thin.pov" Declare=T=1e-4
 render thin_sky "+W$W +H$H" "$scenes/thin.pov" Declare=T=1e-4 Declare=SKY=1
 out=$("$check" same "$tmp/thin_nosky.exr" "$tmp/thin_sky.exr" 2>&1)
-todo_result $? "a 1e-4 shell renders the same inside a 1e6 sphere" \
-    "secondary rays start at the global accel_epsilon(), not at hit.eps (src/render/trace.c, src/photon/trace.c)"
+todo_result $? "a 1e-4 shell renders the same inside a 1e6 sphere" ""
 [ -n "$out" ] && echo "# $out"
+# ... and with photons: the hidden sphere only collects a few stray
+# photons, so the caustic under the shell must stay (30 dB allows photon
+# noise; without the caustic the PSNR is 17 dB).
+render thin_ph "+W$W +H$H" "$scenes/thin.pov" Declare=T=1e-2 Declare=PHOTONS=1
+render thin_ph_sky "+W$W +H$H" "$scenes/thin.pov" Declare=T=1e-2 \
+    Declare=PHOTONS=1 Declare=SKY=1
+p=$("$imgtool" psnr "$tmp/thin_ph.exr" "$tmp/thin_ph_sky.exr" 2>&1)
+awk -v p="$p" 'BEGIN { exit !(p + 0 >= 30) }'
+todo_result $? "the caustic stays when a hidden 1e6 sphere is added (PSNR $p dB >= 30)" \
+    "stray photons stored on the far sphere make the one global gather radius of pmap_auto_radius (src/photon/estimate.c) 1.37 instead of 0.35 and blur the caustic away; DESIGN asks for a per-point radius"
 
 # The same scene at scale 1e-6 and 1e6 (camera, light, checker and glass
 # all scaled): the same image. 40 dB on sRGB values is an RMS difference
@@ -226,17 +237,24 @@ run_case ph_light_inside "none" "" inside.pov $PH Declare=KIND=1
 run_case ph_thin_shell  "none" "" thin.pov $PH
 run_case ph_scale_1e-6  "none" "" $G $PH Declare=S=1e-6 Declare=DISP=1.2
 
-# Flux conservation of the photon map (caustic.pov): mean floor
-# luminance in [0.9, 1.05]. Above 1 by more than the estimate's noise
-# (5%) is energy created; below 0.9 means the caustic does not replace
-# the black shadow (the ball covers 17% of the view and returns at most
-# its ~5-10% Fresnel reflection to the sky).
-for d in 1 1.2; do
-    render caustic_$d "+W$W +H$H" "$scenes/caustic.pov" Declare=DISP=$d
-    set -- $("$check" "$tmp/caustic_$d.exr" 2>/dev/null)
-    awk -v m="${4:-x}" -v b="${1:-x}" \
-        'BEGIN { exit !(b == 0 && m >= 0.9 && m <= 1.05) }'
-    todo_result $? "caustic, dispersion $d: floor mean Y ${4:-?} in [0.9, 1.05]" ""
+# Flux conservation of the photon map (caustic.pov). A Monte Carlo trace
+# of the ball (exact Fresnel, TIR) expects a mean floor luminance of
+# 0.979; iris gives 0.974-0.985 at 192x144 (48x36 pixel centres sample the
+# spiky caustic too coarsely: 0.91-0.95). Accepted: [0.95, 1.02]. Above is
+# energy created; below, the caustic does not replace the black shadow
+# (no caustic at all gives 0.832). At spacing 0.005 with seed 7 (0.01,
+# 0.008 with seed 0) the automatic gather radius collapses to ~1e-15 and
+# the caustic vanishes.
+for c in "1 0.02" "1.2 0.02" "1 0.005"; do
+    set -- $c
+    render caustic "+W192 +H144" "$scenes/caustic.pov" Declare=DISP=$1 \
+        Declare=SPACING=$2
+    todo=""
+    [ "$2" = 0.005 ] && todo="pmap_auto_radius (src/photon/estimate.c) averages n/(pi r^2) over samples; one whose k neighbours nearly coincide at the focus dominates the mean and the radius becomes ~1e-15"
+    set -- $1 $2 $("$check" "$tmp/caustic.exr" 2>/dev/null)
+    awk -v m="${6:-x}" -v b="${3:-x}" \
+        'BEGIN { exit !(b == 0 && m >= 0.95 && m <= 1.02) }'
+    todo_result $? "caustic, dispersion $1, spacing $2: floor mean Y ${6:-?} in [0.95, 1.02]" "$todo"
 done
 
 echo "1..$tap_n"

@@ -73,6 +73,7 @@ static bool dbl_intersect(const void *impl, const ray *r, double tmin,
         h->obj = h->top = o;
         h->texture = o->texture;
         h->interior = o->interior;
+        h->eps = 1e-6; /* the double's accel epsilon (dbl_query) */
     }
     return found;
 }

@@ -2,7 +2,8 @@
 /*
 ** test_fn.c: the function evaluator (src/fn) on hand-assembled programs,
 ** and the internal functions of functions.inc against their analytic
-** definitions.
+** definitions. (Their values against POV-Ray's own output are checked by
+** the golden case tests/parse/cases/fn_povray.)
 */
 #include "config.h"
 
@@ -113,6 +114,47 @@ static void test_internals(void **state)
     assert_near(iris_fn_internal(999, a, 3), 0, 0);
 }
 
+/* sum(i, 1, 4, i * x) with x = 0.5 is 0.5 * (1+2+3+4) = 5; bounds are
+** inclusive (POV-Ray). A huge bound stops at the term cap instead of
+** hanging; a product over an empty range is 1. */
+static void test_sum(void **state)
+{
+    (void)state;
+    iris_fn_insn body[] = {
+        ins(IRIS_FN_PARAM, 3, 0, 0), ins(IRIS_FN_PARAM, 0, 0, 0),
+        ins(IRIS_FN_MUL, 0, 0, 0),
+    };
+    iris_fn b = { 4, NULL, 3, body, 2, 1 };
+    iris_fn_insn code[] = {
+        ins(IRIS_FN_CONST, 0, 0, 1), ins(IRIS_FN_CONST, 0, 0, 4),
+        ins(IRIS_FN_SUM, 0, 3, 0),
+    };
+    code[2].callee = &b;
+    iris_fn fn = { 3, NULL, 3, code, 2, 1 };
+    double a[3] = { 0.5, 0, 0 };
+    assert_near(iris_fn_eval(&fn, a, 3), 5, 0);
+    code[1].value = 1e12;       /* capped at 1e6 terms: sum 0.5 * n(n+1)/2 */
+    assert_near(iris_fn_eval(&fn, a, 3), 0.5 * 1e6 * (1e6 + 1) / 2, 1);
+    code[1].value = 0;
+    code[2].arg = 1;            /* prod over 1..0: empty */
+    assert_near(iris_fn_eval(&fn, a, 3), 1, 0);
+}
+
+/* Parameters that drive loops (octaves, tube counts) cannot hang: a
+** billion octaves of f_ridged_mf/f_hetero_mf and a billion tubes of
+** f_polytubes return finite values (they stop at 1000). */
+static void test_internal_limits(void **state)
+{
+    (void)state;
+    double r[9] = { 0.3, 0.7, -0.4, 0.5, 2, 1e9, 1, 2, 2 };
+    assert_true(isfinite(iris_fn_internal(59, r, 9)));
+    assert_true(isfinite(iris_fn_internal(29, r, 9)));
+    double t[9] = { 0.3, 0.7, -0.4, 1e9, 0.5, 0.1, 0, 0, 0 };
+    assert_true(isfinite(iris_fn_internal(52, t, 9)));
+    double n[4] = { 1e300, -1e300, NAN, 7 };
+    assert_true(isfinite(iris_fn_internal(78, n, 4)));
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -120,6 +162,8 @@ int main(void)
         cmocka_unit_test(test_no_nan),
         cmocka_unit_test(test_select_call),
         cmocka_unit_test(test_internals),
+        cmocka_unit_test(test_sum),
+        cmocka_unit_test(test_internal_limits),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

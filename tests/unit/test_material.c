@@ -614,6 +614,33 @@ static void test_pattern_at(void **state)
     assert_near(v[0], 0, 0);
 }
 
+/* Below quality 6 a pigment with a quick_colour is that colour (POV-Ray's
+** Q_QUICKC); all zero means none was given. */
+static void test_quick_colour(void **state)
+{
+    (void)state;
+    struct mat_ctx *ctx = NULL;
+    assert_int_equal(mat_ctx_create(NULL, NULL, &ctx), IRIS_OK);
+    iris_pigment ck;
+    memset(&ck, 0, sizeof ck);
+    ck.pattern.kind = IRIS_PAT_CHECKER;
+    ck.quick_colour = rgb(0.2, 0.8, 0.3);
+    struct mat_point pt;
+    memset(&pt, 0, sizeof pt);
+    pt.p = v3(0.5, 0.5, 0.5);
+    iris_colour c;
+    mat_eval_pigment(ctx, &ck, &pt, &c);
+    assert_near(c.b, 1, 0); /* the checker's first default colour */
+    mat_ctx_set_quick_colour(ctx, true);
+    mat_eval_pigment(ctx, &ck, &pt, &c);
+    assert_near(c.r, 0.2, 0);
+    assert_near(c.g, 0.8, 0);
+    memset(&ck.quick_colour, 0, sizeof ck.quick_colour);
+    mat_eval_pigment(ctx, &ck, &pt, &c);
+    assert_near(c.b, 1, 0);
+    mat_ctx_destroy(ctx);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -633,6 +660,7 @@ int main(void)
         cmocka_unit_test(test_fractals),
         cmocka_unit_test(test_average_and_entry_warps),
         cmocka_unit_test(test_pattern_at),
+        cmocka_unit_test(test_quick_colour),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

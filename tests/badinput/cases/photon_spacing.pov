@@ -1,4 +1,4 @@
-// expect: 0 3
+// expect: 0|2 3
 #version 3.7;
 global_settings { photons { spacing 1e-9 } }
 camera { location <0,1,-3> look_at 0 } light_source { <0,5,-5>, rgb 1 }

@@ -34,3 +34,8 @@ union { sphere { 0, 1 } box { 0, 1 } }
 merge { sphere { 0, 1 } sphere { x, 1 } }
 intersection { sphere { 0, 1 } box { 0, 1 } inverse }
 difference { box { -1, 1 } sphere { 0, 1.2 } }
+// julia_fractal: the function is an enum iris_julia_fn (cube = 1,
+// reciprocal = 3, pwr = 17 with its exponent), the slice's w in data[5].
+julia_fractal { <0.2, 0.3, 0, 0> quaternion cube slice <0, 0, 1, 0.5>, 0.25 }
+julia_fractal { <0.2, 0.3, 0, 0> hypercomplex reciprocal }
+julia_fractal { <0.2, 0.3, 0, 0> hypercomplex pwr(2, 0.5) }

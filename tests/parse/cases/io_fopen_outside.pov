@@ -1,0 +1,2 @@
+// Issue 7: #fopen ... read may not open a file outside the allowed tree.
+#fopen F "/etc/passwd" read
