@@ -181,12 +181,13 @@ goals "$outdir/caustic_ball-povray-fresnel.csv" \
     "POV-Ray, reflection {fresnel} conserve_energy"
 
 [ "$all" -eq 1 ] || exit 0
-for scene in glass_sphere prism lens gem cornell_glass; do
-    src="$here/../scenes/$scene.pov"
-    [ -f "$src" ] || continue
-    "$IRIS" -q "$src" +W"$size" +H"$size" --threads "$threads" --seed 99 \
-        --time-limit $((tmax * 4)) -o "$outdir/$scene-ref.exr" || continue
-    pov_curve "$src" "$outdir/$scene-ref.exr" "$scene"
-    iris_curve "$src" "$outdir/$scene-ref.exr" "$scene"
-    report "$scene"
+# (sh has no local variables: the loop's names differ from the functions')
+for sn in glass_sphere prism lens gem cornell_glass; do
+    sp="$here/../scenes/$sn.pov"
+    [ -f "$sp" ] || continue
+    "$IRIS" -q "$sp" +W"$size" +H"$size" --threads "$threads" --seed 99 \
+        --time-limit $((tmax * 4)) -o "$outdir/$sn-ref.exr" || continue
+    pov_curve "$sp" "$outdir/$sn-ref.exr" "$sn"
+    iris_curve "$sp" "$outdir/$sn-ref.exr" "$sn"
+    report "$sn"
 done

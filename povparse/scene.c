@@ -78,7 +78,34 @@ static void mesh_camera(pp_state *ps, const pp_token *at)
         if (ps->tok.kind == T_SMOOTH)
             continue;
         pp_token ot = ps->tok;
-        pp_unget(ps);
+        if (ot.kind == T_MESH) {
+            /* mesh { MESH_IDENTIFIER [transformations] }, the form
+            ** POV-Ray's mesh_camera documents */
+            pp_next(ps);
+            pp_token lb = ps->tok;
+            if (lb.kind != T_LBRACE)
+                pp_unexpected(ps, &lb, "mesh");
+            pp_next(ps);
+            if (ps->tok.kind == T_IDENT && ps->tok.val.kind == V_OBJECT) {
+                for (;;) {
+                    pp_next(ps);
+                    if (ps->tok.kind == T_RBRACE)
+                        break;
+                    iris_transform x;
+                    if (!pp_transform_item(ps, &x))
+                        pp_unexpected(ps, &ps->tok, "mesh_camera mesh");
+                }
+                continue;
+            }
+            /* not that form: push back 'mesh' '{' and the token read */
+            pp_unget(ps);
+            ps->tok = lb;
+            pp_unget(ps);
+            ps->tok = ot;
+            pp_unget(ps);
+        } else {
+            pp_unget(ps);
+        }
         if (!pp_object(ps))
             pp_unexpected(ps, &ot, "mesh_camera");
     }

@@ -385,7 +385,8 @@ struct iris_object {
         struct { double data[16]; int type; int iterations;
                  double precision; iris_vec3 slice; double distance;
                  int fn; /* enum iris_julia_fn; data[0..3] = the
-                            parameter, data[5] = slice w */ } julia;
+                            parameter, data[5] = slice w, data[6..7] =
+                            pwr(x, y)'s exponent */ } julia;
         struct { int type; double flatness; int u_steps, v_steps;
                  iris_vec3 points[16]; } bicubic;
         struct { iris_fn *fx, *fy, *fz; iris_vec2 uv_lo, uv_hi;

@@ -3,12 +3,13 @@
 ** parsedump.c: parses a scene and prints its dump (or its diagnostics),
 ** the driver of the golden tests in tests/parse/cases.
 **
-** usage: parsedump [-w] [-q] [-U] [-W] [-L dir] [-D name=value]
+** usage: parsedump [-w] [-q] [-U] [-W] [-s WxH] [-L dir] [-D name=value]
 **                  [-n max_while] [-m MiB] file.pov
 ** Prints every diagnostic with iris_diag_format(), then the scene dump
 ** when the parse succeeded; exits 0 on success, 2 on a parse error.
 ** -w hides warnings; -q prints no dump; -U reads files anywhere
-** (IRIS_IO_UNRESTRICTED); -W allows #fopen write in the scene's directory.
+** (IRIS_IO_UNRESTRICTED); -W allows #fopen write in the scene's directory;
+** -s sets image_width and image_height.
 */
 #include "config.h"
 
@@ -32,6 +33,11 @@ int main(int argc, char **argv)
             no_warn = true;
         } else if (!strcmp(argv[i], "-q")) {
             dump = false;
+        } else if (!strcmp(argv[i], "-s")) {
+            /* image_width x image_height, as +W +H give them */
+            if (sscanf(argv[++i], "%dx%d", &opt.image_width,
+                       &opt.image_height) != 2)
+                return 64;
         } else if (!strcmp(argv[i], "-U")) {
             opt.read_policy = IRIS_IO_UNRESTRICTED;
         } else if (!strcmp(argv[i], "-W")) {
@@ -56,7 +62,7 @@ int main(int argc, char **argv)
         }
     }
     if (i != argc - 1) {
-        fprintf(stderr, "usage: parsedump [-w] [-q] [-U] [-W] [-L dir] [-D n=v] "
+        fprintf(stderr, "usage: parsedump [-w] [-q] [-U] [-W] [-s WxH] [-L dir] [-D n=v] "
                 "[-n max] [-m MiB] file.pov\n");
         return 64;
     }
