@@ -20,7 +20,8 @@
 # scenes include and write local files. POV-Ray runs as
 # 'povray +I.. +O.. +W.. +H.. -D -V -GA +FN16 +WT1' (no antialiasing, the
 # quality +Q9 of /etc/povray/3.7/povray.ini, so photons are on), iris as
-# 'iris scene.pov -q -o x.exr +W.. +H.. --threads=1'. The PSNR is
+# 'iris scene.pov -q -o x.png +FN16 +W.. +H.. --threads=1' (16-bit PNG, as
+# POV-Ray's, written without loading the OpenImageIO module). The PSNR is
 # tests/render/psnr's (sRGB display values, peak 1): build it with
 # 'make -C $build tests/render/psnr'.
 #
@@ -111,7 +112,7 @@ one() {
           "+W$w" "+H$h" -D -V -GA +FN16 +WT1 ) >"$work/pov.log" 2>&1 </dev/null
     t1=$(now)
     ( cd "$work/i" && ulimit -v "$MEMLIMIT" 2>/dev/null
-      exec timeout "$TIMEOUT" "$IRIS" "$base" -q -o "$work/iris.exr" \
+      exec timeout "$TIMEOUT" "$IRIS" "$base" -q -o "$work/iris.png" +FN16 \
           "+W$w" "+H$h" --threads=1 ) >"$work/iris.log" 2>&1 </dev/null
     rc=$?
     t2=$(now)
@@ -131,12 +132,12 @@ one() {
     if [ ! -s "$work/pov.png" ]; then
         [ $rc -eq 0 ] && status="rendered, no reference"
     elif [ $rc -eq 0 ]; then
-        db=$("$PSNR" "$work/iris.exr" "$work/pov.png" 2>/dev/null | cut -d' ' -f1)
+        db=$("$PSNR" "$work/iris.png" "$work/pov.png" 2>/dev/null | cut -d' ' -f1)
         [ -n "$db" ] || db="-"
     fi
     [ -n "${KEEP:-}" ] && mkdir -p "$KEEP/$(dirname "$rel")" &&
         cp "$work/pov.png" "$KEEP/${rel%.pov}.pov.png" 2>/dev/null &&
-        cp "$work/iris.exr" "$KEEP/${rel%.pov}.iris.exr" 2>/dev/null
+        cp "$work/iris.png" "$KEEP/${rel%.pov}.iris.png" 2>/dev/null
     echo "$rel|$status|$db|$tp|$ti|$(features "$scene")|$diag" >"$tmp/r$id"
     rm -rf "$work"
 }

@@ -88,7 +88,7 @@ for scene in "$@"; do
             "+I$scene" "+O$BENCH_TMP/p.png" $common +WT"$threads" -D -V +Q9 \
             +FN16) || ok=no
         # shellcheck disable=SC2086
-        ti=$(cd "$work" && time_once "$IRIS" "$scene" -q -o "$BENCH_TMP/i.exr" \
+        ti=$(cd "$work" && time_once "$IRIS" "$scene" -q -o "$BENCH_TMP/i.png" +FN16 \
             $common --threads="$threads" --stats="$BENCH_TMP/i.json") || ok=no
         echo "$tp" >>"$BENCH_TMP/pw"
         echo "$ti" >>"$BENCH_TMP/iw"
@@ -103,7 +103,7 @@ for scene in "$@"; do
     fi
     tp=$(median_file "$BENCH_TMP/pw"); ti=$(median_file "$BENCH_TMP/iw")
     rp=$(median_file "$BENCH_TMP/pr"); ri=$(median_file "$BENCH_TMP/ir")
-    psnr=$("$PSNR" "$BENCH_TMP/i.exr" "$BENCH_TMP/p.png" 2>/dev/null | cut -d' ' -f1)
+    psnr=$("$PSNR" "$BENCH_TMP/i.png" "$BENCH_TMP/p.png" 2>/dev/null | cut -d' ' -f1)
     r=$(ratio "$ti" "$tp"); rr=$(ratio "$ri" "$rp")
     echo "| $name | $tp | $ti | $r | $rp | $ri | $rr | ${psnr:--} |"
     echo "$r" >>"$BENCH_TMP/ratios"
