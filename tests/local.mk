@@ -10,3 +10,4 @@ include $(srcdir)/tests/unit/photon.mk
 include $(srcdir)/tests/cli.mk
 include $(srcdir)/tests/robust.mk
 include $(srcdir)/tests/progressive.mk
+include $(srcdir)/tests/mpi.mk

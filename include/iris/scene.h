@@ -499,6 +499,8 @@ typedef struct iris_photon_settings {
     double expand_tol; int expand_min; /* 0.2, 35 */
     int media_max_steps; double media_factor;
     const char *save_file, *load_file;
+    iris_loc loc;              /* the 'spacing' or 'count' keyword (else
+                                  the photons block); line 0 = unknown */
 } iris_photon_settings;
 
 typedef struct iris_global_settings {

@@ -21,6 +21,7 @@
 #include "cli/passlog.h"
 #include "cli/report.h"
 #include "iris/iris.h"
+#include "render/mpi_passes.h"
 #include "util/thread.h"
 
 enum { EXIT_RENDER = 1, EXIT_USAGE = 2, EXIT_INTERRUPTED = 130 };
@@ -93,7 +94,8 @@ static int parse_scene(const struct cli_options *o, iris_scene **scene)
     return EXIT_USAGE;
 }
 
-int main(int argc, char **argv)
+/* The command, run on every MPI rank (or alone). */
+static int iris_main(int argc, char **argv)
 {
     double t0 = par_now();
     struct cli_options o;
@@ -111,6 +113,8 @@ int main(int argc, char **argv)
         return 0;
     }
     install_signals();
+    if (mpi_passes_rank() != 0) /* rank 0 alone writes the error log */
+        o.error_log = NULL;
 
     char *out_name = cli_output_name(&o);
     if (!out_name) {
@@ -194,6 +198,8 @@ int main(int argc, char **argv)
         passlog_on_pass(&plog, &img, &info);
     }
 
+    if (mpi_passes_rank() != 0) /* MPI: rank 0 writes the reduced image */
+        goto done;
     /* Write the image: all of it, or what was done before an interrupt. */
     double tw = par_now();
     enum iris_encoding enc = IRIS_ENC_SRGB;
@@ -215,7 +221,7 @@ int main(int argc, char **argv)
 
 done:
     times.total = par_now() - t0;
-    if (o.stats_file && stats_write(o.stats_file, &times, &rs) != 0) {
+    if (o.stats_file && mpi_passes_rank() == 0 && stats_write(o.stats_file, &times, &rs) != 0) {
         fprintf(stderr, "iris: %s: cannot write the statistics: %s\n",
                 o.stats_file, strerror(errno));
         if (rc == 0)
@@ -225,5 +231,25 @@ done:
     iris_image_fini(&img);
     free(out_name);
     iris_scene_destroy(scene);
+    return rc;
+}
+
+/*
+** Under mpirun (issue 8) every rank runs the command and renders its share
+** of the passes; only rank 0 writes files and speaks: the other ranks'
+** stdout and stderr go to /dev/null, so diagnostics, progress and the plan
+** appear once. Started without mpirun, this is one rank and changes
+** nothing.
+*/
+int main(int argc, char **argv)
+{
+    mpi_passes_init(&argc, &argv);
+    if (mpi_passes_rank() != 0) {
+        if (!freopen("/dev/null", "w", stdout) ||
+            !freopen("/dev/null", "w", stderr))
+            return EXIT_RENDER;
+    }
+    int rc = iris_main(argc, argv);
+    mpi_passes_finalize();
     return rc;
 }

@@ -24,6 +24,7 @@
 
 #include <stdbool.h>
 #include <stdint.h>
+#include <stdio.h>
 
 #include "iris/common.h"
 #include "iris/scene.h"
@@ -42,6 +43,9 @@ struct photon_options {
                                   estimate.c); progressive.c shrinks it */
     const struct mat_ctx *mat; /* texture evaluation (material.h); NULL:
                                   solid top-layer pigments only */
+    int64_t max_photons;       /* cap on photons shot (0: PMAP_MAX_PHOTONS
+                                  or what fits in half the memory; shoot.c) */
+    FILE *log;                 /* warnings (NULL: stderr) */
 };
 
 /* What a build did, for -v and the benchmarks. */
@@ -50,7 +54,8 @@ struct photon_stats {
     int64_t stored;            /* photons in the map */
     int64_t bytes;             /* memory of the stored map */
     int n_combos;              /* light x target pairs that shot */
-    double spacing;            /* the spacing used (after 'count') */
+    double spacing;            /* the spacing used (after 'count' and
+                                  the photon cap) */
     double gather_radius;      /* initial gather radius (auto or given) */
     double seconds_shoot, seconds_build;
 };

@@ -59,7 +59,9 @@
 #include "photon/pmap.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "photon/trace.h"
 #include "spectrum/spectrum.h"
@@ -277,6 +279,112 @@ static double spacing_for(const struct shoot *s)
     return e > 0.0 ? sp * sqrt(e / ps->count) : sp;
 }
 
+/*
+** The photon cap. A spacing of 1e-9 (or count 1e12) asks for ~1e19
+** photons; shooting them runs out of memory or time with no hint why.
+** Why clamp with a warning rather than fail: the scene is valid POV-Ray
+** (POV-Ray itself would just run for ever), and a coarser map still
+** renders the caustic the user asked for. The default cap, 2e6 photons
+** shot, is twice the photons of a large POV-Ray scene (count 1e6) and
+** is traced in ~2 s (5e6 took 10 s on 2 busy cores, over badinput.sh's
+** limit); it shrinks when half the physical memory cannot hold that
+** many at PMAP_PEAK_BYTES each (a raw photon in its batch buffer, again in
+** the concatenated array, then packed: 32 + 32 + 16, with slack for
+** photons that deposit more than once).
+*/
+#define PMAP_MAX_PHOTONS 2000000.0
+#define PMAP_PEAK_BYTES 96.0
+
+static double photon_cap(const struct photon_options *o)
+{
+    if (o->max_photons > 0)
+        return (double)o->max_photons;
+    double cap = PMAP_MAX_PHOTONS;
+#if defined(_SC_PHYS_PAGES) && defined(_SC_PAGESIZE)
+    long pages = sysconf(_SC_PHYS_PAGES), psz = sysconf(_SC_PAGESIZE);
+    if (pages > 0 && psz > 0)
+        cap = fmin(cap, 0.5 * (double)pages * (double)psz / PMAP_PEAK_BYTES);
+#endif
+    return fmax(cap, 1000.0);
+}
+
+/* The ring step and extent of combo 'c' at 'spacing' (as make_rings). */
+static void combo_grid(struct combo *c, double spacing)
+{
+    double spread = c->tc.target->photon_density * spacing;
+    if (c->n1 > 1)
+        spread *= sqrt((double)c->n1 * c->n2);
+    if (c->tc.parallel) {
+        c->dtheta = spread;
+        c->theta_max = c->rad;
+    } else {
+        spread /= c->dist > 0 ? c->dist : 1.0;
+        c->dtheta = atan(spread);
+        c->theta_max = c->dist >= c->rad ? asin(c->rad / c->dist) : M_PI;
+    }
+}
+
+/*
+** The photons make_rings() lays out at 'spacing', in closed form: rings
+** of constant theta dtheta apart with 2·pi·sin(theta)/dtheta photons each
+** integrate to 2·pi·(1 - cos theta_max)/dtheta^2 (parallel lights:
+** pi·theta_max^2/dtheta^2), plus at most one photon per ring from the
+** rounding up; times the area-light grid. Overflows to +inf, not UB.
+*/
+static double estimate_photons(struct shoot *s, double spacing)
+{
+    double total = 0.0;
+    for (int ci = 0; ci < s->n_combos; ci++) {
+        struct combo *c = &s->combos[ci];
+        combo_grid(c, spacing);
+        double d = c->dtheta;
+        if (!(d > 0.0) || !isfinite(d))
+            continue;
+        double area = c->tc.parallel
+                          ? M_PI * c->theta_max * c->theta_max
+                          : 2.0 * M_PI * (1.0 - cos(c->theta_max));
+        total += (area / (d * d) + c->theta_max / d + 1.0) *
+                 (double)c->n1 * (double)c->n2;
+    }
+    return total;
+}
+
+/*
+** Raises 'spacing' until the photons shot fit the cap; warns once (pass
+** 0) when it had to, at the spacing/count setting when the parser gave
+** its location, else at the first target (either names the cause). The count falls as 1/spacing^2
+** but not exactly (the ring rounding, atan), hence the few iterations.
+*/
+static double cap_spacing(struct shoot *s, double spacing)
+{
+    double cap = photon_cap(s->opts);
+    double est = estimate_photons(s, spacing);
+    if (!(est > cap) || s->n_combos == 0)
+        return spacing;
+    double sp = spacing;
+    for (int it = 0; it < 60 && !(estimate_photons(s, sp) <= cap); it++) {
+        double e = estimate_photons(s, sp);
+        double f = isfinite(e) ? sqrt(e / cap) * 1.0001 : 1e3;
+        sp *= f > 1.0001 ? f : 1.0001;
+    }
+    if (s->opts->pass == 0) {
+        const iris_scene *sc = s->scene;
+        iris_loc loc = sc->settings.photons.loc;
+        if (loc.line == 0)
+            loc = s->combos[0].tc.target->loc;
+        const char *file = "<unknown>";
+        if (loc.file > 0 && (int)loc.file < sc->n_files && sc->files &&
+            sc->files[loc.file])
+            file = sc->files[loc.file];
+        fprintf(s->opts->log ? s->opts->log : stderr,
+                "%s:%u:%u: warning: photons: spacing %g would shoot %.3g "
+                "photons; capped at %.3g photons (spacing %g)\n",
+                file, (unsigned)loc.line, (unsigned)loc.col, spacing,
+                est, cap, sp);
+    }
+    return sp;
+}
+
 /* Lays out the rings of every combo. */
 static enum iris_status make_rings(struct shoot *s, double spacing)
 {
@@ -285,18 +393,7 @@ static enum iris_status make_rings(struct shoot *s, double spacing)
         int64_t nr = 0, np = 0;
         for (int ci = 0; ci < s->n_combos; ci++) {
             struct combo *c = &s->combos[ci];
-            double spread = c->tc.target->photon_density * spacing;
-            if (c->n1 > 1)
-                spread *= sqrt((double)c->n1 * c->n2);
-            if (c->tc.parallel) {
-                c->dtheta = spread;
-                c->theta_max = c->rad;
-            } else {
-                spread /= c->dist > 0 ? c->dist : 1.0;
-                c->dtheta = atan(spread);
-                c->theta_max = c->dist >= c->rad ? asin(c->rad / c->dist)
-                                                 : M_PI;
-            }
+            combo_grid(c, spacing);
             if (!(c->dtheta > 0.0) || !isfinite(c->dtheta))
                 continue;
             /* Guard against absurd photon counts (about 1e9 rings). */
@@ -490,7 +587,7 @@ enum iris_status pmap_build(const iris_scene *scene, const struct pmap_world *w,
     rng_seed(&r0, opts->seed, (uint64_t)opts->pass, UINT64_MAX);
     s.u0 = rng_uniform(&r0);
     enum iris_status rc = find_combos(&s);
-    st.spacing = rc == IRIS_OK ? spacing_for(&s) : 0.0;
+    st.spacing = rc == IRIS_OK ? cap_spacing(&s, spacing_for(&s)) : 0.0;
     if (rc == IRIS_OK)
         rc = make_rings(&s, st.spacing);
     int64_t n_batches = (s.n_photons + PHOTON_BATCH - 1) / PHOTON_BATCH;

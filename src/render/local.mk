@@ -5,3 +5,4 @@ libiris_core_la_SOURCES += %reldir%/render.c \
 	%reldir%/plan.c %reldir%/plan.h %reldir%/eyepass.c %reldir%/eyepass.h \
 	%reldir%/jitter.c %reldir%/jitter.h
 libiris_core_la_SOURCES += %reldir%/progressive.c %reldir%/progressive.h
+libiris_core_la_SOURCES += %reldir%/mpi_passes.c %reldir%/mpi_passes.h

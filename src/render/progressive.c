@@ -33,6 +33,18 @@
 ** wrote it): "IRISPPM1", then int32 width, height, passes; uint64 seed,
 ** photons; double seconds; then width·height·4 doubles (the RGBA sums,
 ** row 0 first). Written to FILE.tmp, then renamed.
+**
+** MPI (issue 8; mpi_passes.h). Under mpirun with R ranks, pass i runs on
+** rank i mod R, each rank adding its passes into its own sum buffer.
+** Passes go in rounds of R; before each round rank 0 decides (passes
+** left, time limit, interrupt) and every rank learns the decision, plus
+** whether any rank failed, in one collective. At the end the sums, pass
+** and photon counts are reduced onto rank 0, which averages, reports the
+** one pass callback and writes the checkpoint. The image equals the
+** one-rank image up to the order of the double additions. On resume rank
+** 0 reads the checkpoint and carries its sum; the other ranks start from
+** zero at the next pass number. With R = 1 nothing of this changes the
+** run.
 */
 #include "config.h"
 
@@ -44,6 +56,7 @@
 
 #include "photon/photon.h"
 #include "render/eyepass.h"
+#include "render/mpi_passes.h"
 #include "util/mem.h"
 #include "util/rng.h"
 #include "util/thread.h"
@@ -250,8 +263,18 @@ enum iris_status progressive_run(struct tracer *tr, const struct accel *acc,
     enum iris_status st = a.sum ? iris_image_init(&img, a.width, a.height)
                                 : IRIS_ENOMEM;
     bool photons = tr->photon_shade != NULL;
+    const int rank = mpi_passes_rank(), nranks = mpi_passes_size();
+    if (rank != 0) /* pass 0 and its photons are rank 0's */
+        a.photons = 0;
     if (st == IRIS_OK && opts->resume && opts->resume[0]) {
-        st = ckpt_read(&a, opts->resume, err, errlen);
+        int got[2] = { IRIS_OK, 0 };
+        if (rank == 0) {
+            got[0] = ckpt_read(&a, opts->resume, err, errlen);
+            got[1] = a.passes;
+        }
+        mpi_passes_bcast_int(got, 2);
+        st = (enum iris_status)got[0];
+        a.passes = got[1]; /* the other ranks: only the pass number */
         /* pass 0's map (built by the caller) is not needed any more */
         if (st == IRIS_OK && photons && a.passes > 0) {
             photon_map_destroy(*map);
@@ -271,19 +294,32 @@ enum iris_status progressive_run(struct tracer *tr, const struct accel *acc,
 
     const uint64_t seed0 = tr->seed;
     int first = a.passes;
+    if (rank != 0)
+        a.passes = 0; /* counts this rank's passes, reduced at the end */
     double last_ckpt = par_now(), last_dt = 0.0;
     uint64_t stored = stats ? stats->photons_stored : 0;
     uint64_t bytes = stats ? stats->photon_bytes : 0;
     iris_render_stats es_sum;
     memset(&es_sum, 0, sizeof es_sum);
-    for (int p = first;
-         another_pass(opts, p, first, par_now() - t_start, last_dt); p++) {
+    bool failed = false;
+    for (int base = first;; base += nranks) {
+        /* The round of passes base..base+R-1, decided by rank 0 */
+        int go = rank == 0 &&
+                 another_pass(opts, base, first, par_now() - t_start,
+                              last_dt);
+        if (!mpi_passes_agree(go, failed))
+            break;
+        int p = base + ((rank - base) % nranks + nranks) % nranks;
+        if (nranks > 1 && !another_pass(opts, p, first, 0.0, 0.0))
+            continue; /* past --passes (or --resume's one pass) */
         double tp = par_now();
         if (photons && (p > 0 || *map == NULL)) {
             struct photon_stats ps;
             st = build_map(tr, acc, mat, threads, opts->seed, p, map, &ps);
-            if (st != IRIS_OK)
-                break;
+            if (st != IRIS_OK) {
+                failed = true; /* the next round's agreement stops all */
+                continue;
+            }
             a.photons += (uint64_t)ps.shot;
             stored = (uint64_t)ps.stored;
             if ((uint64_t)ps.bytes > bytes)
@@ -309,7 +345,8 @@ enum iris_status progressive_run(struct tracer *tr, const struct accel *acc,
             if (st == IRIS_EINTR && a.passes == 0) /* the partial image */
                 memcpy(out->pixels, img.pixels,
                        accum_len(&a) * sizeof *img.pixels);
-            break;
+            failed = true;
+            continue;
         }
         size_t n = accum_len(&a);
         for (size_t i = 0; i < n; i++)
@@ -318,7 +355,7 @@ enum iris_status progressive_run(struct tracer *tr, const struct accel *acc,
         accum_average(&a, out);
         double now = par_now();
         last_dt = now - tp;
-        if (opts->on_pass) {
+        if (opts->on_pass && nranks == 1) { /* MPI: once, at the end */
             iris_pass_info info = { a.passes, a.seconds + (now - t_start),
                                     a.photons,
                                     progressive_radius_scale(p) };
@@ -326,11 +363,11 @@ enum iris_status progressive_run(struct tracer *tr, const struct accel *acc,
         }
         if (opts->progress)
             opts->progress(opts->progress_user, "passes",
-                           opts->passes > 0 ? (double)a.passes / opts->passes
+                           opts->passes > 0 ? (double)(p + 1) / opts->passes
                            : opts->time_limit > 0.0
                                ? fmin(1.0, (now - t_start) / opts->time_limit)
                                : 1.0);
-        if (opts->checkpoint && opts->checkpoint[0] &&
+        if (opts->checkpoint && opts->checkpoint[0] && nranks == 1 &&
             now - last_ckpt >= CHECKPOINT_EVERY_S) {
             double keep = a.seconds;
             a.seconds += now - t_start;
@@ -341,17 +378,33 @@ enum iris_status progressive_run(struct tracer *tr, const struct accel *acc,
                 set_err(err, errlen, opts->checkpoint,
                         "cannot write the checkpoint");
                 st = cs;
-                break;
+                failed = true;
+                continue;
             }
         }
     }
     tr->seed = seed0;
+    if (nranks > 1) {
+        /* rank 0 gets the sum of every rank's passes */
+        mpi_passes_reduce(a.sum, accum_len(&a), &a.passes, &a.photons);
+        if (rank == 0) {
+            accum_average(&a, out);
+            if (opts->on_pass && a.passes > 0) {
+                iris_pass_info info = { a.passes,
+                                        a.seconds + (par_now() - t_start),
+                                        a.photons,
+                                        progressive_radius_scale(
+                                            a.passes - 1) };
+                opts->on_pass(opts->on_pass_user, out, &info);
+            }
+        }
+    }
     if (st == IRIS_OK && opts->interrupt && *opts->interrupt)
         st = IRIS_EINTR;
     /* The checkpoint at the end, of the passes completed (interrupted or
     ** not) */
     if ((st == IRIS_OK || st == IRIS_EINTR) && opts->checkpoint &&
-        opts->checkpoint[0] && a.passes > 0) {
+        opts->checkpoint[0] && a.passes > 0 && rank == 0) {
         a.seconds += par_now() - t_start;
         if (ckpt_write(&a, opts->checkpoint) != IRIS_OK) {
             set_err(err, errlen, opts->checkpoint,

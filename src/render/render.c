@@ -98,6 +98,7 @@ static enum iris_status photon_pass(const struct render_plan *plan,
     po.threads = threads;
     po.seed = opts->seed;
     po.mat = mat;
+    po.log = opts->log; /* the spacing-cap warning goes with the others */
     struct photon_stats ps;
     memset(&ps, 0, sizeof ps);
     enum iris_status st = photon_map_build(t->scene, acc, &po, map, &ps);

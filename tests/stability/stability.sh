@@ -195,8 +195,7 @@ render thin_ph_sky "+W$W +H$H" "$scenes/thin.pov" Declare=T=1e-2 \
     Declare=PHOTONS=1 Declare=SKY=1
 p=$("$imgtool" psnr "$tmp/thin_ph.exr" "$tmp/thin_ph_sky.exr" 2>&1)
 awk -v p="$p" 'BEGIN { exit !(p + 0 >= 30) }'
-todo_result $? "the caustic stays when a hidden 1e6 sphere is added (PSNR $p dB >= 30)" \
-    "stray photons stored on the far sphere make the one global gather radius of pmap_auto_radius (src/photon/estimate.c) 1.37 instead of 0.35 and blur the caustic away; DESIGN asks for a per-point radius"
+todo_result $? "the caustic stays when a hidden 1e6 sphere is added (PSNR $p dB >= 30)" ""
 
 # The same scene at scale 1e-6 and 1e6 (camera, light, checker and glass
 # all scaled): the same image. 40 dB on sRGB values is an RMS difference
@@ -243,18 +242,16 @@ run_case ph_scale_1e-6  "none" "" $G $PH Declare=S=1e-6 Declare=DISP=1.2
 # spiky caustic too coarsely: 0.91-0.95). Accepted: [0.95, 1.02]. Above is
 # energy created; below, the caustic does not replace the black shadow
 # (no caustic at all gives 0.832). At spacing 0.005 with seed 7 (0.01,
-# 0.008 with seed 0) the automatic gather radius collapses to ~1e-15 and
-# the caustic vanishes.
+# 0.008 with seed 0) a mean-density automatic gather radius collapsed to
+# ~1e-15 and the caustic vanished (pmap_auto_radius now takes the median).
 for c in "1 0.02" "1.2 0.02" "1 0.005"; do
     set -- $c
     render caustic "+W192 +H144" "$scenes/caustic.pov" Declare=DISP=$1 \
         Declare=SPACING=$2
-    todo=""
-    [ "$2" = 0.005 ] && todo="pmap_auto_radius (src/photon/estimate.c) averages n/(pi r^2) over samples; one whose k neighbours nearly coincide at the focus dominates the mean and the radius becomes ~1e-15"
     set -- $1 $2 $("$check" "$tmp/caustic.exr" 2>/dev/null)
     awk -v m="${6:-x}" -v b="${3:-x}" \
         'BEGIN { exit !(b == 0 && m >= 0.95 && m <= 1.02) }'
-    todo_result $? "caustic, dispersion $1, spacing $2: floor mean Y ${6:-?} in [0.95, 1.02]" "$todo"
+    todo_result $? "caustic, dispersion $1, spacing $2: floor mean Y ${6:-?} in [0.95, 1.02]" ""
 done
 
 echo "1..$tap_n"

@@ -334,7 +334,7 @@ static struct tw_scene tw;
 static struct photon_map *build(struct tw_scene *t, int threads)
 {
     struct pmap_world w = tw_world(t);
-    struct photon_options o = { threads, 12345, 0, 0, NULL };
+    struct photon_options o = { threads, 12345, 0, 0, NULL, 0, NULL };
     struct photon_map *m = NULL;
     struct photon_stats st;
     assert_int_equal(pmap_build(&t->scene, &w, &o, &m, &st), IRIS_OK);
@@ -438,7 +438,7 @@ static void test_slab_flux_accel(void **state)
         fail_msg("accel_build: %s", err);
     struct mat_ctx *mc = NULL;
     assert_int_equal(mat_ctx_create(&tw.scene, stderr, &mc), IRIS_OK);
-    struct photon_options o = { 2, 12345, 0, 0, mc };
+    struct photon_options o = { 2, 12345, 0, 0, mc, 0, NULL };
     struct photon_map *m = NULL;
     struct photon_stats st;
     assert_int_equal(photon_map_build(&tw.scene, a, &o, &m, &st), IRIS_OK);
@@ -651,7 +651,7 @@ static void test_progressive_ball(void **state)
         for (int fixed = 0; fixed < 2; fixed++) {
             if (fixed && p >= 16)
                 continue; /* 16 fixed-radius passes already plateau */
-            struct photon_options o = { 2, 777, p, 0, NULL };
+            struct photon_options o = { 2, 777, p, 0, NULL, 0, NULL };
             o.radius_scale = fixed ? 1.0 : progressive_radius_scale(p);
             struct photon_map *m = NULL;
             assert_int_equal(pmap_build(&tw.scene, &w, &o, &m, NULL),
@@ -855,7 +855,7 @@ static void test_rules(void **state)
     ball->photon_target = true;
     iris_object *floor = tw_plane(&tw, v3(0, 1, 0), 0, WHITE, 1);
     struct pmap_world w = tw_world(&tw);
-    struct photon_options o = { 1, 1, 0, 0, NULL };
+    struct photon_options o = { 1, 1, 0, 0, NULL, 0, NULL };
     struct photon_map *m = (struct photon_map *)1;
     tw.scene.settings.photons.enabled = false;
     assert_int_equal(pmap_build(&tw.scene, &w, &o, &m, NULL), IRIS_OK);
@@ -893,6 +893,99 @@ static void test_rules(void **state)
     photon_map_destroy(NULL);
 }
 
+/* ------------------------------------------------------------------ */
+
+/*
+** The automatic radius against a focus (issue 7): 10^4 photons uniform on
+** the unit square plus 2000 at one point (a caustic's focus, where k
+** neighbours coincide). The background's k-nearest radius at k = 50 is
+** rb = sqrt(k/(pi·rho)) = 0.0399 (rho = 10^4 per unit area). The cluster
+** is 1/6 of the samples, so the median radius is a background one; the
+** enlargement for sparse regions (1 + 20·fraction of samples at 0.05-0.7
+** of the median density) counts the samples near the square's edges,
+** which see about half a disc: a strip of width ~rb on 4 sides, ~15% of
+** the photons, gives at most a factor 4. Accepted: [0.7, 4]·rb. The mean
+** density this replaced gave ~1e-9 here (it made the caustic vanish).
+*/
+static void test_auto_radius_focus(void **state)
+{
+    (void)state;
+    enum { N = 10000, FOCUS = 2000, K = 50 };
+    static struct pstore_raw raw[N + FOCUS];
+    rng r;
+    rng_seed(&r, 9, 0, 0);
+    for (int i = 0; i < N + FOCUS; i++) {
+        /* interleaved, as a shooter's rings would be */
+        bool focus = i % 6 == 3;
+        raw[i].p[0] = focus ? 0.5f : (float)rng_uniform(&r);
+        raw[i].p[1] = 0;
+        raw[i].p[2] = focus ? 0.5f : (float)rng_uniform(&r);
+        raw[i].power = 1;
+        raw[i].lambda = 550;
+        raw[i].dir[1] = 1;
+    }
+    struct pstore s;
+    assert_int_equal(pstore_build(&s, raw, N + FOCUS), IRIS_OK);
+    double rb = sqrt(K / (M_PI * N));
+    double r0 = pmap_auto_radius(&s, K);
+    assert_true(r0 >= 0.7 * rb);
+    assert_true(r0 <= 4.0 * rb);
+    /* all photons at one point: not 0, but the floor (1e-6 of the box) */
+    for (int i = 0; i < N; i++)
+        raw[i].p[0] = raw[i].p[2] = 0.25f;
+    raw[0].p[0] = 1.25f; /* one photon elsewhere: the box is not a point */
+    pstore_fini(&s);
+    assert_int_equal(pstore_build(&s, raw, N), IRIS_OK);
+    r0 = pmap_auto_radius(&s, K);
+    assert_true(r0 > 0.0 && isfinite(r0));
+    pstore_fini(&s);
+}
+
+/*
+** The photon cap (issue 7): spacing 1e-9 asks for ~1e19 photons. With a
+** cap of 2e4 the build shoots at most 2e4 (the closed-form estimate
+** counts one extra photon per ring, so it never undercounts the rings'
+** rounding), and not far fewer: the spacing is raised by sqrt(est/cap)
+** steps of at most 0.01% overshoot, and the estimate exceeds the true
+** count by the rings' rounding only (~1 photon per ring, ~100 rings), so
+** at least half the cap is shot. The spacing reported is the capped one.
+*/
+static void test_photon_cap(void **state)
+{
+    (void)state;
+    tw_init(&tw, 1e-9, 100);
+    iris_light *l = tw_light(&tw, v3(0, 10, 0), v3(0, 0, 0), false);
+    iris_object *ball = tw_sphere(&tw, v3(0, 2, 0), 1, CLEAR, 0, 1.5);
+    ball->photon_target = true;
+    l->photon_refraction = IRIS_ON;
+    tw_plane(&tw, v3(0, 1, 0), 0, WHITE, 1);
+    struct pmap_world w = tw_world(&tw);
+    struct photon_options o;
+    memset(&o, 0, sizeof o);
+    o.threads = 2;
+    o.seed = 3;
+    o.max_photons = 20000;
+    FILE *log = tmpfile();
+    o.log = log;
+    struct photon_map *m = NULL;
+    struct photon_stats st;
+    assert_int_equal(pmap_build(&tw.scene, &w, &o, &m, &st), IRIS_OK);
+    assert_non_null(m);
+    assert_true(st.shot <= 20000);
+    assert_true(st.shot >= 10000);
+    assert_true(st.spacing > 1e-9);
+    /* one warning, naming the cap */
+    if (log) {
+        char line[512] = "";
+        rewind(log);
+        assert_non_null(fgets(line, sizeof line, log));
+        assert_non_null(strstr(line, "warning: photons:"));
+        assert_null(fgets(line, sizeof line, log));
+        fclose(log);
+    }
+    photon_map_destroy(m);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -907,6 +1000,8 @@ int main(void)
         cmocka_unit_test(test_prism),
         cmocka_unit_test(test_dispersive_white),
         cmocka_unit_test(test_rules),
+        cmocka_unit_test(test_auto_radius_focus),
+        cmocka_unit_test(test_photon_cap),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

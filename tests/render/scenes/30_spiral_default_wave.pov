@@ -1,5 +1,4 @@
 // spiral1 without a wave keyword: POV-Ray gives spirals triangle_wave.
-// parity-todo: the parser leaves spiral1/spiral2 at ramp_wave
 #version 3.7;
 global_settings { assumed_gamma 1 }
 camera { location <0, 2, -4> look_at <0, 0.8, 0> right x*4/3 }

@@ -1,0 +1,94 @@
+#!/bin/sh
+# SPDX-License-Identifier: MIT
+# bench/scaling.sh: how progressive rendering scales (issue 8) on the
+# caustic scene bench/caustic_ball.pov: 1 vs 2 threads (one process) and
+# 1 vs 2 MPI ranks (one thread each), N passes, the median of 3 runs each,
+# and the speed-ups. Then the communication: MPI ranks exchange nothing
+# while rendering; at the end (and at each write point) rank 0 reduces the
+# double sum buffer, width·height·4 channels·8 bytes. From the measured
+# time per pass and the measured fixed cost of a run, the script estimates
+# the speed-up at 100 ranks.
+#
+#   build=/path/to/build sh bench/scaling.sh [-n PASSES] [-s WxH] [-p PHOTONS]
+#
+# The MPI rows need a build configured with MPI (mpirun found).
+set -u
+here=$(cd "$(dirname "$0")" && pwd)
+passes=8
+size=160x120
+photons=100000
+while getopts n:s:p: opt; do
+    case $opt in
+    n) passes=$OPTARG ;;
+    s) size=$OPTARG ;;
+    p) photons=$OPTARG ;;
+    *) exit 2 ;;
+    esac
+done
+: "${build:?set build to a configured and built tree}"
+. "$here/lib.sh"
+IRIS="$build/iris"
+[ -x "$IRIS" ] || { echo "scaling: no iris binary in $build"; exit 1; }
+BENCH_TMP=$(mktemp -d) || exit 1
+trap 'rm -rf "$BENCH_TMP"' EXIT
+export IRIS_MODULE_DIR="${IRIS_MODULE_DIR:-$build/.libs}"
+w=${size%x*}
+h=${size#*x}
+scene="$here/caustic_ball.pov"
+args="-q $scene +W$w +H$h Declare=Photons=$photons --passes $passes --seed 1"
+MPIRUN=$(sed -n 's/^MPIRUN = //p' "$build/Makefile")
+# localhost only, as in tests/mpi/mpi.sh
+export OMPI_MCA_plm=isolated OMPI_MCA_btl=self,vader
+mpi() { n=$1; shift
+    "$MPIRUN" --oversubscribe --allow-run-as-root -n "$n" "$IRIS" "$@"; }
+
+echo "scene: caustic_ball.pov, ${w}x${h}, $photons photons a pass, $passes passes, median of 3 runs"
+# shellcheck disable=SC2086
+t1=$(time_median 3 "$IRIS" $args --threads 1 -o "$BENCH_TMP/a.exr")
+# shellcheck disable=SC2086
+t2=$(time_median 3 "$IRIS" $args --threads 2 -o "$BENCH_TMP/b.exr")
+echo "| run | wall s | speed-up |"
+echo "| --- | ---: | ---: |"
+echo "| 1 process, 1 thread | $t1 | 1.000 |"
+echo "| 1 process, 2 threads | $t2 | $(ratio "$t1" "$t2") |"
+r1=-; r2=-
+if [ -n "$MPIRUN" ]; then
+    # shellcheck disable=SC2086
+    r1=$(time_median 3 mpi 1 $args --threads 1 -o "$BENCH_TMP/c.exr")
+    # shellcheck disable=SC2086
+    r2=$(time_median 3 mpi 2 $args --threads 1 -o "$BENCH_TMP/d.exr")
+    echo "| mpirun -n 1, 1 thread | $r1 | $(ratio "$t1" "$r1") |"
+    echo "| mpirun -n 2, 1 thread each | $r2 | $(ratio "$t1" "$r2") (vs -n 1: $(ratio "$r1" "$r2")) |"
+else
+    echo "(no MPI in this build: the rank rows are skipped)"
+fi
+
+# The fixed cost of a run (parse, acceleration structure, pass 0's map,
+# process start) from a 1-pass run; the rest divided by N is one pass.
+# shellcheck disable=SC2086
+t0=$(time_median 3 "$IRIS" -q "$scene" +W$w +H$h Declare=Photons=$photons \
+    --seed 1 --threads 1 -o "$BENCH_TMP/e.exr")
+bytes=$((w * h * 4 * 8))
+echo
+echo "fixed cost of a run (1 pass): $t0 s; one pass: $(echo "$t1 $t0 $passes" |
+    awk '{ printf "%.4f", ($1 - $2) / ($3 - 1) }') s (1 thread)"
+echo "communication: one reduction of $bytes bytes (${w}x${h} x 4 channels x 8 bytes) a write point, none per pass"
+# At R = 100 ranks with P = 100·k passes: compute (P/R)·t_pass, plus the
+# fixed cost (every rank parses and builds its structures in parallel, so
+# it does not shrink), plus a tree reduction: log2(R) steps of 'bytes' at
+# an assumed 1 GB/s (10 Gb Ethernet) and 50 us latency per step.
+echo "$t1 $t0 $passes $bytes $r1 $r2" | awk '{
+    tp = ($1 - $2) / ($3 - 1); fixed = $2; B = $4
+    if (tp <= 0) { print "estimate: pass time not measurable"; exit }
+    red = log(100) / log(2) * (B / 1e9 + 50e-6)
+    printf "reduction at 100 ranks (tree, 1 GB/s, 50 us/step): %.2f ms\n", red * 1000
+    n = split("100 1000 10000", P, " ")
+    for (i = 1; i <= n; i++) {
+        ser = fixed + P[i] * tp
+        par = fixed + (P[i] / 100) * tp + red
+        printf "estimated speed-up at 100 ranks, %d passes: %.1f (serial %.1f s, 100 ranks %.2f s)\n", P[i], ser / par, ser, par
+    }
+    if ($5 != "-" && $6 != "-" && $5 > 0)
+        printf "measured overhead of 2 ranks over an ideal halving: %.3f s\n", $6 - ($5 - fixed) / 2 - fixed
+}'
+echo "(the reduction is negligible; the limit is the fixed per-run cost, which every rank pays, and whole rounds of R passes)"

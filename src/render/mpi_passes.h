@@ -1,0 +1,48 @@
+/* SPDX-License-Identifier: MIT */
+/*
+** mpi_passes.h: the few MPI collectives progressive rendering needs
+** (issue 8): which rank this is, rank 0's decisions broadcast to all, and
+** the reduction of the per-rank pass sums onto rank 0.
+**
+** Without HAVE_MPI, or when MPI was not initialized (a library user, or
+** iris not started by mpirun), every function behaves as a single rank:
+** rank 0 of 1, broadcasts and reductions leave their arguments as they
+** are. So callers need no #ifdef.
+**
+** Depends on: MPI (optional). Used by: progressive.c, cli/main.c.
+*/
+#ifndef IRIS_RENDER_MPI_PASSES_H
+#define IRIS_RENDER_MPI_PASSES_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+/* MPI_Init (when built with MPI); call once at the start of main. */
+void mpi_passes_init(int *argc, char ***argv);
+
+/* MPI_Finalize when mpi_passes_init initialized MPI. */
+void mpi_passes_finalize(void);
+
+/* This process's rank, 0 when not running under MPI. */
+int mpi_passes_rank(void);
+
+/* The number of ranks, 1 when not running under MPI. */
+int mpi_passes_size(void);
+
+/* Rank 0's values of v[0..n-1] copied to every rank. */
+void mpi_passes_bcast_int(int *v, int n);
+
+/*
+** One round's decision, the same on every rank: true when rank 0's
+** 'go_root' is true and no rank has 'failed_local' set.
+*/
+int mpi_passes_agree(int go_root, int failed_local);
+
+/*
+** Sums 'sum[0..n-1]', *passes and *photons over all ranks onto rank 0
+** (in place there; the other ranks' arguments are left as they are).
+*/
+void mpi_passes_reduce(double *sum, size_t n, int *passes,
+                       uint64_t *photons);
+
+#endif

@@ -1,0 +1,69 @@
+#!/bin/sh
+# SPDX-License-Identifier: MIT
+# tests/mpi/mpi.sh: progressive passes across MPI ranks (issue 8) on
+# localhost. Pass i runs on rank i mod R and rank 0 reduces the double
+# sums, so the image of R ranks equals the one of one rank up to the order
+# of the double additions: about 1e-16 relative before the image is
+# rounded to float, so at most one float ulp (6e-8 relative) after. The
+# check allows 1e-6 relative to the brightest linear value of the image
+# (imgdiff: largest absolute difference; imgtool stats: the largest value).
+. "$top_srcdir/tests/tap.sh"
+[ -n "$MPIRUN" ] || tap_skip_all "iris was built without MPI"
+tap_plan 8
+scene="$top_srcdir/tests/progressive/ball.pov"
+imgdiff="$top_builddir/tests/progressive/imgdiff"
+imgtool="$top_builddir/tests/cli/imgtool"
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+# Localhost only: no ssh launcher, shared memory and self transports; CI
+# runs as root.
+export OMPI_MCA_plm=isolated OMPI_MCA_btl=self,vader \
+    OMPI_MCA_rmaps_base_oversubscribe=1
+mpi() { n=$1; shift
+    "$MPIRUN" --oversubscribe --allow-run-as-root -n "$n" "$IRIS" "$@"; }
+r() { "$IRIS" -q "$scene" +W24 +H24 --threads 1 "$@"; }
+near() { # near A.exr B.exr: largest difference <= 1e-6 * largest value
+    d=$("$imgdiff" "$1" "$2") || return 1
+    hi=$("$imgtool" stats "$1" | awk '{ print $2 }')
+    echo "# largest difference $d, largest value $hi"
+    awk -v d="$d" -v h="$hi" 'BEGIN { exit !(h > 0 && d <= 1e-6 * h) }'
+}
+
+r -o "$tmp/p5.exr" --passes 5 --seed 3
+mpi 1 -q "$scene" +W24 +H24 --threads 1 -o "$tmp/r1.exr" --passes 5 --seed 3
+tap_ok "1 rank under mpirun = no mpirun" near "$tmp/p5.exr" "$tmp/r1.exr"
+mpi 2 -q "$scene" +W24 +H24 --threads 1 -o "$tmp/r2.exr" --passes 5 \
+    --seed 3 --stats "$tmp/s2.json"
+tap_ok "2 ranks = 1 rank within 1e-6 relative" near "$tmp/p5.exr" "$tmp/r2.exr"
+r -o "$tmp/p3.exr" --passes 3 --seed 3
+d=$("$imgdiff" "$tmp/p3.exr" "$tmp/r2.exr")
+tap_ok "... and not rank 0's passes alone (3 passes differ by $d)" \
+    awk -v d="$d" 'BEGIN { exit !(d + 0 > 0) }'
+tap_ok "--stats counts the passes of both ranks (5)" \
+    grep -q '"passes": 5' "$tmp/s2.json"
+
+# Rank 0 alone speaks: one "wrote" line, not two
+mpi 2 "$scene" +W24 +H24 --threads 1 -o "$tmp/w.exr" --passes 2 \
+    2>"$tmp/log" >/dev/null
+tap_is "one rank reports" "$(grep -c 'iris: wrote' "$tmp/log")" "1"
+
+# Checkpoint and resume across ranks: 2 passes, then 3 more
+mpi 2 -q "$scene" +W24 +H24 --threads 1 -o "$tmp/c2.exr" --passes 2 \
+    --seed 3 --checkpoint "$tmp/run.ckpt"
+mpi 2 -q "$scene" +W24 +H24 --threads 1 -o "$tmp/c5.exr" --passes 5 \
+    --seed 3 --resume "$tmp/run.ckpt"
+tap_ok "2 + 3 passes resumed on 2 ranks = 5 passes" \
+    near "$tmp/p5.exr" "$tmp/c5.exr"
+
+# The time limit: ranks agree on when to stop
+t0=$(date +%s)
+mpi 2 -q "$scene" +W24 +H24 --threads 1 -o "$tmp/t.exr" --time-limit 1 \
+    --stats "$tmp/t.json"
+rc=$?
+t1=$(date +%s)
+n=$(sed -n 's/.*"passes": \([0-9]*\).*/\1/p' "$tmp/t.json")
+tap_ok "--time-limit 1 on 2 ranks: $n passes in $((t1 - t0)) s" \
+    test "$rc" = 0 -a "${n:-0}" -ge 2 -a $((t1 - t0)) -le 6
+tap_ok "... an even count (whole rounds of 2 passes)" \
+    test $((${n:-1} % 2)) = 0
+[ "$tap_failed" -eq 0 ]
