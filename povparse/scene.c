@@ -293,8 +293,14 @@ static void global_photons(pp_state *ps, iris_photon_settings *p)
             if (p->gather_max <= 0)
                 p->enabled = false;
             return;
-        case T_SPACING: p->spacing = pp_float(ps); break;
-        case T_COUNT: p->count = pp_int(ps); break;
+        case T_SPACING:
+            p->loc = pp_loc(ps, &at); /* where a photon cap points */
+            p->spacing = pp_float(ps);
+            break;
+        case T_COUNT:
+            p->loc = pp_loc(ps, &at);
+            p->count = pp_int(ps);
+            break;
         case T_GATHER:
             p->gather_min = pp_int(ps);
             pp_expect(ps, T_COMMA, "','");

@@ -43,8 +43,10 @@ struct photon_options {
                                   estimate.c); progressive.c shrinks it */
     const struct mat_ctx *mat; /* texture evaluation (material.h); NULL:
                                   solid top-layer pigments only */
-    int64_t max_photons;       /* cap on photons shot (0: PMAP_MAX_PHOTONS
-                                  or what fits in half the memory; shoot.c) */
+    int64_t max_photons;       /* > 0: clamp the photons shot to this many,
+                                  with a warning; 0: fail with a located
+                                  error past what half the memory holds
+                                  (shoot.c) */
     FILE *log;                 /* warnings (NULL: stderr) */
 };
 

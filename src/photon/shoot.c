@@ -281,18 +281,18 @@ static double spacing_for(const struct shoot *s)
 
 /*
 ** The photon cap. A spacing of 1e-9 (or count 1e12) asks for ~1e19
-** photons; shooting them runs out of memory or time with no hint why.
-** Why clamp with a warning rather than fail: the scene is valid POV-Ray
-** (POV-Ray itself would just run for ever), and a coarser map still
-** renders the caustic the user asked for. The default cap, 2e6 photons
-** shot, is twice the photons of a large POV-Ray scene (count 1e6) and
-** is traced in ~2 s (5e6 took 10 s on 2 busy cores, over badinput.sh's
-** limit); it shrinks when half the physical memory cannot hold that
-** many at PMAP_PEAK_BYTES each (a raw photon in its batch buffer, again in
-** the concatenated array, then packed: 32 + 32 + 16, with slack for
-** photons that deposit more than once).
+** photons; shooting them would run out of memory or time with no hint
+** why. The cap is what half the physical memory holds at PMAP_PEAK_BYTES
+** a photon (a raw photon in its batch buffer, again in the concatenated
+** array, then packed: 32 + 32 + 16, with slack for photons that deposit
+** more than once): about 1.25e8 photons on a 24 GB machine, so a pass of
+** 1e8 photons still runs (issue 8). Past it the build fails with a
+** located error before anything is allocated ("a clear error before a
+** run would exceed the memory available"), rather than silently shooting
+** fewer photons than the scene asks for. A caller that sets max_photons
+** chooses clamping instead: the spacing is raised to fit, with a warning.
 */
-#define PMAP_MAX_PHOTONS 2000000.0
+#define PMAP_MAX_PHOTONS 1e12 /* no cap but memory's */
 #define PMAP_PEAK_BYTES 96.0
 
 static double photon_cap(const struct photon_options *o)
@@ -349,11 +349,26 @@ static double estimate_photons(struct shoot *s, double spacing)
     return total;
 }
 
+/* The file:line:col of the photon settings (or the first target). */
+static void photon_loc(const struct shoot *s, const char **file, iris_loc *loc)
+{
+    const iris_scene *sc = s->scene;
+    *loc = sc->settings.photons.loc;
+    if (loc->line == 0)
+        *loc = s->combos[0].tc.target->loc;
+    *file = "<unknown>";
+    if (loc->file > 0 && (int)loc->file < sc->n_files && sc->files &&
+        sc->files[loc->file])
+        *file = sc->files[loc->file];
+}
+
 /*
-** Raises 'spacing' until the photons shot fit the cap; warns once (pass
-** 0) when it had to, at the spacing/count setting when the parser gave
-** its location, else at the first target (either names the cause). The count falls as 1/spacing^2
-** but not exactly (the ring rounding, atan), hence the few iterations.
+** Checks the photons 'spacing' asks for against the cap (see above).
+** Returns the spacing to use, or -1 after a located error when the
+** memory cap is exceeded and the caller did not ask for clamping. With
+** max_photons set, raises the spacing until the photons fit and warns
+** once (pass 0). The count falls as 1/spacing^2 but not exactly (the
+** ring rounding, atan), hence the few iterations.
 */
 static double cap_spacing(struct shoot *s, double spacing)
 {
@@ -361,27 +376,28 @@ static double cap_spacing(struct shoot *s, double spacing)
     double est = estimate_photons(s, spacing);
     if (!(est > cap) || s->n_combos == 0)
         return spacing;
+    FILE *log = s->opts->log ? s->opts->log : stderr;
+    const char *file;
+    iris_loc loc;
+    photon_loc(s, &file, &loc);
+    if (s->opts->max_photons <= 0) {
+        if (s->opts->pass == 0)
+            fprintf(log, "%s:%u:%u: error: photons: spacing %g would shoot "
+                    "%.3g photons, more than half the memory holds (%.3g); "
+                    "raise 'spacing' or lower 'count'\n", file,
+                    (unsigned)loc.line, (unsigned)loc.col, spacing, est, cap);
+        return -1.0;
+    }
     double sp = spacing;
     for (int it = 0; it < 60 && !(estimate_photons(s, sp) <= cap); it++) {
         double e = estimate_photons(s, sp);
         double f = isfinite(e) ? sqrt(e / cap) * 1.0001 : 1e3;
         sp *= f > 1.0001 ? f : 1.0001;
     }
-    if (s->opts->pass == 0) {
-        const iris_scene *sc = s->scene;
-        iris_loc loc = sc->settings.photons.loc;
-        if (loc.line == 0)
-            loc = s->combos[0].tc.target->loc;
-        const char *file = "<unknown>";
-        if (loc.file > 0 && (int)loc.file < sc->n_files && sc->files &&
-            sc->files[loc.file])
-            file = sc->files[loc.file];
-        fprintf(s->opts->log ? s->opts->log : stderr,
-                "%s:%u:%u: warning: photons: spacing %g would shoot %.3g "
-                "photons; capped at %.3g photons (spacing %g)\n",
-                file, (unsigned)loc.line, (unsigned)loc.col, spacing,
-                est, cap, sp);
-    }
+    if (s->opts->pass == 0)
+        fprintf(log, "%s:%u:%u: warning: photons: spacing %g would shoot %.3g "
+                "photons; capped at %.3g photons (spacing %g)\n", file,
+                (unsigned)loc.line, (unsigned)loc.col, spacing, est, cap, sp);
     return sp;
 }
 
@@ -588,6 +604,8 @@ enum iris_status pmap_build(const iris_scene *scene, const struct pmap_world *w,
     s.u0 = rng_uniform(&r0);
     enum iris_status rc = find_combos(&s);
     st.spacing = rc == IRIS_OK ? cap_spacing(&s, spacing_for(&s)) : 0.0;
+    if (rc == IRIS_OK && st.spacing < 0.0)
+        rc = IRIS_EINVAL; /* more photons than memory holds: reported */
     if (rc == IRIS_OK)
         rc = make_rings(&s, st.spacing);
     int64_t n_batches = (s.n_photons + PHOTON_BATCH - 1) / PHOTON_BATCH;

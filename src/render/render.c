@@ -223,6 +223,8 @@ enum iris_status iris_render(const iris_scene *scene,
     double t1 = par_now();
     struct photon_map *pmap = NULL;
     st = photon_pass(&plan, &tr, acc, mat, threads, opts, &pmap, stats);
+    if (st == IRIS_EINVAL) /* the located error went to the log */
+        set_err(err, errlen, "the photon settings ask for more than memory holds");
     double t2 = par_now();
     double more_photon_s = 0.0; /* maps of progressive passes after the first */
     if (st == IRIS_OK && progressive_wanted(opts))
@@ -239,7 +241,7 @@ enum iris_status iris_render(const iris_scene *scene,
         set_err(err, errlen, "iris_render: out of memory");
     else if (st == IRIS_EINTR)
         set_err(err, errlen, "iris_render: interrupted");
-    else if (st == IRIS_EINVAL)
+    else if (st == IRIS_EINVAL && !(err && err[0]))
         set_err(err, errlen, "iris_render: empty render window");
     photon_map_destroy(pmap);
 done:

@@ -51,7 +51,6 @@ while_forever: the 10000000-iteration #while limit takes ~30 s; the error is loc
 many_objects: a 1e9-object #for: under 2 GB of address space it ends "out of memory" without a location; unlimited, the located "out of parser memory" comes after ~15 s (povparse)
 camera_zero_direction: a zero-length camera direction renders black without a warning (povparse camera)
 infinite_radius: a non-finite number (inf) reaches the scene without a diagnostic (povparse expressions)
-photon_spacing: the photon cap (src/photon/shoot.c) warns at the photon target (line 6) while povparse leaves iris_photon_settings.loc (include/iris/scene.h) unset
 '
 
 todo_reason() { printf '%s\n' "$TODOS" | sed -n "s/^$1: //p"; }
