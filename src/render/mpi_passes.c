@@ -16,6 +16,7 @@
 #ifdef HAVE_MPI
 #include <limits.h>
 #include <mpi.h>
+#include <stdlib.h>
 
 /* True when this module called MPI_Init (and so must finalize). */
 static int mpi_owned;
@@ -31,9 +32,25 @@ static int mpi_active(void)
     return !fini;
 }
 
+/*
+** Whether a process manager (mpirun, mpiexec, srun) started us. Open
+** MPI's singleton MPI_Init spawns an orted daemon, 0.4-0.6 s at every
+** start, so a plain `iris scene.pov` must not call it: without these
+** variables iris runs as rank 0 of 1 without MPI at all.
+*/
+static int launched_by_mpi(void)
+{
+    static const char *const vars[] = { "OMPI_COMM_WORLD_SIZE", "PMIX_RANK",
+                                        "PMI_RANK", "PMI_SIZE" };
+    for (size_t i = 0; i < sizeof vars / sizeof vars[0]; i++)
+        if (getenv(vars[i]))
+            return 1;
+    return 0;
+}
+
 void mpi_passes_init(int *argc, char ***argv)
 {
-    if (mpi_active())
+    if (mpi_active() || !launched_by_mpi())
         return;
     if (MPI_Init(argc, argv) == MPI_SUCCESS)
         mpi_owned = 1;
