@@ -10,7 +10,12 @@
 # and the PSNR of iris's image against POV-Ray's (tests/render/psnr).
 #
 #   build=/path/to/build sh bench/render-vs-povray.sh [-n RUNS] [-s WxH]
-#                        [-t THREADS] [scene.pov ...]
+#                        [-t THREADS] [-b BASE_BUILD] [scene.pov ...]
+#
+# -b BASE_BUILD also times the iris of another build (an older version)
+# in the same loop, run for run between the other two, so that both see
+# the same machine load; two more columns give its render time and the
+# ratio of this build's to it (below 1: this build is faster).
 #
 # Without scenes it uses the parity scenes in tests/render/scenes and the
 # example scenes listed in bench/example-scenes.txt. Each scene's
@@ -18,15 +23,20 @@
 set -u
 here=$(cd "$(dirname "$0")" && pwd)
 . "$here/lib.sh"
-runs=3; size=160x120; threads=2
-while getopts n:s:t: opt; do
+runs=3; size=160x120; threads=2; base=
+while getopts n:s:t:b: opt; do
     case $opt in
     n) runs=$OPTARG ;; s) size=$OPTARG ;; t) threads=$OPTARG ;;
+    b) base=$OPTARG ;;
     *) exit 2 ;;
     esac
 done
 shift $((OPTIND - 1))
 bench_setup
+if [ -n "$base" ] && [ ! -x "$base/iris" ]; then
+    echo "bench: no iris binary in $base"
+    exit 1
+fi
 PSNR="$build/tests/render/psnr"
 [ -x "$PSNR" ] || make -C "$build" tests/render/psnr >/dev/null 2>&1
 w=${size%x*}; h=${size#*x}
@@ -68,9 +78,14 @@ median_file() { sort -n "$1" | awk '{a[NR] = $1} END {
     if (NR == 0) print "fail"; else if (NR % 2) printf "%.4f\n", a[(NR + 1) / 2];
     else printf "%.4f\n", (a[NR / 2] + a[NR / 2 + 1]) / 2 }'; }
 
-echo "| scene | POV-Ray s | iris s | iris/POV-Ray | POV-Ray render s | iris render s | render ratio | PSNR dB |"
-echo "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: |"
-: >"$BENCH_TMP/ratios"; : >"$BENCH_TMP/rratios"
+if [ -n "$base" ]; then
+    echo "| scene | POV-Ray s | iris s | iris/POV-Ray | POV-Ray render s | iris render s | render ratio | PSNR dB | base render s | iris/base render |"
+    echo "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |"
+else
+    echo "| scene | POV-Ray s | iris s | iris/POV-Ray | POV-Ray render s | iris render s | render ratio | PSNR dB |"
+    echo "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: |"
+fi
+: >"$BENCH_TMP/ratios"; : >"$BENCH_TMP/rratios"; : >"$BENCH_TMP/bratios"
 for scene in "$@"; do
     [ -f "$scene" ] || continue
     case $scene in /*) ;; *) scene=$(pwd)/$scene ;; esac
@@ -79,6 +94,7 @@ for scene in "$@"; do
     rm -rf "$work"; mkdir -p "$work"
     cp -R "$(dirname "$scene")/." "$work/" 2>/dev/null
     : >"$BENCH_TMP/pw"; : >"$BENCH_TMP/iw"; : >"$BENCH_TMP/pr"; : >"$BENCH_TMP/ir"
+    : >"$BENCH_TMP/br"
     ok=yes
     i=0
     while [ $i -lt "$runs" ]; do
@@ -96,19 +112,43 @@ for scene in "$@"; do
             awk '{ print $1 + $2 }' >>"$BENCH_TMP/pr"
         echo "$(json_value time_render_s "$BENCH_TMP/i.json") $(json_value time_photon_s "$BENCH_TMP/i.json")" |
             awk '{ print $1 + $2 }' >>"$BENCH_TMP/ir"
+        if [ -n "$base" ]; then
+            # shellcheck disable=SC2086
+            (cd "$work" && "$base/iris" "$scene" -q -o "$BENCH_TMP/b.png" \
+                +FN16 $common --threads="$threads" \
+                --stats="$BENCH_TMP/b.json" >/dev/null 2>&1) &&
+            echo "$(json_value time_render_s "$BENCH_TMP/b.json") $(json_value time_photon_s "$BENCH_TMP/b.json")" |
+                awk '{ print $1 + $2 }' >>"$BENCH_TMP/br"
+        fi
     done
     if [ $ok = no ]; then
-        echo "| $name | fail | fail | - | - | - | - | - |"
+        if [ -n "$base" ]; then
+            echo "| $name | fail | fail | - | - | - | - | - | - | - |"
+        else
+            echo "| $name | fail | fail | - | - | - | - | - |"
+        fi
         continue
     fi
     tp=$(median_file "$BENCH_TMP/pw"); ti=$(median_file "$BENCH_TMP/iw")
     rp=$(median_file "$BENCH_TMP/pr"); ri=$(median_file "$BENCH_TMP/ir")
     psnr=$("$PSNR" "$BENCH_TMP/i.png" "$BENCH_TMP/p.png" 2>/dev/null | cut -d' ' -f1)
     r=$(ratio "$ti" "$tp"); rr=$(ratio "$ri" "$rp")
-    echo "| $name | $tp | $ti | $r | $rp | $ri | $rr | ${psnr:--} |"
+    if [ -n "$base" ]; then
+        rb=-; br=-
+        if [ -s "$BENCH_TMP/br" ]; then
+            rb=$(median_file "$BENCH_TMP/br"); br=$(ratio "$ri" "$rb")
+        fi
+        echo "| $name | $tp | $ti | $r | $rp | $ri | $rr | ${psnr:--} | $rb | $br |"
+        echo "$br" >>"$BENCH_TMP/bratios"
+    else
+        echo "| $name | $tp | $ti | $r | $rp | $ri | $rr | ${psnr:--} |"
+    fi
     echo "$r" >>"$BENCH_TMP/ratios"
     echo "$rr" >>"$BENCH_TMP/rratios"
 done
 echo
 grep -v -- - "$BENCH_TMP/ratios" | median_of | sed 's/^/median iris\/POV-Ray wall-time ratio: /'
 grep -v -- - "$BENCH_TMP/rratios" | median_of | sed 's/^/median iris\/POV-Ray render-time ratio: /'
+if [ -n "$base" ]; then
+    grep -v -- - "$BENCH_TMP/bratios" | median_of | sed 's/^/median iris\/base render-time ratio: /'
+fi

@@ -12,6 +12,11 @@
 #   build=/path/to/build sh bench/scaling.sh [-n PASSES] [-s WxH] [-p PHOTONS]
 #
 # The MPI rows need a build configured with MPI (mpirun found).
+# The images are PNG: an EXR goes through the OpenImageIO module, whose
+# ~250 libraries cost 0.45 s of CPU to load and relocate; that was most of
+# the "fixed cost of a run" (0.80 s) this script used to report.
+# On a loaded machine wall times mislead: the script also reports the CPU
+# time (user + sys) of the 1-thread runs, per pass.
 set -u
 here=$(cd "$(dirname "$0")" && pwd)
 passes=8
@@ -44,9 +49,9 @@ mpi() { n=$1; shift
 
 echo "scene: caustic_ball.pov, ${w}x${h}, $photons photons a pass, $passes passes, median of 3 runs"
 # shellcheck disable=SC2086
-t1=$(time_median 3 "$IRIS" $args --threads 1 -o "$BENCH_TMP/a.exr")
+t1=$(time_median 3 "$IRIS" $args --threads 1 -o "$BENCH_TMP/a.png")
 # shellcheck disable=SC2086
-t2=$(time_median 3 "$IRIS" $args --threads 2 -o "$BENCH_TMP/b.exr")
+t2=$(time_median 3 "$IRIS" $args --threads 2 -o "$BENCH_TMP/b.png")
 echo "| run | wall s | speed-up |"
 echo "| --- | ---: | ---: |"
 echo "| 1 process, 1 thread | $t1 | 1.000 |"
@@ -54,9 +59,9 @@ echo "| 1 process, 2 threads | $t2 | $(ratio "$t1" "$t2") |"
 r1=-; r2=-
 if [ -n "$MPIRUN" ]; then
     # shellcheck disable=SC2086
-    r1=$(time_median 3 mpi 1 $args --threads 1 -o "$BENCH_TMP/c.exr")
+    r1=$(time_median 3 mpi 1 $args --threads 1 -o "$BENCH_TMP/c.png")
     # shellcheck disable=SC2086
-    r2=$(time_median 3 mpi 2 $args --threads 1 -o "$BENCH_TMP/d.exr")
+    r2=$(time_median 3 mpi 2 $args --threads 1 -o "$BENCH_TMP/d.png")
     echo "| mpirun -n 1, 1 thread | $r1 | $(ratio "$t1" "$r1") |"
     echo "| mpirun -n 2, 1 thread each | $r2 | $(ratio "$t1" "$r2") (vs -n 1: $(ratio "$r1" "$r2")) |"
 else
@@ -67,7 +72,7 @@ fi
 # process start) from a 1-pass run; the rest divided by N is one pass.
 # shellcheck disable=SC2086
 t0=$(time_median 3 "$IRIS" -q "$scene" +W$w +H$h Declare=Photons=$photons \
-    --seed 1 --threads 1 -o "$BENCH_TMP/e.exr")
+    --seed 1 --threads 1 -o "$BENCH_TMP/e.png")
 bytes=$((w * h * 4 * 8))
 echo
 echo "fixed cost of a run (1 pass): $t0 s; one pass: $(echo "$t1 $t0 $passes" |
@@ -91,4 +96,16 @@ echo "$t1 $t0 $passes $bytes $r1 $r2" | awk '{
     if ($5 != "-" && $6 != "-" && $5 > 0)
         printf "measured overhead of 2 ranks over an ideal halving: %.3f s\n", $6 - ($5 - fixed) / 2 - fixed
 }'
+# CPU time per pass (1 thread): independent of the machine's other load
+cpu_of() { /usr/bin/time -f "%U %S" "$@" 2>&1 >/dev/null | tail -1 |
+    awk '{ printf "%.3f\n", $1 + $2 }'; }
+if [ -x /usr/bin/time ]; then
+    # shellcheck disable=SC2086
+    c1=$(cpu_of "$IRIS" -q "$scene" +W$w +H$h Declare=Photons=$photons \
+        --seed 1 --threads 1 -o "$BENCH_TMP/f.png")
+    # shellcheck disable=SC2086
+    cn=$(cpu_of "$IRIS" $args --threads 1 -o "$BENCH_TMP/g.png")
+    echo "CPU time (1 thread): 1 pass $c1 s, $passes passes $cn s," \
+        "$(echo "$cn $c1 $passes" | awk '{ printf "%.4f", ($1 - $2) / ($3 - 1) }') s a pass"
+fi
 echo "(the reduction is negligible; the limit is the fixed per-run cost, which every rank pays, and whole rounds of R passes)"

@@ -84,8 +84,20 @@ void pp_line_col(pp_state *ps, uint32_t file, uint32_t off, unsigned *line,
         return;
     line_map(ps, file);
     pp_file *pf = &ps->files[file];
-    if (!pf->line_start)
+    if (!pf->line_start) {
+        /* no memory for the map (an out-of-memory error is being
+        ** reported): count the lines up to 'off' instead */
+        unsigned l = 1;
+        uint32_t ls = 0;
+        for (uint32_t i = 0; i < off && i < pf->len; i++)
+            if (pf->text[i] == '\n') {
+                l++;
+                ls = i + 1;
+            }
+        *line = l;
+        *col = off - ls + 1;
         return;
+    }
     uint32_t lo = 0, hi = pf->n_lines - 1;
     while (lo < hi) {
         uint32_t mid = (lo + hi + 1) / 2;
@@ -154,6 +166,28 @@ static void fill_diag(pp_state *ps, iris_diag *d, enum iris_severity sev,
             snprintf(d->chain[d->n_chain++], sizeof d->chain[0],
                      "in macro '%.60s' called at %.150s:%u:%u",
                      fr->macro ? fr->macro->name : "?", cf, line, col);
+    }
+}
+
+void pp_check_interrupt(pp_state *ps)
+{
+    if (!ps->opt.interrupt || !*ps->opt.interrupt)
+        return;
+    ps->fail_status = IRIS_EINTR;
+    pp_error(ps, &ps->tok, "interrupted while parsing here");
+}
+
+/* Room for the first diagnostics before the parse starts: the one that
+** says the memory ran out must not need memory. */
+void pp_diags_reserve(pp_state *ps)
+{
+    iris_diag_list *l = ps->diags;
+    if (!l || l->cap >= 16)
+        return;
+    iris_diag *items = iris_realloc(l->items, 16 * sizeof *items);
+    if (items) {
+        l->items = items;
+        l->cap = 16;
     }
 }
 

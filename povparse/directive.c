@@ -243,9 +243,11 @@ static void do_end(pp_state *ps, const pp_token *at)
         return;
     case C_WHILE: {
         long limit = ps->opt.max_while_iterations;
+        pp_check_interrupt(ps);
         if (++c->iterations > limit)
             pp_error_at(ps, c->file, c->off, 6, "#while loop ran more than "
-                        "%ld times (limit: max_while_iterations)", limit);
+                        "%ld times (raise the limit with "
+                        "--max-loop-iterations=N)", limit);
         fr->pos = c->cond_pos;
         ps->n_unget = 0;
         if (cond_value(ps) != 0)
@@ -257,9 +259,11 @@ static void do_end(pp_state *ps, const pp_token *at)
     }
     case C_FOR: {
         long limit = ps->opt.max_while_iterations;
+        pp_check_interrupt(ps);
         if (++c->iterations > limit)
             pp_error_at(ps, c->file, c->off, 4, "#for loop ran more than "
-                        "%ld times (limit: max_while_iterations)", limit);
+                        "%ld times (raise the limit with "
+                        "--max-loop-iterations=N)", limit);
         pp_sym *s = sym_resolve(c->for_sym);
         double v = (s->val.kind == V_FLOAT ? s->val.v[0] : 0) + c->for_step;
         if (c->for_step > 0 ? v <= c->for_end + 1e-10 * fabs(c->for_end)

@@ -415,7 +415,7 @@ static void object(FILE *o, int d, const iris_object *ob,
             fprintf(o, " spectral model %d", (int)s->model);
             if (s->glass_name)
                 fprintf(o, " glass \"%s\"", s->glass_name);
-            if (s->model == IRIS_IOR_SELLMEIER)
+            if (s->model == IRIS_IOR_SELLMEIER && !s->glass_name)
                 fprintf(o, " B %.6g %.6g %.6g C %.6g %.6g %.6g", s->b[0],
                         s->b[1], s->b[2], s->c[0], s->c[1], s->c[2]);
             if (s->model == IRIS_IOR_CAUCHY)

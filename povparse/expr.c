@@ -80,11 +80,65 @@ static void need_numeric(pp_state *ps, const pp_token *at, const pp_value *v)
                  pp_kind_name(v->kind));
 }
 
+/* Numbers that go into the scene (or steer a directive) must be finite:
+** an overflow such as 1e308 * 1e308 would reach the renderer as inf or
+** NaN (issue 7). #declare keeps any value; only its use is checked. */
+static void need_finite(pp_state *ps, const pp_token *at, const pp_value *v)
+{
+    for (int i = 0; i < v->dim && i < 5; i++)
+        if (!isfinite(v->v[i]))
+            pp_error(ps, at, "the expression is not a finite number (%g): "
+                     "an overflow or an undefined operation", v->v[i]);
+}
+
+/*
+** True when the next token is a directive that only closes the running
+** #if branch: #else or #elseif of an #if being run, or the #end of an
+** #if/#else. Such a directive computes nothing, so running it before
+** the expression is complete is safe, and POV-Ray does so: a macro whose
+** body is '#if (c) A[i] #else ... #end' can be followed by '* 2' in the
+** caller (arrays.inc's Rand_Array_Item in advanced/isocacti). Any other
+** directive (#declare, a loop's #end, ...) still ends the expression.
+*/
+static bool next_directive_closes_if(pp_state *ps)
+{
+    if (ps->n_unget > 0 || ps->n_frames == 0)
+        return false;
+    pp_frame *cur = &ps->frames[ps->n_frames - 1];
+    if (ps->n_conds <= cur->cond_base)
+        return false;
+    int inner = ps->conds[ps->n_conds - 1].kind;
+    pp_token t, kw;
+    uint32_t pos = lex_peek(ps, cur->file, cur->pos, &t);
+    if (t.kind != T_HASH)
+        return false;
+    lex_peek(ps, cur->file, pos, &kw);
+    if (kw.kind == T_ELSE || kw.kind == T_ELSEIF)
+        return inner == C_IF;
+    return kw.kind == T_END && (inner == C_IF || inner == C_ELSE);
+}
+
+/* pp_next_is_directive(), except for the directives that only close an
+** #if branch (next_directive_closes_if): the expression goes on past
+** them. */
+static bool expression_ends(pp_state *ps)
+{
+    while (pp_next_is_directive(ps)) {
+        if (!next_directive_closes_if(ps))
+            return true;
+        /* run that one directive, nothing after it */
+        pp_token hash;
+        pp_raw(ps, &hash);
+        pp_directive(ps, &hash);
+    }
+    return false;
+}
+
 /* Reads the next operator token, or nothing when the next token is a
 ** directive (which must not run before the expression is complete). */
 static int peek_op(pp_state *ps)
 {
-    if (pp_next_is_directive(ps))
+    if (expression_ends(ps))
         return T_EOF;
     ps->no_expand++;
     pp_next(ps);
@@ -154,12 +208,25 @@ static double checked(pp_state *ps, const pp_token *at, double r,
     return r;
 }
 
-static uint64_t splitmix(uint64_t *s)
+/* rand(): POV-Ray 3.7's generator, so that scenes built from random
+** numbers come out the same (randomsequence.cpp POV_rand): a 32-bit
+** linear congruential step s = s * 1812433253 + 12345 (mod 2^32), and
+** the value s / (2^32 - 1), in [0, 1]. */
+static double pov_rand(uint64_t *state)
 {
-    uint64_t z = (*s += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
+    uint32_t s = (uint32_t)*state * 1812433253u + 12345u;
+    *state = s;
+    return (double)s / 4294967295.0;
+}
+
+/* seed(): the stream starts at (unsigned int)(int)x, as POV-Ray's
+** stream_seed; a float outside the int range gives INT_MIN, what x86's
+** conversion gives there. */
+static uint64_t pov_seed(double x)
+{
+    int32_t i = x > -2147483649.0 && x < 2147483648.0 ? (int32_t)x
+                                                      : INT32_MIN;
+    return (uint32_t)i;
 }
 
 static const char *fmt_float(pp_state *ps, double f, int len, int prec)
@@ -181,8 +248,9 @@ static const char *fmt_float(pp_state *ps, double f, int len, int prec)
 }
 
 /* The object bounds used by min_extent/max_extent: world-space box of
-** the simple primitives, unions of CSG children; huge when unknown. */
-static void object_bounds(const iris_object *o, vec3 *lo, vec3 *hi)
+** the simple primitives, unions of CSG children. False (and POV-Ray's
+** infinite box, +-1e10) when the parser cannot bound 'o' itself. */
+static bool object_bounds(const iris_object *o, vec3 *lo, vec3 *hi)
 {
     vec3 a, b;
     switch (o->kind) {
@@ -222,9 +290,11 @@ static void object_bounds(const iris_object *o, vec3 *lo, vec3 *hi)
         int n = o->u.csg.n_children;
         if (o->kind == IRIS_OBJ_DIFFERENCE && n > 0)
             n = 1;
+        bool known = true;
         for (int i = 0; i < n; i++) {
             vec3 cl, ch;
-            object_bounds(o->u.csg.children[i], &cl, &ch);
+            if (!object_bounds(o->u.csg.children[i], &cl, &ch))
+                known = false;
             if (o->kind == IRIS_OBJ_INTERSECTION && i > 0) {
                 *lo = v3_max(*lo, cl);
                 *hi = v3_min(*hi, ch);
@@ -233,12 +303,16 @@ static void object_bounds(const iris_object *o, vec3 *lo, vec3 *hi)
                 *hi = v3_max(*hi, ch);
             }
         }
-        return;
+        if (!known) {
+            *lo = v3(-1e10, -1e10, -1e10);
+            *hi = v3(1e10, 1e10, 1e10);
+        }
+        return known;
     }
     default:
         *lo = v3(-1e10, -1e10, -1e10);
         *hi = v3(1e10, 1e10, 1e10);
-        return;
+        return false;
     }
     /* Transform the 8 corners. */
     *lo = v3(1e30, 1e30, 1e30);
@@ -250,6 +324,7 @@ static void object_bounds(const iris_object *o, vec3 *lo, vec3 *hi)
         *lo = v3_min(*lo, p);
         *hi = v3_max(*hi, p);
     }
+    return true;
 }
 
 static const iris_object *object_arg(pp_state *ps)
@@ -267,6 +342,79 @@ static const iris_object *object_arg(pp_state *ps)
     }
     rparen(ps);
     return o;
+}
+
+/* The object argument of trace() and inside(): an object identifier
+** (POV-Ray accepts nothing else). */
+static const iris_object *object_ident(pp_state *ps)
+{
+    pp_next(ps);
+    if (ps->tok.kind != T_IDENT || ps->tok.val.kind != V_OBJECT)
+        pp_error(ps, &ps->tok, "object identifier expected");
+    return ps->tok.val.u.obj;
+}
+
+/* The geometry callbacks, or a located error naming what needs them. */
+static const iris_geometry_queries *need_geometry(pp_state *ps,
+                                                  const pp_token *at,
+                                                  const char *what)
+{
+    const iris_geometry_queries *g = ps->opt.geometry;
+    if (!g || (what[0] == 't' ? !g->trace : !g->inside))
+        pp_error(ps, at, "%s() needs the renderer (no geometry queries were "
+                 "given to the parser)", what);
+    return g;
+}
+
+/* trace(OBJECT_ID, A, B [, VECTOR_ID]): the first hit of the ray from A
+** along B with the object, <0,0,0> on a miss; the optional identifier
+** receives the surface normal there, <0,0,0> on a miss (POV-Ray 3.7,
+** parser_expressions.cpp Parse_Trace). */
+static pp_value trace_call(pp_state *ps, const pp_token *at)
+{
+    const iris_geometry_queries *g = need_geometry(ps, at, "trace");
+    lparen(ps);
+    const iris_object *o = object_ident(ps);
+    comma(ps);
+    vec3 org = pp_vector(ps);
+    comma(ps);
+    vec3 dir = pp_vector(ps);
+    vec3 p = v3(0, 0, 0), n = v3(0, 0, 0);
+    double len = v3_len(dir);
+    if (len > 0 && isfinite(len) &&
+        !g->trace(g->user, ps->scene, pp_query_object(ps, o), org,
+                  v3_scale(dir, 1 / len), &p, &n)) {
+        p = v3(0, 0, 0);
+        n = v3(0, 0, 0);
+    }
+    if (pp_accept(ps, T_COMMA)) {
+        pp_next(ps);
+        pp_token name = ps->tok;
+        if (name.kind != T_IDENT)
+            pp_error(ps, &name, "expected a vector identifier for the "
+                     "normal in trace()");
+        const char *text = pp_tok_text(ps, &name);
+        pp_sym *s = sym_lookup(ps, text, name.len);
+        if (!s)
+            s = sym_define(ps, 0, text, name.len);
+        s = sym_resolve(s);
+        s->val = vval(3, n.x, n.y, n.z, 0);
+    }
+    rparen(ps);
+    return vval(3, p.x, p.y, p.z, 0);
+}
+
+/* inside(OBJECT_ID, POINT): 1 when the point is inside the object. */
+static pp_value inside_call(pp_state *ps, const pp_token *at)
+{
+    const iris_geometry_queries *g = need_geometry(ps, at, "inside");
+    lparen(ps);
+    const iris_object *o = object_ident(ps);
+    comma(ps);
+    vec3 p = pp_vector(ps);
+    rparen(ps);
+    return fval(g->inside(g->user, ps->scene, pp_query_object(ps, o), p)
+                    ? 1 : 0);
 }
 
 /* A spline's value at 't' (POV-Ray's definitions, src/fn/spline.c). */
@@ -359,7 +507,7 @@ static pp_value colour_body(pp_state *ps)
                     c.v[i] = pp_srgb_to_working(ps, &at, c.v[i]);
             started = true;
         }
-        if (pp_next_is_directive(ps))
+        if (expression_ends(ps))
             return c;
         pp_next(ps);
     }
@@ -732,7 +880,7 @@ static pp_value factor(pp_state *ps)
             ps->rng = r;
             ps->cap_rng = cap;
         }
-        ps->rng[ps->n_rng] = (uint64_t)(int64_t)s * 0x2545F4914F6CDD1Dull + 1;
+        ps->rng[ps->n_rng] = pov_seed(s);
         return fval(ps->n_rng++);
     }
     case T_RAND: {
@@ -740,7 +888,7 @@ static pp_value factor(pp_state *ps)
         int i = s >= 0 && s < 1e9 ? (int)s : -1;
         if (i < 0 || i >= ps->n_rng)
             pp_error(ps, &at, "rand: %g is not a stream made by seed()", s);
-        return fval((double)(splitmix(&ps->rng[i]) >> 11) * 0x1.0p-53);
+        return fval(pov_rand(&ps->rng[i]));
     }
     case T_DEFINED: {
         lparen(ps);
@@ -814,13 +962,17 @@ static pp_value factor(pp_state *ps)
     case T_MIN_EXTENT: case T_MAX_EXTENT: {
         const iris_object *o = object_arg(ps);
         vec3 lo, hi;
-        object_bounds(o, &lo, &hi);
+        const iris_geometry_queries *g = ps->opt.geometry;
+        if (!object_bounds(o, &lo, &hi) && g && g->bounds &&
+            !g->bounds(g->user, ps->scene, pp_query_object(ps, o), &lo, &hi)) {
+            lo = v3(-1e10, -1e10, -1e10); /* unbounded: POV-Ray's box */
+            hi = v3(1e10, 1e10, 1e10);
+        }
         vec3 r = k == T_MIN_EXTENT ? lo : hi;
         return vval(3, r.x, r.y, r.z, 0);
     }
-    case T_INSIDE: case T_TRACE:
-        pp_error(ps, &at, "%s() is not supported (it needs the renderer's "
-                 "intersection code)", k == T_INSIDE ? "inside" : "trace");
+    case T_TRACE: return trace_call(ps, &at);
+    case T_INSIDE: return inside_call(ps, &at);
     case T_STR: {
         lparen(ps);
         double f = pp_float(ps);
@@ -1110,6 +1262,7 @@ double pp_float(pp_state *ps)
     if (v.dim != 1)
         pp_error(ps, &at, "expected a float, found a %d-component vector",
                  v.dim);
+    need_finite(ps, &at, &v);
     return v.v[0];
 }
 
@@ -1121,6 +1274,7 @@ iris_vec3 pp_vector(pp_state *ps)
     pp_value v = expr_add(ps);
     need_numeric(ps, &at, &v);
     pp_value_promote(&v, 3);
+    need_finite(ps, &at, &v);
     iris_vec3 r = { v.v[0], v.v[1], v.v[2] };
     return r;
 }
@@ -1133,6 +1287,7 @@ iris_vec2 pp_vector2(pp_state *ps)
     pp_value v = expr_add(ps);
     need_numeric(ps, &at, &v);
     pp_value_promote(&v, 2);
+    need_finite(ps, &at, &v);
     iris_vec2 r = { v.v[0], v.v[1] };
     return r;
 }
@@ -1145,6 +1300,7 @@ void pp_vector4(pp_state *ps, double out[4])
     pp_value v = expr_add(ps);
     need_numeric(ps, &at, &v);
     pp_value_promote(&v, 4);
+    need_finite(ps, &at, &v);
     for (int i = 0; i < 4; i++)
         out[i] = v.v[i];
 }
@@ -1175,6 +1331,7 @@ iris_colour pp_colour(pp_state *ps)
     }
     pp_value v = colour_body(ps);
     need_numeric(ps, &at, &v);
+    need_finite(ps, &at, &v);
     return pp_value_colour(&v);
 }
 
@@ -1214,6 +1371,7 @@ double pp_full_float(pp_state *ps)
     pp_unget(ps);
     pp_value v = expr_cond(ps);
     need_numeric(ps, &at, &v);
+    need_finite(ps, &at, &v);
     return v.v[0];
 }
 

@@ -455,6 +455,25 @@ static iris_fn *finish_fn(fnc *c, int n_results)
     return fn;
 }
 
+/* F(x,y,z) = the grey level of pigment 'pg' at (x,y,z), POV-Ray's
+** Greyscale() (0.297 R + 0.589 G + 0.114 B; src/fn's component 5): the
+** value of pigment_pattern { pg }. */
+iris_fn *pp_pigment_grey_fn(pp_state *ps, iris_pigment *pg)
+{
+    fnc c;
+    memset(&c, 0, sizeof c);
+    c.ps = ps;
+    c.default_params = true;
+    c.n_params = 3;
+    c.params[0] = "x";
+    c.params[1] = "y";
+    c.params[2] = "z";
+    emit(&c, IRIS_FN_PATTERN, 5, 0, 0, 1);
+    c.code[0].pattern = &pg->pattern;
+    c.code[0].pigment = pg;
+    return finish_fn(&c, 1);
+}
+
 /* function [ '(' params ')' ] '{' body '}' ; the current token is
 ** 'function'. */
 iris_fn *pp_function(pp_state *ps)

@@ -356,6 +356,7 @@ void pp_unget(pp_state *ps)
 
 void pp_next(pp_state *ps)
 {
+    pp_poll_interrupt(ps);
     for (;;) {
         if (ps->n_unget > 0) {
             ps->tok = ps->unget[--ps->n_unget];

@@ -114,13 +114,18 @@ void pp_pattern_init(iris_pattern *p)
     p->iterations = 0;
 }
 
-static iris_warp *add_warp(pp_state *ps, iris_pattern *p, int kind)
+/* Inserts a new warp at index 'at' of the pattern's list. */
+static iris_warp *insert_warp(pp_state *ps, iris_pattern *p, int at, int kind)
 {
     iris_warp *w = pp_alloc(ps, (size_t)(p->n_warps + 1) * sizeof *w);
-    if (p->n_warps)
-        memcpy(w, p->warps, (size_t)p->n_warps * sizeof *w);
+    if (at)
+        memcpy(w, p->warps, (size_t)at * sizeof *w);
+    if (p->n_warps > at)
+        memcpy(w + at + 1, p->warps + at,
+               (size_t)(p->n_warps - at) * sizeof *w);
     p->warps = w;
-    iris_warp *n = &w[p->n_warps++];
+    p->n_warps++;
+    iris_warp *n = &w[at];
     memset(n, 0, sizeof *n);
     n->kind = kind;
     n->octaves = 6;
@@ -130,13 +135,65 @@ static iris_warp *add_warp(pp_state *ps, iris_pattern *p, int kind)
     return n;
 }
 
-/* The classic turbulence of a pattern: the last warp if it is one that
-** has no other warp after it, else a new one. */
+static iris_warp *add_warp(pp_state *ps, iris_pattern *p, int kind)
+{
+    return insert_warp(ps, p, p->n_warps, kind);
+}
+
+/*
+** The order of transforms and warps. POV-Ray keeps one list per pattern:
+** transforms and warp{} blocks are appended in the order written (runs
+** of transforms merge into one), the classic turbulence sits at the
+** front, and a point goes through the list from the last entry to the
+** first, so the last-written applies first and the classic turbulence
+** last (pattern.cpp Transform_Tpattern, warp.cpp Warp_EPoint).
+**
+** scene.h's form (src/material/pattern.c pat_space): the point goes
+** through pattern.transform first, then warps[n-1] .. warps[0], except
+** that a TURBULENCE entry at the very end is the classic turbulence and
+** goes last. So the parser keeps:
+**   - pattern.transform = the transforms written after the last warp{};
+**   - warps = the written order, each earlier run of transforms moved
+**     into an IRIS_WARP_TRANSFORM entry when a warp{} follows it;
+**   - a classic turbulence, if any, as the last entry, and never a warp
+**     {turbulence} last (an identity TRANSFORM entry follows it), so
+**     that the renderer cannot take one for the other.
+*/
+static bool has_classic(const iris_pattern *p)
+{
+    return p->n_warps && p->warps[p->n_warps - 1].kind == IRIS_WARP_TURBULENCE;
+}
+
+/* The classic turbulence of a pattern: the last entry, or a new one. */
 static iris_warp *classic_turb(pp_state *ps, iris_pattern *p)
 {
-    if (p->n_warps && p->warps[p->n_warps - 1].kind == IRIS_WARP_TURBULENCE)
+    if (has_classic(p))
         return &p->warps[p->n_warps - 1];
     return add_warp(ps, p, IRIS_WARP_TURBULENCE);
+}
+
+/* An entry of a warp{} block: after the written ones, before the
+** classic turbulence. The transforms written so far move into the list
+** first, since they apply after this warp (see above). */
+static iris_warp *block_warp(pp_state *ps, iris_pattern *p, int kind)
+{
+    int at = has_classic(p) ? p->n_warps - 1 : p->n_warps;
+    if (p->has_transform) {
+        iris_warp *t = insert_warp(ps, p, at++, IRIS_WARP_TRANSFORM);
+        t->transform = p->transform;
+        xf_identity(&p->transform);
+        p->has_transform = false;
+    }
+    return insert_warp(ps, p, at, kind);
+}
+
+/* After a warp{} block: a block turbulence must not be the last entry
+** ('had_classic': the pattern had a classic turbulence before the
+** block, which then stays last). */
+static void guard_block_turb(pp_state *ps, iris_pattern *p, bool had_classic)
+{
+    if (!had_classic && has_classic(p))
+        add_warp(ps, p, IRIS_WARP_TRANSFORM);
 }
 
 /* warp { turbulence | repeat | black_hole | planar | spherical | ... } */
@@ -144,22 +201,24 @@ static void warp_block(pp_state *ps, iris_pattern *p)
 {
     pp_expect(ps, T_LBRACE, "'{'");
     iris_warp *w = NULL;
+    bool had_classic = has_classic(p);
     for (;;) {
         pp_next(ps);
         pp_token at = ps->tok;
         switch (at.kind) {
         case T_RBRACE:
+            guard_block_turb(ps, p, had_classic);
             return;
         case T_TURBULENCE:
-            w = add_warp(ps, p, IRIS_WARP_TURBULENCE);
+            w = block_warp(ps, p, IRIS_WARP_TURBULENCE);
             w->turbulence = pp_vector(ps);
             break;
         case T_REPEAT:
-            w = add_warp(ps, p, IRIS_WARP_REPEAT);
+            w = block_warp(ps, p, IRIS_WARP_REPEAT);
             w->repeat = pp_vector(ps);
             break;
         case T_BLACK_HOLE:
-            w = add_warp(ps, p, IRIS_WARP_BLACK_HOLE);
+            w = block_warp(ps, p, IRIS_WARP_BLACK_HOLE);
             w->centre = pp_vector(ps);
             pp_expect(ps, T_COMMA, "','");
             w->radius = pp_float(ps);
@@ -167,7 +226,7 @@ static void warp_block(pp_state *ps, iris_pattern *p)
             w->falloff = 2;
             break;
         case T_PLANAR: case T_SPHERICAL: case T_CYLINDRICAL: case T_TOROIDAL:
-            w = add_warp(ps, p, at.kind == T_PLANAR ? IRIS_WARP_PLANAR :
+            w = block_warp(ps, p, at.kind == T_PLANAR ? IRIS_WARP_PLANAR :
                                 at.kind == T_SPHERICAL ? IRIS_WARP_SPHERICAL :
                                 at.kind == T_CYLINDRICAL ? IRIS_WARP_CYLINDRICAL
                                                          : IRIS_WARP_TOROIDAL);
@@ -224,7 +283,7 @@ static void warp_block(pp_state *ps, iris_pattern *p)
         default: {
             iris_transform x;
             if (pp_transform_item(ps, &x)) {
-                w = add_warp(ps, p, IRIS_WARP_TRANSFORM);
+                w = block_warp(ps, p, IRIS_WARP_TRANSFORM);
                 w->transform = x;
                 break;
             }
@@ -234,16 +293,17 @@ static void warp_block(pp_state *ps, iris_pattern *p)
     }
 }
 
-/* Resolves an image or font file as POV-Ray does: relative to the
-** including file, the scene and the include path. Keeps the name as
-** written (with a warning) when it cannot be found. */
-const char *pp_find_file(pp_state *ps, const pp_token *at, const char *name)
+/* Looks 'name' up relative to the including file, the scene and the
+** include path; NULL when it is nowhere. */
+static const char *find_in_path(pp_state *ps, const pp_token *at,
+                                const char *name)
 {
     char buf[4096];
     struct stat st;
     if (name[0] == '/') {
-        if (stat(name, &st) == 0)
-            pp_check_read(ps, at, name);
+        if (stat(name, &st) != 0)
+            return NULL;
+        pp_check_read(ps, at, name);
         return pp_strdup(ps, name, strlen(name));
     }
     const char *dirs[66];
@@ -263,12 +323,54 @@ const char *pp_find_file(pp_state *ps, const pp_token *at, const char *name)
             return pp_strdup(ps, buf, (size_t)n);
         }
     }
-    /* The name as written is opened from the working directory later:
-    ** under the restricted policy it must not lead elsewhere either. */
+    return NULL;
+}
+
+/* The name as written, when it is found nowhere: it is opened from the
+** working directory later, so under the restricted policy it must not
+** lead elsewhere either. */
+static const char *not_found(pp_state *ps, const pp_token *at,
+                             const char *name)
+{
+    struct stat st;
     if (stat(name, &st) == 0)
         pp_check_read(ps, at, name);
     pp_warning(ps, at, "file \"%s\" not found", name);
     return pp_strdup(ps, name, strlen(name));
+}
+
+/* Resolves an image or font file as POV-Ray does: relative to the
+** including file, the scene and the include path. Keeps the name as
+** written (with a warning) when it cannot be found. */
+const char *pp_find_file(pp_state *ps, const pp_token *at, const char *name)
+{
+    const char *found = find_in_path(ps, at, name);
+    return found ? found : not_found(ps, at, name);
+}
+
+/* The same, trying the file type's extensions as POV-Ray's FindFile
+** (backendscenedata.cpp) does: a name that already ends in one of them
+** is tried as written first, else last, after name+ext for each. */
+const char *pp_find_file_ext(pp_state *ps, const pp_token *at,
+                             const char *name, const char *const *exts)
+{
+    size_t len = strlen(name);
+    bool exact_first = false;
+    for (int i = 0; exts[i]; i++) {
+        size_t el = strlen(exts[i]);
+        if (len >= el && strcmp(name + len - el, exts[i]) == 0)
+            exact_first = true;
+    }
+    const char *found = exact_first ? find_in_path(ps, at, name) : NULL;
+    for (int i = 0; exts[i] && !found; i++) {
+        char *with = pp_salloc(ps, len + strlen(exts[i]) + 1);
+        memcpy(with, name, len);
+        strcpy(with + len, exts[i]);
+        found = find_in_path(ps, at, with);
+    }
+    if (!found && !exact_first)
+        found = find_in_path(ps, at, name);
+    return found ? found : not_found(ps, at, name);
 }
 
 static bool is_image_type(int k)
@@ -346,6 +448,19 @@ static bool list_pattern(int kind)
            kind == IRIS_PAT_SQUARE || kind == IRIS_PAT_TRIANGULAR;
 }
 
+/* mandel/julia colouring in params[] (src/material/pattern.c fractal):
+** interior type, factor; exterior type, factor; [5] = 1: given. These
+** are POV-Ray's defaults, interior 0, 1 and exterior 1, 1. */
+static void fractal_defaults(iris_pattern *p)
+{
+    p->params[0] = 0;
+    p->params[1] = 1;
+    p->params[2] = 1;
+    p->params[3] = 1;
+    p->params[4] = 0;
+    p->params[5] = 1;
+}
+
 /* Parses a pattern keyword and its own parameters into 'p'; false when
 ** the current token is no pattern. */
 static bool pattern_kind(pp_state *ps, iris_pattern *p)
@@ -379,9 +494,14 @@ static bool pattern_kind(pp_state *ps, iris_pattern *p)
         p->complex_c = pp_vector2(ps);
         pp_accept(ps, T_COMMA);
         p->iterations = pp_int(ps);
+        fractal_defaults(p);
         break;
     case T_LEOPARD: p->kind = IRIS_PAT_LEOPARD; break;
-    case T_MANDEL: p->kind = IRIS_PAT_MANDEL; p->iterations = pp_int(ps); break;
+    case T_MANDEL:
+        p->kind = IRIS_PAT_MANDEL;
+        p->iterations = pp_int(ps);
+        fractal_defaults(p);
+        break;
     case T_MARBLE: p->kind = IRIS_PAT_MARBLE; p->wave = IRIS_WAVE_TRIANGLE; break;
     case T_ONION: p->kind = IRIS_PAT_ONION; break;
     case T_PLANAR: p->kind = IRIS_PAT_PLANAR; break;
@@ -466,11 +586,12 @@ static bool pattern_kind(pp_state *ps, iris_pattern *p)
         break;
     }
     case T_PIGMENT_PATTERN: {
-        /* A pigment used as a pattern: keep the pigment's pattern. */
+        /* A pigment used as a pattern: its grey level at the point
+        ** (POV-Ray 3.7 PigmentPattern::EvaluateRaw), evaluated by src/fn
+        ** as a function pattern. */
         iris_pigment *pg = pp_pigment(ps, NULL);
-        pp_warn_once(ps, &at, T_PIGMENT_PATTERN, "pigment_pattern (uses the "
-                     "inner pigment's pattern)");
-        *p = pg->pattern;
+        p->kind = IRIS_PAT_FUNCTION;
+        p->fn = pp_pigment_grey_fn(ps, pg);
         break;
     }
     case T_DENSITY_FILE: {
@@ -558,14 +679,26 @@ static bool pattern_mod(pp_state *ps, iris_pattern *p)
     case T_CONTROL0: p->params[0] = pp_float(ps); return true;
     case T_CONTROL1: p->params[1] = pp_float(ps); return true;
     case T_EXPONENT: p->params[6] = pp_float(ps); return true;
-    case T_EXTERIOR: case T_INTERIOR:
+    case T_EXTERIOR: case T_INTERIOR: {
         if (p->kind != IRIS_PAT_MANDEL && p->kind != IRIS_PAT_JULIA &&
             p->kind != IRIS_PAT_PAVEMENT)
             return false;
-        pp_float(ps);
+        int type = pp_int(ps);
+        double factor = 1;
         if (pp_accept(ps, T_COMMA))
-            pp_float(ps);
+            factor = pp_float(ps);
+        if (p->kind == IRIS_PAT_PAVEMENT)
+            return true;
+        /* the fractal colouring (POV-Ray: exterior 0-8, interior 0-6) */
+        bool ext = at.kind == T_EXTERIOR;
+        if (type < 0 || type > (ext ? 8 : 6))
+            pp_error(ps, &at, "%s type must be 0 to %d",
+                     ext ? "exterior" : "interior", ext ? 8 : 6);
+        p->params[ext ? 2 : 0] = type;
+        p->params[ext ? 3 : 1] = factor;
+        p->params[5] = 1;
         return true;
+    }
     case T_COORDS: p->params[1] = pp_float(ps); return true;
     case T_SIZE: p->params[0] = pp_float(ps); return true;
     case T_NUMBER_OF_SIDES: p->params[0] = pp_float(ps); return true;
@@ -942,8 +1075,6 @@ static iris_pigment *pigment_body(pp_state *ps, const iris_pigment *base,
             p->pattern.iterations = np.iterations;
             p->pattern.wave = np.wave;
             memcpy(p->pattern.params, np.params, sizeof np.params);
-            if (k == T_PIGMENT_PATTERN)
-                p->pattern = np;
             (void)old_kind;
             if (list_pattern(p->pattern.kind)) {
                 int max = p->pattern.kind == IRIS_PAT_HEXAGON ? 3 :
@@ -1055,6 +1186,12 @@ static iris_normal *normal_body(pp_state *ps, const iris_normal *base,
     pp_token open = ps->tok;
     pp_unget(ps);
     iris_normal *n = pp_alloc(ps, sizeof *n);
+    /* A normal starts as a copy of the #default normal, wherever it is
+    ** written: a texture, a normal_map entry, a checker's list, a
+    ** #declare (POV-Ray 3.7 Parse_Tnormal, Parse_BlendMapData). So a
+    ** #default bump_size reaches them all. */
+    if (!base && ps->default_tex && ps->default_tex->normal)
+        base = ps->default_tex->normal;
     if (base) {
         *n = *base;
     } else {
@@ -1519,42 +1656,6 @@ iris_texture *pp_texture(pp_state *ps)
 
 /* ---- interior ---------------------------------------------------- */
 
-/* Sellmeier coefficients of the built-in glass catalogue, from
-** ../shared/data/glass_sellmeier.csv (SCHOTT catalogue 2017 and
-** refractiveindex.info; see that file for each row's source). */
-static const struct glass {
-    const char *name;
-    double b[4], c[4];
-} glasses[] = {
-    { "N-BK7", { 1.03961212, 0.231792344, 1.01046945, 0 },
-      { 0.00600069867, 0.0200179144, 103.560653, 0 } },
-    { "N-BAK1", { 1.12365662, 0.309276848, 0.881511957, 0 },
-      { 0.00644742752, 0.0222284402, 107.297751, 0 } },
-    { "N-FK51A", { 0.971247817, 0.216901417, 0.904651666, 0 },
-      { 0.00472301995, 0.0153575612, 168.68133, 0 } },
-    { "N-BAF10", { 1.5851495, 0.143559385, 1.08521269, 0 },
-      { 0.00926681282, 0.0424489805, 105.613573, 0 } },
-    { "F2", { 1.34533359, 0.209073176, 0.937357162, 0 },
-      { 0.00997743871, 0.0470450767, 111.886764, 0 } },
-    { "N-SF5", { 1.52481889, 0.187085527, 1.42729015, 0 },
-      { 0.011254756, 0.0588995392, 129.141675, 0 } },
-    { "N-SF10", { 1.62153902, 0.256287842, 1.64447552, 0 },
-      { 0.0122241457, 0.0595736775, 147.468793, 0 } },
-    { "N-SF11", { 1.73759695, 0.313747346, 1.89878101, 0 },
-      { 0.013188707, 0.0623068142, 155.23629, 0 } },
-    { "N-LASF9", { 2.00029547, 0.298926886, 1.80691843, 0 },
-      { 0.0121426017, 0.0538736236, 156.530829, 0 } },
-    { "fused_silica", { 0.6961663, 0.4079426, 0.8974794, 0 },
-      { 0.004679148258, 0.01351206307, 97.93400254, 0 } },
-    { "sapphire_o", { 1.4313493, 0.65054713, 5.3414021, 0 },
-      { 0.005279926102, 0.01423826471, 325.0178341, 0 } },
-    { "sapphire_e", { 1.5039759, 0.55069141, 6.5927379, 0 },
-      { 0.005480263229, 0.01479942808, 402.8951398, 0 } },
-    { "diamond", { 0.3306, 4.3356, 0, 0 }, { 0.030625, 0.011236, 0, 0 } },
-    { "water_20C", { 0.5684027565, 0.1726177391, 0.02086189578, 0.1130748688 },
-      { 0.005101829712, 0.01821153936, 0.02620722293, 10.69792721 } },
-};
-
 static bool ident_is(pp_state *ps, const pp_token *t, const char *word)
 {
     size_t n = strlen(word);
@@ -1573,19 +1674,14 @@ static bool ior_extension(pp_state *ps, iris_interior *in, const pp_token *at)
         nt = ps->tok;
         pp_unget(ps);
         const char *name = pp_string(ps);
-        size_t i;
-        for (i = 0; i < sizeof glasses / sizeof glasses[0]; i++)
-            if (strcmp(glasses[i].name, name) == 0)
-                break;
-        if (i == sizeof glasses / sizeof glasses[0])
-            pp_error(ps, &nt, "unknown glass \"%s\" (the catalogue has "
-                     "N-BK7, N-BAK1, N-FK51A, N-BAF10, F2, N-SF5, N-SF10, "
-                     "N-SF11, N-LASF9, fused_silica, sapphire_o, sapphire_e, "
-                     "diamond, water_20C)", name);
+        if (!name[0])
+            pp_error(ps, &nt, "glass needs a catalogue name");
+        /* The catalogue is src/spectrum's: the render build looks the
+        ** name up and reports an unknown one at this location
+        ** (render/check_ior.c), so the parser keeps the name only. */
         s->model = IRIS_IOR_SELLMEIER;
-        s->glass_name = glasses[i].name;
-        memcpy(s->b, glasses[i].b, sizeof s->b);
-        memcpy(s->c, glasses[i].c, sizeof s->c);
+        s->glass_name = pp_strdup(ps, name, strlen(name));
+        s->loc = pp_loc(ps, &nt);
     } else if (ident_is(ps, at, "sellmeier")) {
         iris_vec3 b = pp_vector(ps);
         pp_expect(ps, T_COMMA, "','");

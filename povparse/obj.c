@@ -1167,7 +1167,8 @@ static void shape_body(pp_state *ps, iris_object *o, int kw, const pp_token *at)
             pp_token ft = ps->tok;
             pp_unget(ps);
             const char *font = pp_string(ps);
-            o->u.text.font = pp_find_file(ps, &ft, font);
+            static const char *const ttf_ext[] = { ".ttf", ".TTF", NULL };
+            o->u.text.font = pp_find_file_ext(ps, &ft, font, ttf_ext);
         }
         pp_accept(ps, T_COMMA);
         {
@@ -1269,7 +1270,9 @@ static void shape_body(pp_state *ps, iris_object *o, int kw, const pp_token *at)
         break;
     }
     case T_BICUBIC_PATCH: {
-        o->u.bicubic.u_steps = o->u.bicubic.v_steps = 3;
+        /* POV-Ray's default is 0 steps: one cell of two triangles
+        ** unless u_steps/v_steps are given */
+        o->u.bicubic.u_steps = o->u.bicubic.v_steps = 0;
         for (;;) {
             pp_next(ps);
             if (ps->tok.kind == T_TYPE)
@@ -1282,7 +1285,14 @@ static void shape_body(pp_state *ps, iris_object *o, int kw, const pp_token *at)
                 o->u.bicubic.v_steps = pp_int(ps);
             else if (ps->tok.kind == T_ACCURACY)
                 pp_float(ps);
-            else
+            else if (ps->tok.kind == T_UV_VECTORS) {
+                /* the texture uv of the four corners; only uv_mapping
+                ** would use them, and iris keeps the patch's own uv */
+                for (int k = 0; k < 4; k++) {
+                    pp_accept(ps, T_COMMA);
+                    pp_vector2(ps);
+                }
+            } else
                 break;
         }
         pp_unget(ps);
@@ -1313,14 +1323,27 @@ static void shape_body(pp_state *ps, iris_object *o, int kw, const pp_token *at)
                 o->u.parametric.hi = pp_vector(ps);
                 pp_expect(ps, T_RBRACE, "'}'");
                 pp_expect(ps, T_RBRACE, "'}'");
-            } else if (ps->tok.kind == T_MAX_GRADIENT ||
-                       ps->tok.kind == T_ACCURACY) {
-                pp_float(ps);
+            } else if (ps->tok.kind == T_MAX_GRADIENT) {
+                o->u.parametric.max_gradient = pp_float(ps);
+            } else if (ps->tok.kind == T_ACCURACY) {
+                o->u.parametric.accuracy = pp_float(ps);
             } else if (ps->tok.kind == T_PRECOMPUTE) {
-                pp_float(ps); comma(ps);
-                pp_expect(ps, T_LBRACKET, "'['");
-                while (!pp_accept(ps, T_RBRACKET))
-                    pp_next(ps);
+                /* precompute DEPTH [,] [x] [,] [y] [,] [z] (POV-Ray 3.7;
+                ** a bracketed list is accepted too). Only a cache in
+                ** POV-Ray: nothing to keep. */
+                pp_float(ps);
+                pp_accept(ps, T_COMMA);
+                if (pp_accept(ps, T_LBRACKET)) {
+                    while (!pp_accept(ps, T_RBRACKET))
+                        pp_next(ps);
+                } else {
+                    for (int k = 0; k < 3; k++) {
+                        pp_accept(ps, T_COMMA);
+                        if (!pp_accept(ps, T_X) && !pp_accept(ps, T_Y) &&
+                            !pp_accept(ps, T_Z))
+                            break;
+                    }
+                }
             } else {
                 break;
             }
@@ -1490,6 +1513,19 @@ iris_object *pp_object(pp_state *ps)
     }
     pp_token open = at;
     pp_expect(ps, T_LBRACE, "'{'");
+    if (kind < IRIS_OBJ_UNION) {
+        /* SHAPE { OBJECT_ID mods }: a copy of the identifier, as POV-Ray's
+        ** Parse_Object_Id (mesh { camera_mesh ... } in the mesh_camera
+        ** demos) */
+        pp_next(ps);
+        pp_token id = ps->tok;
+        if (id.kind == T_IDENT && id.val.kind == V_OBJECT) {
+            iris_object *c = pp_object_copy(ps, id.val.u.obj);
+            object_mods(ps, c, &at, lex_keyword_name(kw));
+            return c;
+        }
+        pp_unget(ps);
+    }
     iris_object *o = obj_new(ps, kind, &at);
     if (kind >= IRIS_OBJ_UNION) {
         if (kind == IRIS_OBJ_LIGHT_GROUP) {
@@ -1570,4 +1606,28 @@ static void finalize(pp_state *ps, iris_object *o, iris_texture *tex,
 void pp_finalize_object(pp_state *ps, iris_object *o)
 {
     finalize(ps, o, NULL, NULL, NULL);
+}
+
+/* Drops the light_sources a CSG copy carries (recursively): a copy made
+** for a geometry query must not add lights to the scene. */
+static void strip_lights(iris_object *o)
+{
+    ((pp_obj *)o)->lights = NULL;
+    if (is_csg(o))
+        for (int i = 0; i < o->u.csg.n_children; i++)
+            strip_lights(o->u.csg.children[i]);
+}
+
+const iris_object *pp_query_object(pp_state *ps, const iris_object *o)
+{
+    for (int i = 0; i < PP_QUERY_CACHE; i++)
+        if (ps->query_src[i] == o && ps->query_obj[i])
+            return ps->query_obj[i];
+    iris_object *c = pp_object_copy(ps, o);
+    strip_lights(c);
+    finalize(ps, c, NULL, NULL, NULL);
+    int slot = ps->query_next++ % PP_QUERY_CACHE;
+    ps->query_src[slot] = o;
+    ps->query_obj[slot] = c;
+    return c;
 }

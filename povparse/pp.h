@@ -234,6 +234,7 @@ struct pp_state {
     iris_diag_list *diags;
     jmp_buf jb;
     enum iris_status fail_status;
+    unsigned poll_count;   /* tokens since opt.interrupt was last read */
 
     /* Sources */
     pp_file *files;
@@ -291,6 +292,13 @@ struct pp_state {
     size_t stack_limit;    /* bytes of C stack the grammar may use */
     uint32_t outer_file, outer_off, outer_len; /* where depth 1 began */
     int lex_peek;          /* > 0: strings are not decoded (look-ahead) */
+
+    /* Finished copies of declared objects handed to the geometry
+    ** queries (pp_query_object), so that one object keeps one pointer */
+#define PP_QUERY_CACHE 8
+    const iris_object *query_src[PP_QUERY_CACHE];
+    const iris_object *query_obj[PP_QUERY_CACHE];
+    unsigned query_next;
 };
 
 /* ---- diag.c ------------------------------------------------------- */
@@ -304,6 +312,16 @@ void pp_warning(pp_state *ps, const pp_token *at, const char *fmt, ...)
 /* Warns once per token kind 'kw' that a feature is parsed but ignored. */
 void pp_warn_once(pp_state *ps, const pp_token *at, int kw, const char *what);
 _Noreturn void pp_nomem(pp_state *ps);
+/* Room for the first diagnostics, reserved before the parse starts. */
+void pp_diags_reserve(pp_state *ps);
+/* A located error with IRIS_EINTR when opt.interrupt is set (SIGINT). */
+void pp_check_interrupt(pp_state *ps);
+/* pp_check_interrupt every 4096 calls: cheap enough for every token. */
+static inline void pp_poll_interrupt(pp_state *ps)
+{
+    if ((++ps->poll_count & 4095) == 0)
+        pp_check_interrupt(ps);
+}
 /* Guards the C stack: nesting deeper than PP_MAX_DEPTH, or using more
 ** than stack_limit bytes of stack (sanitizer builds have large frames),
 ** is an error. */
@@ -405,6 +423,8 @@ pp_value pp_factor_value(pp_state *ps);
 
 /* ---- fnc.c: function { } compiler --------------------------------- */
 iris_fn *pp_function(pp_state *ps);   /* after 'function' */
+/* The function pattern of pigment_pattern { pg }: pg's grey level. */
+iris_fn *pp_pigment_grey_fn(pp_state *ps, iris_pigment *pg);
 
 /* ---- mat.c: textures ---------------------------------------------- */
 iris_pigment *pp_pigment(pp_state *ps, const iris_pigment *base);
@@ -433,6 +453,10 @@ iris_sky_sphere *pp_sky_sphere(pp_state *ps, const iris_sky_sphere *b);
 void pp_pattern_init(iris_pattern *p);
 /* An image or font file resolved along the search path (scene arena). */
 const char *pp_find_file(pp_state *ps, const pp_token *at, const char *name);
+/* The same, also trying name+ext for each of the NULL-ended 'exts' in
+** POV-Ray's order (a font "cyrvetic" is found as cyrvetic.ttf). */
+const char *pp_find_file_ext(pp_state *ps, const pp_token *at,
+                             const char *name, const char *const *exts);
 
 /* ---- obj.c: objects ----------------------------------------------- */
 /* Parses an object if the current token starts one; NULL otherwise. */
@@ -445,6 +469,10 @@ iris_light *pp_light(pp_state *ps);               /* after light_source */
 void pp_light_transform(iris_light *l, const iris_transform *xf);
 /* Resolves inheritance of a finished top-level object. */
 void pp_finalize_object(pp_state *ps, iris_object *o);
+/* 'o' as the renderer sees a scene object (textures resolved, no lights
+** added to the scene): what trace()/inside()/extents hand to
+** opt.geometry. The same 'o' gives the same copy (a small cache). */
+const iris_object *pp_query_object(pp_state *ps, const iris_object *o);
 
 /* ---- scene.c: top level ------------------------------------------- */
 void pp_scene_items(pp_state *ps);     /* until EOF */

@@ -123,13 +123,14 @@ iris_camera *pp_camera(pp_state *ps, const iris_camera *base)
     c->loc = pp_loc(ps, &open);
     bool has_right = false, has_dir = false, has_angle = false;
     bool has_up = false, has_sky = false, has_loc = false, has_look = false;
+    bool has_focal = false;
     iris_vec3 right = c->right, dir = c->direction, up = c->up;
     iris_vec3 sky = c->sky, loc = c->location, look = c->look_at;
     double angle = 0;
     iris_transform xf;
     xf_identity(&xf);
     bool has_xf = false;
-    pp_token look_tok = open;
+    pp_token look_tok = open, dir_tok = open;
     for (;;) {
         pp_next(ps);
         pp_token at = ps->tok;
@@ -161,7 +162,11 @@ iris_camera *pp_camera(pp_state *ps, const iris_camera *base)
             mesh_camera(ps, &at);
             break;
         case T_LOCATION: loc = pp_vector(ps); has_loc = true; break;
-        case T_DIRECTION: dir = pp_vector(ps); has_dir = true; break;
+        case T_DIRECTION:
+            dir = pp_vector(ps);
+            has_dir = true;
+            dir_tok = at;
+            break;
         case T_RIGHT: right = pp_vector(ps); has_right = true; break;
         case T_UP: up = pp_vector(ps); has_up = true; break;
         case T_SKY: sky = pp_vector(ps); has_sky = true; break;
@@ -175,14 +180,48 @@ iris_camera *pp_camera(pp_state *ps, const iris_camera *base)
             break;
         }
         case T_APERTURE: c->aperture = pp_float(ps); break;
-        case T_BLUR_SAMPLES:
-            c->blur_samples = pp_int(ps);
+        case T_BLUR_SAMPLES: {
+            /* blur_samples [MIN,] MAX: one value is the maximum with no
+            ** minimum (POV-Ray's Parse_Camera) */
+            int first = pp_int(ps), second = 0;
+            if (first <= 0)
+                pp_error(ps, &at, "illegal number of focal blur samples");
             if (pp_accept(ps, T_COMMA))
-                c->blur_samples = pp_int(ps);
+                second = pp_int(ps);
+            if (second == 0) {
+                c->blur_samples = first;
+                c->blur_samples_min = 0;
+            } else if (first > second) {
+                pp_error(ps, &at, "focal blur samples minimum must not be "
+                         "larger than maximum");
+            } else {
+                c->blur_samples = second;
+                c->blur_samples_min = first;
+            }
             break;
-        case T_FOCAL_POINT: c->focal_point = pp_vector(ps); break;
-        case T_CONFIDENCE: c->confidence = pp_float(ps); break;
-        case T_VARIANCE: c->variance = pp_float(ps); break;
+        }
+        case T_FOCAL_POINT:
+            c->focal_point = pp_vector(ps);
+            has_focal = true;
+            break;
+        case T_CONFIDENCE: {
+            double k = pp_float(ps);
+            if (k > 0.0 && k < 1.0)
+                c->confidence = k;
+            else
+                pp_warning(ps, &at, "illegal confidence value; the default "
+                           "is used");
+            break;
+        }
+        case T_VARIANCE: {
+            double k = pp_float(ps);
+            if (k >= 0.0 && k <= 1.0)
+                c->variance = k;
+            else
+                pp_warning(ps, &at, "illegal variance value; the default "
+                           "is used");
+            break;
+        }
         case T_BOKEH:
             pp_warn_once(ps, &at, T_BOKEH, "bokeh");
             pp_expect(ps, T_LBRACE, "'{'");
@@ -232,16 +271,22 @@ resolve:
         double dlen = v3_len(c->direction);
         iris_vec3 dn = v3_norm(d);
         iris_vec3 r = v3_cross(c->sky, dn);
-        if (v3_len(r) < 1e-10 * v3_len(c->sky)) {
+        /* POV-Ray's test (parser.cpp Parse_Camera): every component of
+        ** sky x direction below EPSILON (1e-10) keeps the right vector
+        ** as given, and up is rebuilt from it as below */
+        if (fabs(r.x) < 1e-10 && fabs(r.y) < 1e-10 && fabs(r.z) < 1e-10) {
             pp_warning(ps, &look_tok, "camera sky is parallel to the view "
-                       "direction; right is left unchanged");
-            c->direction = v3_scale(dn, dlen);
-        } else {
-            double rlen = v3_len(c->right), ulen = v3_len(c->up);
-            c->direction = v3_scale(dn, dlen);
+                       "direction; the right vector is kept (as POV-Ray)");
+            r = c->right;
+        }
+        double rlen = v3_len(c->right), ulen = v3_len(c->up);
+        c->direction = v3_scale(dn, dlen);
+        if (v3_len(r) > 0) {
             r = v3_norm(r);
-            /* up from the unsigned right; only right carries handedness */
-            c->up = v3_scale(v3_norm(v3_cross(dn, r)), ulen);
+            /* up = direction x right, not normalised (POV-Ray: only a
+            ** right kept from the input can be off the perpendicular);
+            ** only right carries handedness */
+            c->up = v3_scale(v3_cross(dn, r), ulen);
             c->right = v3_scale(r, handed > 0 ? rlen : -rlen);
         }
         /* orthographic cameras without explicit size cover the view */
@@ -252,6 +297,20 @@ resolve:
             c->up = v3_scale(c->up, s);
         }
     }
+    /* POV-Ray renders a zero direction black without a word: say so */
+    if (v3_len(c->direction) == 0 &&
+        (c->kind == IRIS_CAM_PERSPECTIVE || c->kind == IRIS_CAM_ORTHOGRAPHIC))
+        pp_warning(ps, &dir_tok, "camera direction has zero length: the "
+                   "image will be black");
+    /* the focal distance, before the camera's transforms as in POV-Ray:
+    ** from focal_point when given, else kept from a camera this one
+    ** copies, else the length of direction; 0 becomes 1 */
+    if (has_focal)
+        c->focal_distance = v3_len(v3_sub(c->focal_point, c->location));
+    else if (c->focal_distance < 0)
+        c->focal_distance = v3_len(c->direction);
+    if (c->focal_distance == 0)
+        c->focal_distance = 1;
     (void)has_dir; (void)has_sky; (void)has_loc;
     if (has_xf) {
         c->location = xf_point(&xf, c->location);
@@ -391,9 +450,11 @@ static void global_settings(pp_state *ps)
         case T_PHOTONS: global_photons(ps, &g->photons); break;
         case T_RADIOSITY:
             g->radiosity = true;
-            pp_warn_once(ps, &at, T_RADIOSITY, "radiosity (iris treats it as "
-                         "a request for diffuse interreflection; its "
-                         "parameters are ignored)");
+            /* iris renders diffuse interreflection with a global photon
+            ** map (src/photon/global.c), not POV-Ray's irradiance cache */
+            pp_warning(ps, &at, "radiosity: iris renders diffuse "
+                       "interreflection with a global photon map; the "
+                       "block's parameters are ignored");
             pp_expect(ps, T_LBRACE, "'{'");
             pp_skip_block(ps);
             break;

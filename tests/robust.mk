@@ -14,3 +14,41 @@ tests_stability_test_hit_epsilon_LDADD = $(TEST_LDADD)
 EXTRA_DIST += tests/stability/stability.sh tests/stability/scenes \
 	tests/stability/caustic_mc.py \
 	tests/badinput/badinput.sh tests/badinput/cases
+
+## Stages scripts/run-tests runs after make check (issue 7); each can be
+## run alone:
+##   make check-fuzz       the fuzz regression (tests/fuzz/regress.sh:
+##                         clang + libFuzzer, ~1 minute)
+##   make check-sanitized  in a tree configured with --enable-sanitizers:
+##                         the compiled (unit) tests and SAN_SHELL_TESTS,
+##                         the parse, bad-input and stability tests; not
+##                         the POV-Ray parity renders (tests/render,
+##                         test_accel_pov), which take long and test
+##                         pixels, not memory.
+## Tests that bound time or memory read IRIS_SANITIZED (non-empty in a
+## sanitised build) and relax themselves.
+AM_TESTS_ENVIRONMENT += export IRIS_SANITIZED='$(SAN_FLAGS)';
+SAN_SHELL_TESTS = tests/parse/run.sh tests/badinput/badinput.sh \
+	tests/stability/stability.sh
+EXTRA_DIST += tests/valgrind.supp \
+	tests/fuzz/build.sh tests/fuzz/seed.sh tests/fuzz/regress.sh \
+	tests/fuzz/fuzz_parse.c tests/fuzz/fuzz_plan.c tests/fuzz/corpus
+check-fuzz:
+	$(MAKE) $(AM_MAKEFLAGS) check-TESTS check_PROGRAMS= TESTS='tests/fuzz/regress.sh' \
+	    TEST_SUITE_LOG=fuzz-suite.log
+# Builds only what the subset runs (not the POV-Ray comparison tools),
+# then runs it with check_PROGRAMS emptied so that nothing else is built.
+check-sanitized:
+	@test -n '$(SAN_FLAGS)' || { echo 'check-sanitized: configure this tree with --enable-sanitizers'; exit 1; }
+	@tests=''; for t in $(TESTS); do \
+	    case $$t in *.sh|tests/unit/test_accel_pov) ;; *) tests="$$tests $$t" ;; esac; \
+	done; \
+	$(MAKE) $(AM_MAKEFLAGS) iris$(EXEEXT) iris-oiio.la \
+	    tests/parse/parsedump$(EXEEXT) tests/stability/imgcheck$(EXEEXT) \
+	    tests/cli/imgtool$(EXEEXT) $$tests || exit 1; \
+	echo "$(MAKE) check-TESTS TESTS='$$tests $(SAN_SHELL_TESTS)'"; \
+	ulimit -s 65536 2>/dev/null || true; \
+	$(MAKE) $(AM_MAKEFLAGS) check-TESTS check_PROGRAMS= \
+	    TESTS="$$tests $(SAN_SHELL_TESTS)" TEST_SUITE_LOG=sanitized-suite.log
+.PHONY: check-fuzz check-sanitized
+CLEANFILES += fuzz-suite.log sanitized-suite.log

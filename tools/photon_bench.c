@@ -85,7 +85,11 @@ int main(int argc, char **argv)
     if (getenv("IRIS_BENCH_MAT") &&
         mat_ctx_create(scene, stderr, &mc) != IRIS_OK)
         return 1;
-    struct photon_options o = { threads, 1, 0, 0, mc };
+    struct photon_options o;
+    memset(&o, 0, sizeof o);
+    o.threads = threads;
+    o.seed = 1;
+    o.mat = mc;
     struct photon_map *m = NULL;
     struct photon_stats st;
     if (photon_map_build(scene, a, &o, &m, &st) != IRIS_OK) {

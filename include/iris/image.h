@@ -44,6 +44,22 @@ IRIS_NODISCARD enum iris_status iris_image_write(const iris_image *img,
                                                  enum iris_encoding enc,
                                                  char *err, size_t errlen);
 
+/*
+** iris_image_write() with an alpha channel when 'alpha' (iris's +UA): the
+** pixels hold colour premultiplied by alpha, as the renderer leaves them.
+** Integer formats (PNG) get straight alpha as POV-Ray writes it: a pixel
+** brighter than its alpha (a highlight on glass) has its alpha raised to
+** its brightness, at most 1, then the colour is divided by the alpha
+** (colour 0 where alpha is 0). Float formats (EXR) keep the premultiplied
+** colour, OpenEXR's convention, with an A channel.
+*/
+IRIS_NODISCARD enum iris_status iris_image_write_alpha(const iris_image *img,
+                                                       const char *path,
+                                                       int bits,
+                                                       enum iris_encoding enc,
+                                                       bool alpha, char *err,
+                                                       size_t errlen);
+
 /* Reads any format OpenImageIO reads into linear RGBA floats (8-bit sRGB
 ** files are decoded to linear). */
 IRIS_NODISCARD enum iris_status iris_image_read(iris_image *img,

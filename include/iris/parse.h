@@ -58,6 +58,38 @@ typedef struct iris_declare {
     const char *value;         /* parsed as an SDL expression */
 } iris_declare;
 
+/*
+** Geometry the parser cannot compute alone: trace(), inside(), and
+** min_extent/max_extent of objects it cannot bound itself (text, meshes,
+** isosurfaces, ...). A program that links the renderer supplies these
+** (the iris CLI answers them with src/accel on a world holding only that
+** object); without them trace() and inside() are located errors and
+** such extents are POV-Ray's infinite box, +-1e10.
+**
+** Every call gets the scene parsed so far ('scene': its settings; its
+** object list is still growing) and one object as the renderer would
+** see it: world space, transforms folded in, textures resolved. The
+** object lives in the scene's arena until the parse ends, and the
+** parser passes the same pointer for the same declared object, so a
+** callback may cache what it builds by that pointer (and free the cache
+** when the parse returns). Any member may be NULL.
+*/
+typedef struct iris_geometry_queries {
+    void *user;
+    /* World bounding box of 'obj'; false when it is unbounded. */
+    bool (*bounds)(void *user, const iris_scene *scene,
+                   const iris_object *obj, iris_vec3 *lo, iris_vec3 *hi);
+    /* The nearest hit of the ray origin + t*dir, t > 0 ('dir' has unit
+    ** length) with 'obj': the point and the unit normal pointing out of
+    ** the object (POV-Ray's: flipped for inverse). False on a miss. */
+    bool (*trace)(void *user, const iris_scene *scene,
+                  const iris_object *obj, iris_vec3 origin, iris_vec3 dir,
+                  iris_vec3 *point, iris_vec3 *normal);
+    /* Whether 'point' is inside the solid 'obj' (POV-Ray's Inside()). */
+    bool (*inside)(void *user, const iris_scene *scene,
+                   const iris_object *obj, iris_vec3 point);
+} iris_geometry_queries;
+
 /* Options of one parse. Zeroed options give POV-Ray's behaviour. */
 typedef struct iris_parse_options {
     int n_include_paths;       /* +L paths, searched after the scene's dir */
@@ -68,20 +100,27 @@ typedef struct iris_parse_options {
     double clock;              /* +K, default 0 */
     int frame_number;          /* default 0 */
     int image_width, image_height; /* for image_width/image_height */
-    long max_while_iterations; /* 0 = default (10 000 000) */
+    long max_while_iterations; /* per #while/#for loop; 0 = default
+                                  (1 000 000: an endless loop stops in
+                                  about a second) */
     int max_include_depth;     /* 0 = default (64) */
     int max_macro_depth;       /* 0 = default (256) */
-    size_t max_memory;         /* 0 = default (2 GiB) */
+    size_t max_memory;         /* 0 = default (2 GiB, at most a third of
+                                  the address-space limit, RLIMIT_AS) */
     enum iris_io_policy read_policy;
     bool allow_writes;         /* #fopen write inside the scene dir */
     bool quiet_debug;          /* drop #debug output */
     FILE *debug_stream;        /* #debug/#warning text; NULL = stderr */
+    const iris_geometry_queries *geometry; /* NULL: trace()/inside() fail */
+    volatile int *interrupt;   /* when set non-zero (SIGINT), the parse
+                                  stops soon with IRIS_EINTR */
 } iris_parse_options;
 
 /*
 ** Parses 'path' into '*out'. Returns IRIS_OK, IRIS_EPARSE (with at least
-** one error in 'diags'), IRIS_EIO or IRIS_ENOMEM. On failure '*out' is
-** NULL. 'diags' also receives warnings (unsupported features, POV-Ray's
+** one error in 'diags'), IRIS_EIO, IRIS_ENOMEM (located in 'diags') or
+** IRIS_EINTR (opts->interrupt was set). On failure '*out' is NULL.
+** 'diags' also receives warnings (unsupported features, POV-Ray's
 ** "possible parse errors"), once per keyword and location.
 */
 enum iris_status iris_parse_file(const char *path,

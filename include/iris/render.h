@@ -67,6 +67,9 @@ typedef struct iris_render_options {
     iris_pass_fn on_pass;      /* after every progressive pass, or NULL */
     void *on_pass_user;
     int spectral_samples_min;  /* dispersion_samples floor, 0 = scene's */
+    bool alpha;                /* +UA: alpha = 1 - what the pixel sees of a
+                                  transmitting background; the colour is
+                                  then premultiplied by it */
     bool use_photons;          /* false disables photons whatever the scene */
     iris_progress_fn progress;
     void *progress_user;

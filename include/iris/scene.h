@@ -390,7 +390,9 @@ struct iris_object {
         struct { int type; double flatness; int u_steps, v_steps;
                  iris_vec3 points[16]; } bicubic;
         struct { iris_fn *fx, *fy, *fz; iris_vec2 uv_lo, uv_hi;
-                 iris_vec3 lo, hi; } parametric;
+                 iris_vec3 lo, hi;
+                 double accuracy, max_gradient; /* 0 = POV-Ray's
+                                                   0.001 and 1 */ } parametric;
         struct { int spline; int n_spheres; iris_vec3 *centres;
                  double *radii; } sphere_sweep;
         struct { double r1, r2; } ovus;
@@ -458,8 +460,15 @@ typedef struct iris_camera {
     int cylinder_type;         /* 1..4 for IRIS_CAM_CYLINDER */
     iris_vec3 location, direction, right, up, sky, look_at;
     double angle;              /* degrees, as given (0 = none) */
-    /* focal blur: aperture 0 = none */
-    double aperture; int blur_samples; iris_vec3 focal_point;
+    /* focal blur: aperture 0 = none; blur_samples is the maximum and
+    ** blur_samples_min the minimum before the confidence test may stop
+    ** (0: none, as `blur_samples N` alone); focal_distance is resolved by
+    ** the parser as POV-Ray does: |focal_point - location| when a
+    ** focal_point was given, else the length of direction (0 becomes 1);
+    ** -1 until resolved */
+    double aperture; int blur_samples, blur_samples_min;
+    iris_vec3 focal_point;
+    double focal_distance;
     double confidence, variance;
 } iris_camera;
 

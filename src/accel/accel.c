@@ -30,7 +30,17 @@
 ** never culls a primitive the double-precision test would hit.
 **
 ** bounded_by is a hint only and is ignored: every object gets its own
-** exact box.
+** exact box (a transformed sphere the exact box of its ellipsoid).
+**
+** Speed. A query costs Embree's set-up and a user-geometry dispatch per
+** candidate, which for a handful of primitives is more than testing their
+** boxes in turn: a scene of at most LINEAR_MAX bounded primitives and no
+** mesh is searched without Embree (same boxes, same exact tests). Embree's
+** own box test is not repeated in double in the callback. Shape leaves
+** without clipping take node_nearest's short path (node.c shape_nearest):
+** only the nearest crossing's normal is taken to world space, spheres and
+** planes are solved inline, and a sphere's uv is computed once, for the
+** hit kept.
 **
 ** Precision. Embree sees float rays; every decision (tmin, nearest hit)
 ** is taken in double by the callbacks, from the double ray kept in the
@@ -61,6 +71,15 @@
 /* Deeper CSG nesting than this is refused (a cycle, or a hostile file). */
 #define MAX_DEPTH 200
 
+/*
+** Up to this many bounded primitives and no mesh, a query tests each
+** primitive's box in turn instead of asking Embree: Embree's per-query
+** set-up and user-geometry dispatch cost more than a few box tests, and
+** most parity and test scenes have a handful of objects. The boxes and
+** the exact tests are the same, so the hits are too.
+*/
+#define LINEAR_MAX 8
+
 /* A box that may be empty or infinite. */
 struct bbox {
     bool inf, empty;
@@ -84,6 +103,8 @@ struct accel {
     int n_user;
     struct anode **inf;            /* unbounded, tested outside Embree */
     int n_inf;
+    int n_attached;                /* meshes attached to 'scene' */
+    bool linear;                   /* few primitives: no Embree query */
 
     int cap_user, cap_inf;
     const iris_object *stack[MAX_DEPTH + 2]; /* the objects being built */
@@ -157,6 +178,27 @@ static struct bbox box_xf(vec3 lo, vec3 hi, const xform *xf)
         b.lo = c ? v3_min(b.lo, p) : p;
         b.hi = c ? v3_max(b.hi, p) : p;
     }
+    return b;
+}
+
+/*
+** The exact world box of a transformed sphere (an ellipsoid): the points
+** M(c + r·u), |u| = 1, reach M(c) ± r·|row k of M's linear part| along
+** axis k. Eight transformed corners of the object box (box_xf) give a box
+** up to sqrt(3) times wider for a rotated, stretched sphere, and every ray
+** through the difference costs a callback.
+*/
+static struct bbox ellipsoid_box(const iris_object *o)
+{
+    const xform *xf = &o->transform;
+    double r = fabs(o->u.sphere.radius);
+    vec3 c = xf_point(xf, o->u.sphere.centre);
+    vec3 ex = xf_dir(xf, v3(1, 0, 0)), ey = xf_dir(xf, v3(0, 1, 0)),
+         ez = xf_dir(xf, v3(0, 0, 1));
+    vec3 e = v3(r * sqrt(ex.x * ex.x + ey.x * ey.x + ez.x * ez.x),
+                r * sqrt(ex.y * ex.y + ey.y * ey.y + ez.y * ez.y),
+                r * sqrt(ex.z * ex.z + ey.z * ey.z + ez.z * ez.z));
+    struct bbox b = { .lo = v3_sub(c, e), .hi = v3_add(c, e) };
     return b;
 }
 
@@ -387,8 +429,12 @@ static struct anode *build(struct accel *a, FILE *log, const iris_object *o,
             warn(a, log, o, why);
             return NULL;
         }
+        if (o->kind == IRIS_OBJ_PLANE)
+            n->plane_n = v3_norm(o->u.plane.normal);
         vec3 lo, hi;
-        if (geom_bounds(o, n->prof, &lo, &hi))
+        if (o->kind == IRIS_OBJ_SPHERE && o->has_transform)
+            S = ellipsoid_box(o);
+        else if (geom_bounds(o, n->prof, &lo, &hi))
             S = box_xf(lo, hi, o->has_transform ? &o->transform : NULL);
         else
             S = box_inf();
@@ -507,8 +553,10 @@ static bool place(struct accel *a, struct anode *n)
                 return false;
         return true;
     }
-    if (n->kind == AN_MESH && n->n_clips == 0)
+    if (n->kind == AN_MESH && n->n_clips == 0) {
+        a->n_attached++;
         return amesh_attach(n, a->dev, a->scene);
+    }
     if (n->bounded)
         return push_ptr(&a->user, &a->n_user, &a->cap_user, n);
     return push_ptr(&a->inf, &a->n_inf, &a->cap_inf, n);
@@ -561,14 +609,16 @@ static void user_intersect(const struct RTCIntersectFunctionNArguments *args)
     if (q->mode != Q_NEAREST || q->accel != a)
         return;
     const struct anode *n = a->user[args->primID];
-    struct ahit h;
-    if (!node_nearest(n, q->o, q->d, q->tmin, q->tmax, q->skip, &h))
+    /* Embree has culled by the (padded) box: not tested again. The
+    ** node_nearest functions write the hit only when they find one, so it
+    ** goes straight into the query (here and in accel_intersect) */
+    if (!node_nearest_in_box(n, q->o, q->d, q->tmin, q->tmax, q->skip,
+                             &q->best))
         return;
-    q->best = h;
-    q->tmax = h.t;
+    q->tmax = q->best.t;
     q->found = true;
     struct RTCRayHit *rh = (struct RTCRayHit *)args->rayhit;
-    rh->ray.tfar = (float)h.t * (1 + 1e-6f);
+    rh->ray.tfar = (float)q->best.t * (1 + 1e-6f);
     rh->hit.geomID = args->geomID;
     rh->hit.primID = args->primID;
 }
@@ -679,6 +729,7 @@ enum iris_status accel_build(const iris_scene *scene, struct accel **out,
         accel_destroy(a);
         return IRIS_EINVAL;
     }
+    a->linear = a->n_attached == 0 && a->n_user <= LINEAR_MAX;
     a->has_bounds = !all.empty && !all.inf;
     if (a->has_bounds) {
         a->lo = all.lo;
@@ -736,11 +787,55 @@ static double hit_epsilon(const struct accel *a, const struct anode *leaf,
 {
     if (!(leaf->size > 0))
         return a->eps;
-    double s = fmax(leaf->size, fmax(fabs(p.x), fmax(fabs(p.y), fabs(p.z))));
+    /* Comparisons, not fmax/fmin (library calls, once per hit); a NaN p
+    ** makes the hit rejected by the caller anyway */
+    double s = leaf->size, ax = fabs(p.x), ay = fabs(p.y), az = fabs(p.z);
+    if (ax > s)
+        s = ax;
+    if (ay > s)
+        s = ay;
+    if (az > s)
+        s = az;
     double e = 1e-9 * s;
     if (!(e > 1e-290))
         e = 1e-290;
-    return fmin(e, a->eps);
+    return e < a->eps ? e : a->eps;
+}
+
+/*
+** Whether ray o + t·d, t in (t0, t1), may meet box lo..hi, with 'inv' =
+** 1/d per axis (infinite where d is 0): the slab test with products
+** instead of divisions, for the per-query loop over a few primitives.
+** The interval is widened by 1e-12 relative so that the rounding of the
+** reciprocal never culls a crossing the exact test would keep; the box
+** only culls, the shape's own test decides.
+*/
+static inline bool box_may_hit(vec3 lo, vec3 hi, vec3 o, vec3 inv, double t0,
+                               double t1)
+{
+    double a = t0, b = t1;
+    const double lk[3] = { lo.x, lo.y, lo.z }, hk[3] = { hi.x, hi.y, hi.z },
+                 ok[3] = { o.x, o.y, o.z }, ik[3] = { inv.x, inv.y, inv.z };
+    for (int k = 0; k < 3; k++) {
+        if (isinf(ik[k])) {
+            if (ok[k] < lk[k] || ok[k] > hk[k])
+                return false;
+            continue;
+        }
+        double ta = (lk[k] - ok[k]) * ik[k], tb = (hk[k] - ok[k]) * ik[k];
+        if (ta > tb) {
+            double s = ta;
+            ta = tb;
+            tb = s;
+        }
+        if (ta > a)
+            a = ta;
+        if (tb < b)
+            b = tb;
+        if (a > b + 1e-12 * (fabs(a) + fabs(b)))
+            return false;
+    }
+    return true;
 }
 
 bool accel_intersect(const struct accel *a, const ray *r, double tmin,
@@ -749,27 +844,43 @@ bool accel_intersect(const struct accel *a, const ray *r, double tmin,
     if (!a || !r || !finite_v(r->o) || !finite_v(r->d) || !(tmax > tmin) ||
         isnan(tmin))
         return false;
+    /* Every field the query reads is set: a memset of the whole context
+    ** (with its inline hit) was a visible part of a query's cost */
     struct qctx q;
-    memset(&q, 0, sizeof q);
-    rtcInitIntersectContext(&q.ec);
     q.mode = Q_NEAREST;
     q.o = r->o;
     q.d = r->d;
     q.tmin = tmin;
     q.tmax = tmax;
     q.skip = skip;
+    q.found = false;
+    q.all = NULL;
     q.accel = a;
 
-    struct RTCRayHit rh;
-    qctx_embree_ray(&q, &rh);
-    rtcIntersect1(a->scene, &q.ec, &rh);
+    if (a->linear) {
+        vec3 inv = v3(1 / q.d.x, 1 / q.d.y, 1 / q.d.z);
+        for (int i = 0; i < a->n_user; i++) {
+            const struct anode *n = a->user[i];
+            if (!box_may_hit(n->lo, n->hi, q.o, inv, q.tmin, q.tmax))
+                continue;
+            if (node_nearest_in_box(n, q.o, q.d, q.tmin, q.tmax, skip,
+                                    &q.best)) {
+                q.tmax = q.best.t;
+                q.found = true;
+            }
+        }
+    } else {
+        rtcInitIntersectContext(&q.ec);
+        struct RTCRayHit rh;
+        qctx_embree_ray(&q, &rh);
+        rtcIntersect1(a->scene, &q.ec, &rh);
+    }
 
     /* Unbounded objects, beyond Embree */
     for (int i = 0; i < a->n_inf; i++) {
-        struct ahit x;
-        if (node_nearest(a->inf[i], q.o, q.d, q.tmin, q.tmax, skip, &x)) {
-            q.best = x;
-            q.tmax = x.t;
+        if (node_nearest(a->inf[i], q.o, q.d, q.tmin, q.tmax, skip,
+                         &q.best)) {
+            q.tmax = q.best.t;
             q.found = true;
         }
     }
@@ -789,6 +900,13 @@ bool accel_intersect(const struct accel *a, const ray *r, double tmin,
         h->texture = leaf->top->texture;
     if (!h->texture)
         h->texture = &a->default_texture;
+    if (leaf->kind == AN_SHAPE && leaf->obj->kind == IRIS_OBJ_SPHERE) {
+        /* Asked once, for the hit kept (geom_sphere_uv) */
+        const iris_object *o = leaf->obj;
+        h->uv = geom_sphere_uv(o, o->has_transform
+                                      ? xf_inv_point(&o->transform, h->p)
+                                      : h->p);
+    }
     h->interior = leaf->obj->interior;
     h->eps = hit_epsilon(a, leaf, h->p);
     if (!isfinite(h->t) || !finite_v(h->p) || !finite_v(h->n) ||

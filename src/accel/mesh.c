@@ -473,75 +473,29 @@ static const char *src_height_field(const iris_object *o, struct amesh *m,
     return NULL;
 }
 
-/* Bernstein weights of degree 3 at 't' and their derivatives. */
-static void bernstein(double t, double b[4], double db[4])
-{
-    double s = 1 - t;
-    b[0] = s * s * s;
-    b[1] = 3 * t * s * s;
-    b[2] = 3 * t * t * s;
-    b[3] = t * t * t;
-    db[0] = -3 * s * s;
-    db[1] = 3 * s * s - 6 * t * s;
-    db[2] = 6 * t * s - 3 * t * t;
-    db[3] = 3 * t * t;
-}
-
 /*
-** bicubic_patch: the Bezier patch of 16 control points (4 rows of 4, u
-** along a row) cut into 2^u_steps x 2^v_steps cells of two triangles, as
-** POV-Ray tessellates it, with the patch's own normals at the vertices.
+** bicubic_patch: POV-Ray's subdivision into flat-enough cells of two
+** triangles each, with the patch's own normals (geometry/bicubic.c).
 */
 static const char *src_bicubic(const iris_object *o, struct tri_src *s)
 {
-    int su = o->u.bicubic.u_steps, sv = o->u.bicubic.v_steps;
-    /* 2^steps cells; 0..8 steps (POV-Ray's usual values are 3 to 5) */
-    int nu = 1 << (su < 0 ? 0 : su > 8 ? 8 : su);
-    int nv = 1 << (sv < 0 ? 0 : sv > 8 ? 8 : sv);
-    const vec3 *P = o->u.bicubic.points;
-    s->nv = (nu + 1) * (nv + 1);
-    s->nt = 2 * nu * nv;
-    s->vbuf = iris_malloc((size_t)s->nv * sizeof *s->vbuf);
-    s->ix = iris_malloc(3 * (size_t)s->nt * sizeof *s->ix);
-    s->cn = iris_malloc(3 * (size_t)s->nt * sizeof *s->cn);
-    s->cuv = iris_malloc(3 * (size_t)s->nt * sizeof *s->cuv);
-    vec3 *vn = iris_malloc((size_t)s->nv * sizeof *vn);
-    if (!s->vbuf || !s->ix || !s->cn || !s->cuv || !vn) {
-        iris_free(vn);
+    int nt = 0;
+    vec3 *p = NULL, *n = NULL;
+    iris_vec2 *uv = NULL;
+    const char *why = geom_bicubic_tessellate(o, &nt, &p, &n, &uv);
+    if (why)
+        return why;
+    s->nv = 3 * nt;
+    s->nt = nt;
+    s->vbuf = p;
+    s->v = p;
+    s->cn = n;
+    s->cuv = uv;
+    s->ix = iris_malloc(3 * (size_t)(nt ? nt : 1) * sizeof *s->ix);
+    if (!s->ix)
         return "out of memory";
-    }
-    for (int j = 0; j <= nv; j++)
-        for (int i = 0; i <= nu; i++) {
-            double bu[4], dbu[4], bv[4], dbv[4];
-            bernstein((double)i / nu, bu, dbu);
-            bernstein((double)j / nv, bv, dbv);
-            vec3 p = v3(0, 0, 0), du = p, dv = p;
-            for (int r = 0; r < 4; r++)
-                for (int c = 0; c < 4; c++) {
-                    vec3 q = P[4 * r + c];
-                    p = v3_madd(p, q, bv[r] * bu[c]);
-                    du = v3_madd(du, q, bv[r] * dbu[c]);
-                    dv = v3_madd(dv, q, dbv[r] * bu[c]);
-                }
-            s->vbuf[j * (nu + 1) + i] = p;
-            vn[j * (nu + 1) + i] = v3_cross(du, dv);
-        }
-    s->v = s->vbuf;
-    int t = 0;
-    for (int j = 0; j < nv; j++)
-        for (int i = 0; i < nu; i++) {
-            int a = j * (nu + 1) + i, b = a + 1, c = a + nu + 1, d = c + 1;
-            int32_t tri[6] = { a, b, d, a, d, c };
-            for (int k = 0; k < 6; k++) {
-                int vi = tri[k];
-                s->ix[3 * t + k] = vi;
-                s->cn[3 * t + k] = vn[vi];
-                s->cuv[3 * t + k].u = (double)(vi % (nu + 1)) / nu;
-                s->cuv[3 * t + k].v = (double)(vi / (nu + 1)) / nv;
-            }
-            t += 2;
-        }
-    iris_free(vn);
+    for (int i = 0; i < 3 * nt; i++)
+        s->ix[i] = i;
     return NULL;
 }
 

@@ -114,6 +114,12 @@ void node_hits(const struct anode *n, vec3 o, vec3 d, double tmin,
         if (!geom_clip_box(n->lo, n->hi, o, d, &a, &b))
             return;
     }
+    node_hits_in_box(n, o, d, tmin, tmax, skip, out);
+}
+
+void node_hits_in_box(const struct anode *n, vec3 o, vec3 d, double tmin,
+                      double tmax, unsigned skip, struct ahit_list *out)
+{
     int first = out->n;
     switch (n->kind) {
     case AN_SHAPE:
@@ -148,12 +154,156 @@ void node_hits(const struct anode *n, vec3 o, vec3 d, double tmin,
     }
 }
 
+/*
+** The nearest crossing of a sphere leaf with the object-space ray lo + t·ld:
+** geom_sphere_hits() step for step (the same t and normal), without the
+** crossing list, for the commonest primitive of POV-Ray's scenes.
+*/
+static bool sphere_nearest(const struct anode *n, vec3 lo, vec3 ld,
+                           double tmin, double tmax, struct ahit *best)
+{
+    const iris_object *obj = n->obj;
+    vec3 c = obj->u.sphere.centre;
+    double rad = obj->u.sphere.radius;
+    double a = v3_len2(ld);
+    if (!(a > 0))
+        return false;
+    vec3 oc = v3_sub(lo, c);
+    double tc = -v3_dot(oc, ld) / a;
+    vec3 pc = v3_madd(oc, ld, tc);
+    double num = rad * rad - v3_len2(pc);
+    if (num < 0) /* a miss, known before the division (a > 0) */
+        return false;
+    double h = sqrt(num / a);
+    for (int k = 0; k < 2; k++) {
+        double t = k ? tc + h : tc - h;
+        if (!(t > tmin && t < tmax) || !isfinite(t))
+            continue;
+        vec3 on = v3_scale(v3_madd(oc, ld, t), 1.0 / rad);
+        if (!isfinite(on.x) || !isfinite(on.y) || !isfinite(on.z) ||
+            (on.x == 0 && on.y == 0 && on.z == 0))
+            continue;
+        vec3 wn = obj->has_transform ? xf_normal(&obj->transform, on) : on;
+        double len = v3_len(wn);
+        if (!(len > 0) || !isfinite(len))
+            continue;
+        best->t = t;
+        best->n = best->sn = v3_scale(wn, (n->inverted ? -1.0 : 1.0) / len);
+        best->uv.u = best->uv.v = 0; /* geom_sphere_uv, for the hit kept */
+        best->leaf = n;
+        best->texture = NULL;
+        return true;
+    }
+    return false;
+}
+
+/*
+** The crossing of a plane leaf: geom_plane_hits() with the normal
+** normalised once at build time (node.h plane_n), without the crossing
+** list. Planes are met by nearly every ray of a scene with a floor.
+*/
+static bool plane_nearest(const struct anode *n, vec3 lo, vec3 ld,
+                          double tmin, double tmax, struct ahit *best)
+{
+    const iris_object *obj = n->obj;
+    vec3 pn = n->plane_n;
+    double dn = v3_dot(pn, ld);
+    if (dn == 0)
+        return false;
+    double t = (obj->u.plane.distance - v3_dot(pn, lo)) / dn;
+    if (!(t > tmin && t < tmax) || !isfinite(t) || !isfinite(pn.x) ||
+        !isfinite(pn.y) || !isfinite(pn.z))
+        return false;
+    vec3 wn = obj->has_transform ? xf_normal(&obj->transform, pn) : pn;
+    double len = v3_len(wn);
+    if (!(len > 0) || !isfinite(len))
+        return false;
+    best->t = t;
+    best->n = best->sn = v3_scale(wn, (n->inverted ? -1.0 : 1.0) / len);
+    best->uv.u = best->uv.v = 0;
+    best->leaf = n;
+    best->texture = NULL;
+    return true;
+}
+
+/*
+** node_nearest() of a shape leaf without clipping, the most common
+** primitive: the crossings are solved as in shape_hits() but only the
+** nearest one's normal is taken to world space, and nothing is copied
+** into an ahit_list. Same answer as the general path: the first of the
+** nearest crossings in the solver's order, skipping crossings whose world
+** normal is degenerate.
+*/
+static bool shape_nearest(const struct anode *n, vec3 o, vec3 d,
+                          double tmin, double tmax, struct ahit *best)
+{
+    const iris_object *obj = n->obj;
+    vec3 lo = o, ld = d;
+    if (obj->has_transform) {
+        lo = xf_inv_point(&obj->transform, o);
+        ld = xf_inv_dir(&obj->transform, d);
+    }
+    if (obj->kind == IRIS_OBJ_SPHERE)
+        return sphere_nearest(n, lo, ld, tmin, tmax, best);
+    if (obj->kind == IRIS_OBJ_PLANE)
+        return plane_nearest(n, lo, ld, tmin, tmax, best);
+    struct isect_list l;
+    isect_list_init(&l);
+    geom_intersect(obj, n->prof, lo, ld, tmin, tmax, &l);
+    bool found = false;
+    for (;;) {
+        int k = -1;
+        for (int i = 0; i < l.n; i++)
+            if (l.v[i].t > tmin && l.v[i].t < tmax &&
+                (k < 0 || l.v[i].t < l.v[k].t))
+                k = i;
+        if (k < 0)
+            break;
+        const struct geom_isect *e = &l.v[k];
+        vec3 wn = obj->has_transform ? xf_normal(&obj->transform, e->n) : e->n;
+        double len = v3_len(wn);
+        if (!(len > 0) || !isfinite(len)) {
+            l.v[k].t = NAN; /* never nearest again */
+            continue;
+        }
+        wn = v3_scale(wn, (n->inverted ? -1.0 : 1.0) / len);
+        best->t = e->t;
+        best->n = best->sn = wn;
+        best->uv = e->uv;
+        best->leaf = n;
+        best->texture = NULL;
+        if (obj->kind == IRIS_OBJ_BLOB && e->part >= 0 &&
+            e->part < obj->u.blob.n_components)
+            best->texture = obj->u.blob.components[e->part].texture;
+        found = true;
+        break;
+    }
+    isect_list_fini(&l);
+    return found;
+}
+
 bool node_nearest(const struct anode *n, vec3 o, vec3 d, double tmin,
                   double tmax, unsigned skip, struct ahit *best)
 {
+    if (n->bounded) {
+        double a = tmin, b = tmax;
+        if (!geom_clip_box(n->lo, n->hi, o, d, &a, &b))
+            return false;
+    }
+    return node_nearest_in_box(n, o, d, tmin, tmax, skip, best);
+}
+
+bool node_nearest_in_box(const struct anode *n, vec3 o, vec3 d, double tmin,
+                         double tmax, unsigned skip, struct ahit *best)
+{
+    if (n->kind == AN_SHAPE && n->n_clips == 0) {
+        if (n->skip & skip)
+            return false;
+        return shape_nearest(n, o, d, tmin, tmax, best);
+    }
     struct ahit_list l;
     ahit_list_init(&l);
-    node_hits(n, o, d, tmin, tmax, skip, &l);
+    node_hits_in_box(n, o, d, tmin, tmax, skip, &l);
     int k = -1;
     for (int i = 0; i < l.n; i++)
         if (l.v[i].t > tmin && l.v[i].t < tmax &&

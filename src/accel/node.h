@@ -43,6 +43,8 @@ struct anode {
                                       box of the whole surface, before
                                       clipping; 0 = unbounded */
     struct geom_profile *prof;     /* AN_SHAPE: prism, lathe, sor, text */
+    vec3 plane_n;                  /* AN_SHAPE plane: its unit normal,
+                                      normalised once (shape_nearest) */
     struct amesh *mesh;            /* AN_MESH */
 };
 
@@ -73,9 +75,17 @@ void ahit_push(struct ahit_list *l, const struct ahit *h);
 void node_hits(const struct anode *n, vec3 o, vec3 d, double tmin,
                double tmax, unsigned skip, struct ahit_list *out);
 
+/* node_hits() without testing n's own box first (the caller has: the
+** box only culls, every crossing lies inside it). */
+void node_hits_in_box(const struct anode *n, vec3 o, vec3 d, double tmin,
+                      double tmax, unsigned skip, struct ahit_list *out);
+
 /* The nearest crossing, as node_hits; false when none. */
 bool node_nearest(const struct anode *n, vec3 o, vec3 d, double tmin,
                   double tmax, unsigned skip, struct ahit *best);
+/* The same without testing n's own box (see node_hits_in_box). */
+bool node_nearest_in_box(const struct anode *n, vec3 o, vec3 d, double tmin,
+                         double tmax, unsigned skip, struct ahit *best);
 
 /* Whether world point 'p' is inside 'n' (clipping included). */
 bool node_inside(const struct anode *n, vec3 p);

@@ -134,6 +134,9 @@ static int pov_switch(struct cli_options *o, char sign, const char *arg,
             return fail(err, errlen, "%s: output type must be +FN (PNG) or +FE (OpenEXR); "
                         "or name the file with its extension", arg);
         }
+    } else if (strcasecmp(body, "UA") == 0) {
+        /* output alpha: a transmitting background is transparent */
+        o->render.alpha = on;
     } else if (has_prefix(body, "SR") || has_prefix(body, "ER") ||
                has_prefix(body, "SC") || has_prefix(body, "EC")) {
         if (!parse_int(body + 2, 1, 65536, &n))
@@ -191,12 +194,20 @@ static int long_option(int argc, char **argv, int *i, struct cli_options *o,
     if (!strcmp(a, "--parse-only")) { o->action = CLI_PARSE_ONLY; return 0; }
     if (!strcmp(a, "--plan")) { o->action = CLI_PLAN; return 0; }
     if (!strcmp(a, "--unrestricted-io")) { o->allow_unrestricted_io = true; return 0; }
+    if (!strcmp(a, "--allow-writes")) { o->allow_writes = true; return 0; }
     if (!strcmp(a, "--no-photons")) { o->render.use_photons = false; return 0; }
 
     v = long_value(argc, argv, i, "output", &m);
     if (m) {
         if (!v || !*v) return fail(err, errlen, "%s needs a file name", a);
         o->output = v;
+        return 0;
+    }
+    v = long_value(argc, argv, i, "max-loop-iterations", &m);
+    if (m) {
+        if (!v || !parse_int(v, 1, 1000000000000000L, &n))
+            return fail(err, errlen, "%s: a positive number of iterations", a);
+        o->max_loop_iterations = n;
         return 0;
     }
     v = long_value(argc, argv, i, "stats", &m);
@@ -362,6 +373,7 @@ void cli_usage(FILE *out)
 "  +Rn             antialiasing depth (3)   +J[amt] -J   jitter on/off\n"
 "  +Lpath          include directory        +WTn         threads\n"
 "  +FN[16] +FE     PNG (8/16-bit) or OpenEXR when the name has no extension\n"
+"  +UA -UA         alpha channel: a transmitting background is transparent\n"
 "  +Kclock         clock value              +D -D +V -V  accepted\n"
 "  Declare=Name=Value  declare an identifier before parsing\n"
 "\n"
@@ -384,6 +396,10 @@ void cli_usage(FILE *out)
 "      --plan          print the render plan, render nothing\n"
 "      --stats=FILE    write timings and counters as JSON\n"
 "      --unrestricted-io  let the scene read files anywhere\n"
+"      --allow-writes  let #fopen ... write create files in the scene's\n"
+"                      directory (refused by default)\n"
+"      --max-loop-iterations=N  stop a #while or #for loop after N\n"
+"                      iterations with an error (1000000)\n"
 "      --version       print the version     --help   this text\n"
 "\n"
 "Exit status: 0 success, 1 render or I/O failure, 2 bad usage or scene\n"

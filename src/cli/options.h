@@ -37,6 +37,9 @@ struct cli_options {
     iris_declare declares[CLI_MAX_DECLARES];
     double clock;
     bool allow_unrestricted_io;
+    bool allow_writes;          /* --allow-writes: #fopen write in the
+                                   scene's directory (issue 7) */
+    long max_loop_iterations;   /* --max-loop-iterations, 0 = default */
     /* progressive mode (--checkpoint and --resume are in 'render') */
     const char *reference;      /* --reference IMG */
     const char *error_log;      /* --error-log FILE.csv */

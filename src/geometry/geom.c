@@ -62,34 +62,43 @@ bool geom_is_analytic(enum iris_object_kind kind)
     case IRIS_OBJ_LATHE: case IRIS_OBJ_SOR: case IRIS_OBJ_SUPERELLIPSOID:
     case IRIS_OBJ_BLOB: case IRIS_OBJ_TEXT: case IRIS_OBJ_ISOSURFACE:
     case IRIS_OBJ_QUADRIC: case IRIS_OBJ_POLY: case IRIS_OBJ_JULIA_FRACTAL:
+    case IRIS_OBJ_OVUS: case IRIS_OBJ_SPHERE_SWEEP: case IRIS_OBJ_PARAMETRIC:
+    case IRIS_OBJ_LEMON:
         return true;
     default:
         return false;
     }
 }
 
+/* One slab of geom_clip_box(). Plain comparisons instead of fmax/fmin:
+** those are library calls here (NaN rules), and this runs for every
+** bounded object a ray comes near; nothing here is NaN (finite box,
+** finite ray, dk != 0). */
+static inline bool clip_slab(double ok, double dk, double l, double h,
+                             double *a, double *b)
+{
+    if (dk == 0)
+        return !(ok < l || ok > h);
+    double ta = (l - ok) / dk, tb = (h - ok) / dk;
+    if (ta > tb) {
+        double s = ta;
+        ta = tb;
+        tb = s;
+    }
+    if (ta > *a)
+        *a = ta;
+    if (tb < *b)
+        *b = tb;
+    return !(*a > *b);
+}
+
 bool geom_clip_box(vec3 lo, vec3 hi, vec3 o, vec3 d, double *t0, double *t1)
 {
     double a = *t0, b = *t1;
-    for (int k = 0; k < 3; k++) {
-        double ok = v3_comp(o, k), dk = v3_comp(d, k);
-        double l = v3_comp(lo, k), h = v3_comp(hi, k);
-        if (dk == 0) {
-            if (ok < l || ok > h)
-                return false;
-            continue;
-        }
-        double ta = (l - ok) / dk, tb = (h - ok) / dk;
-        if (ta > tb) {
-            double s = ta;
-            ta = tb;
-            tb = s;
-        }
-        a = fmax(a, ta);
-        b = fmin(b, tb);
-        if (a > b)
-            return false;
-    }
+    if (!clip_slab(o.x, d.x, lo.x, hi.x, &a, &b) ||
+        !clip_slab(o.y, d.y, lo.y, hi.y, &a, &b) ||
+        !clip_slab(o.z, d.z, lo.z, hi.z, &a, &b))
+        return false;
     *t0 = a;
     *t1 = b;
     return true;
@@ -120,6 +129,14 @@ void geom_intersect(const iris_object *o, const struct geom_profile *prof,
     case IRIS_OBJ_JULIA_FRACTAL:
         geom_julia_hits(o, ro, rd, t0, t1, out);
         break;
+    case IRIS_OBJ_OVUS: geom_ovus_hits(o, ro, rd, t0, t1, out); break;
+    case IRIS_OBJ_SPHERE_SWEEP:
+        geom_sphere_sweep_hits(o, ro, rd, t0, t1, out);
+        break;
+    case IRIS_OBJ_PARAMETRIC:
+        geom_parametric_hits(o, ro, rd, t0, t1, out);
+        break;
+    case IRIS_OBJ_LEMON: geom_lemon_hits(o, ro, rd, t0, t1, out); break;
     case IRIS_OBJ_LATHE:
     case IRIS_OBJ_SOR:
         if (prof)
@@ -176,6 +193,12 @@ bool geom_inside(const iris_object *o, const struct geom_profile *prof,
         return geom_isosurface_inside(o, p);
     case IRIS_OBJ_JULIA_FRACTAL:
         return geom_julia_inside(o, p);
+    case IRIS_OBJ_OVUS:
+        return geom_ovus_inside(o, p);
+    case IRIS_OBJ_SPHERE_SWEEP:
+        return geom_sphere_sweep_inside(o, p);
+    case IRIS_OBJ_LEMON:
+        return geom_lemon_inside(o, p);
     case IRIS_OBJ_LATHE:
     case IRIS_OBJ_SOR:
         return prof && geom_lathe_inside(prof, p);
@@ -262,6 +285,17 @@ bool geom_bounds(const iris_object *o, const struct geom_profile *prof,
             *lo = v3_min(o->u.isosurface.lo, o->u.isosurface.hi);
             *hi = v3_max(o->u.isosurface.lo, o->u.isosurface.hi);
         }
+        return true;
+    case IRIS_OBJ_OVUS:
+        geom_ovus_bounds(o, lo, hi);
+        return true;
+    case IRIS_OBJ_SPHERE_SWEEP:
+        return geom_sphere_sweep_bounds(o, lo, hi);
+    case IRIS_OBJ_PARAMETRIC:
+        geom_parametric_bounds(o, lo, hi);
+        return true;
+    case IRIS_OBJ_LEMON:
+        geom_lemon_bounds(o, lo, hi);
         return true;
     case IRIS_OBJ_JULIA_FRACTAL: {
         double r = geom_julia_radius(o);
@@ -352,6 +386,14 @@ const char *geom_validate(const iris_object *o)
             return "julia_fractal: only quaternion sqr and cube are "
                    "supported, with a slice that is not parallel to w";
         return NULL;
+    case IRIS_OBJ_OVUS:
+        return geom_ovus_check(o);
+    case IRIS_OBJ_SPHERE_SWEEP:
+        return geom_sphere_sweep_check(o);
+    case IRIS_OBJ_PARAMETRIC:
+        return geom_parametric_check(o);
+    case IRIS_OBJ_LEMON:
+        return geom_lemon_check(o);
     case IRIS_OBJ_ISOSURFACE:
         if (!o->u.isosurface.fn)
             return "isosurface has no function";

@@ -107,6 +107,9 @@ const char *geom_validate(const iris_object *obj);
 /* Per-shape entry points, called by geom.c's dispatch. */
 void geom_sphere_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
                       double t1, struct isect_list *out);
+/* A sphere's uv at object-space point 'p' on it. geom_sphere_hits()
+** leaves uv 0: the caller asks for the crossing it keeps. */
+iris_vec2 geom_sphere_uv(const iris_object *o, vec3 p);
 void geom_plane_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
                      double t1, struct isect_list *out);
 void geom_box_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
@@ -116,6 +119,15 @@ void geom_cone_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
 void geom_disc_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
                     double t1, struct isect_list *out);
 bool geom_cone_inside(const iris_object *o, vec3 p);
+/*
+** Roots of the torus quartic (|q|^2 + R^2 - r^2)^2 = 4 R^2 (x^2 + z^2)
+** about the y axis along q = o + t d (d unit) for t in (t0, t1): written
+** to u[] as offsets from the ray's closest approach to the centre,
+** *p_out = o + s d with s in *s_out (so t = s + u); the count is returned.
+** torus.c, and ovus.c's spindle (where R is below r).
+*/
+int geom_torus_roots(double R, double r, vec3 o, vec3 d, double t0,
+                     double t1, double *s_out, vec3 *p_out, double u[4]);
 void geom_torus_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
                      double t1, struct isect_list *out);
 void geom_poly_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
@@ -167,6 +179,40 @@ bool geom_julia_inside(const iris_object *o, vec3 p);
 double geom_julia_radius(const iris_object *o);
 void geom_julia_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
                      double t1, struct isect_list *out);
+
+/* ovus, sphere_sweep, parametric, lemon (ovus.c, sphere_sweep.c,
+** parametric.c, lemon.c):
+** hits, inside, bounds, and the parameter check (NULL when renderable). */
+void geom_ovus_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
+                    double t1, struct isect_list *out);
+bool geom_ovus_inside(const iris_object *o, vec3 p);
+void geom_ovus_bounds(const iris_object *o, vec3 *lo, vec3 *hi);
+const char *geom_ovus_check(const iris_object *o);
+void geom_sphere_sweep_hits(const iris_object *o, vec3 ro, vec3 rd,
+                            double t0, double t1, struct isect_list *out);
+bool geom_sphere_sweep_inside(const iris_object *o, vec3 p);
+bool geom_sphere_sweep_bounds(const iris_object *o, vec3 *lo, vec3 *hi);
+const char *geom_sphere_sweep_check(const iris_object *o);
+void geom_parametric_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
+                          double t1, struct isect_list *out);
+void geom_parametric_bounds(const iris_object *o, vec3 *lo, vec3 *hi);
+const char *geom_parametric_check(const iris_object *o);
+void geom_lemon_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
+                     double t1, struct isect_list *out);
+bool geom_lemon_inside(const iris_object *o, vec3 p);
+void geom_lemon_bounds(const iris_object *o, vec3 *lo, vec3 *hi);
+const char *geom_lemon_check(const iris_object *o);
+/* bicubic_patch as POV-Ray tessellates it (bicubic.c): 3·n_tris corners
+** 'p' with normals 'n' and uv, owned by the caller (iris_free); NULL, or
+** the reason it cannot be built. */
+const char *geom_bicubic_tessellate(const iris_object *o, int *n_tris,
+                                    vec3 **p, vec3 **n, iris_vec2 **uv);
+/* The inner ("lemon") part of the spindle torus about the y axis centred
+** at (0, yc, 0) whose tube circle, radius C, has its centre H > 0 beyond
+** the axis; hits with ylo < y < yhi (ovus.c; used by ovus and lemon). */
+void geom_spindle_hits(double H, double C, double yc, double ylo,
+                       double yhi, vec3 ro, vec3 rd, double t0, double t1,
+                       struct isect_list *out);
 
 /* Whether the box lo..hi is hit by o + t·d for some t in [t0, t1];
 ** narrows [t0, t1] to the part inside the box. */

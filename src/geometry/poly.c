@@ -41,6 +41,10 @@ double geom_poly_eval(const iris_object *o, vec3 p)
     int n = o->u.poly.order, idx = 0;
     double buf[10];
     const double *c = coeffs(o, buf);
+    if (n == 2) /* written out: CSG inside tests call this per crossing */
+        return c[0] * p.x * p.x + c[1] * p.x * p.y + c[2] * p.x * p.z +
+               c[3] * p.x + c[4] * p.y * p.y + c[5] * p.y * p.z +
+               c[6] * p.y + c[7] * p.z * p.z + c[8] * p.z + c[9];
     double px[MAXO + 1], py[MAXO + 1], pz[MAXO + 1];
     px[0] = py[0] = pz[0] = 1;
     for (int i = 1; i <= n; i++) {
@@ -62,6 +66,10 @@ static vec3 poly_grad(const iris_object *o, vec3 p)
     int n = o->u.poly.order, idx = 0;
     double buf[10];
     const double *c = coeffs(o, buf);
+    if (n == 2)
+        return v3(2 * c[0] * p.x + c[1] * p.y + c[2] * p.z + c[3],
+                  c[1] * p.x + 2 * c[4] * p.y + c[5] * p.z + c[6],
+                  c[2] * p.x + c[5] * p.y + 2 * c[7] * p.z + c[8]);
     double px[MAXO + 1], py[MAXO + 1], pz[MAXO + 1];
     px[0] = py[0] = pz[0] = 1;
     for (int i = 1; i <= n; i++) {
@@ -94,6 +102,57 @@ static void pmul(const double *a, int na, const double *b, int nb, double *out)
             out[i + j] += a[i] * b[j];
 }
 
+/*
+** Order 2 (quadric, and poly of order 2): the same polynomial in u as the
+** general expansion below, written out directly, and its roots by the
+** numerically stable quadratic formula. It reports what
+** roots_in_interval() would: exact-zero leading terms drop the degree,
+** a negative discriminant has no root, a double root (discriminant
+** exactly zero) is the one critical point that is a root. The general
+** path costs ~20 polynomial products per ray, and quadrics (paraboloids,
+** hyperboloids) are common in POV-Ray's scenes.
+*/
+static int quadric_roots(const double *c, vec3 p, vec3 d, double lo,
+                         double hi, double u[2])
+{
+    /* c: x², xy, xz, x, y², yz, y, z², z, 1 */
+    double a2 = c[0] * d.x * d.x + c[1] * d.x * d.y + c[2] * d.x * d.z +
+                c[4] * d.y * d.y + c[5] * d.y * d.z + c[7] * d.z * d.z;
+    double a1 = 2 * c[0] * p.x * d.x + c[1] * (p.x * d.y + p.y * d.x) +
+                c[2] * (p.x * d.z + p.z * d.x) + c[3] * d.x +
+                2 * c[4] * p.y * d.y + c[5] * (p.y * d.z + p.z * d.y) +
+                c[6] * d.y + 2 * c[7] * p.z * d.z + c[8] * d.z;
+    double a0 = c[0] * p.x * p.x + c[1] * p.x * p.y + c[2] * p.x * p.z +
+                c[3] * p.x + c[4] * p.y * p.y + c[5] * p.y * p.z +
+                c[6] * p.y + c[7] * p.z * p.z + c[8] * p.z + c[9];
+    if (!isfinite(a0) || !isfinite(a1) || !isfinite(a2))
+        return 0;
+    double r[2];
+    int m = 0;
+    if (a2 == 0) {
+        if (a1 == 0)
+            return 0;
+        r[m++] = -a0 / a1;
+    } else {
+        double disc = a1 * a1 - 4 * a2 * a0;
+        if (disc < 0)
+            return 0;
+        if (disc == 0) {
+            r[m++] = -a1 / (2 * a2);
+        } else {
+            double q = -0.5 * (a1 + copysign(sqrt(disc), a1));
+            double x0 = q / a2, x1 = a0 / q;
+            r[m++] = fmin(x0, x1);
+            r[m++] = fmax(x0, x1);
+        }
+    }
+    int n = 0;
+    for (int i = 0; i < m; i++)
+        if (r[i] > lo && r[i] < hi)
+            u[n++] = r[i];
+    return n;
+}
+
 void geom_poly_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
                     double t1, struct isect_list *out)
 {
@@ -106,6 +165,16 @@ void geom_poly_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
     vec3 d = v3_scale(rd, 1.0 / dl);
     double s = -v3_dot(ro, d);
     vec3 p = v3_madd(ro, d, s);
+
+    if (n == 2) {
+        double u[2];
+        int m = quadric_roots(c, p, d, t0 * dl - s, t1 * dl - s, u);
+        for (int i = 0; i < m; i++) {
+            vec3 q = v3_madd(p, d, u[i]);
+            isect_push(out, (s + u[i]) / dl, poly_grad(o, q), 0, 0);
+        }
+        return;
+    }
 
     /* Powers of (p_k + u·d_k) as polynomials in u */
     double X[MAXO + 1][MAXO + 1], Y[MAXO + 1][MAXO + 1], Z[MAXO + 1][MAXO + 1];

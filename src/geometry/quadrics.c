@@ -56,15 +56,25 @@ void geom_sphere_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
     for (int k = 0; k < 2; k++) {
         double t = k ? tc + h : tc - h;
         if (t > t0 && t < t1) {
+            /* uv is left to geom_sphere_uv(), asked for the one crossing
+            ** that is shaded: two inverse trigonometric functions per
+            ** crossing cost as much as the rest of the test */
             vec3 n = v3_scale(v3_madd(oc, rd, t), 1.0 / rad);
-            /* POV-Ray's sphere uv: u around y from +x, v from the pole */
-            double u = atan2(-n.z, n.x) / (2 * M_PI);
-            if (u < 0)
-                u += 1;
-            double v = 0.5 + asin(fmax(-1, fmin(1, n.y))) / M_PI;
-            isect_push(out, t, n, u, v);
+            isect_push(out, t, n, 0, 0);
         }
     }
+}
+
+iris_vec2 geom_sphere_uv(const iris_object *o, vec3 p)
+{
+    vec3 n = v3_scale(v3_sub(p, o->u.sphere.centre), 1.0 / o->u.sphere.radius);
+    /* POV-Ray's sphere uv: u around y from +x, v from the pole */
+    double u = atan2(-n.z, n.x) / (2 * M_PI);
+    if (u < 0)
+        u += 1;
+    double v = 0.5 + asin(fmax(-1, fmin(1, n.y))) / M_PI;
+    iris_vec2 uv = { isfinite(u) ? u : 0, isfinite(v) ? v : 0 };
+    return uv;
 }
 
 void geom_plane_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,

@@ -54,7 +54,14 @@ static double refine(const double *c, int deg, double a, double b, double fa)
         if (fabs(b - a) <= 4 * DBL_EPSILON * fmax(fabs(a), fabs(b)) ||
             fabs(b - a) < DBL_MIN)
             break;
-        double nx = df != 0 ? x - f / df : a;
+        double step = df != 0 ? f / df : HUGE_VAL;
+        double nx = x - step;
+        /* Newton converging to one side never shrinks the far end of the
+        ** bracket: stop once its step is a few ulps of x, the precision
+        ** the bracket test above would reach (quadratic convergence makes
+        ** the next step far smaller still) */
+        if (nx > a && nx < b && fabs(step) <= 4 * DBL_EPSILON * fabs(nx))
+            return nx;
         if (!(nx > a && nx < b))
             nx = 0.5 * (a + b);
         /* Newton that barely moves near an endpoint stalls: bisect */

@@ -15,30 +15,63 @@
 
 #include <math.h>
 
-void geom_torus_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
-                     double t1, struct isect_list *out)
+/*
+** Whether the segment p + u d, u in [lo, hi], surely misses the torus,
+** so that the quartic need not be solved (POV-Ray tests a thick cylinder
+** for the same reason). Every point of the torus has |y| <= r and a
+** distance from the y axis of at least R - r, R = |major|: the quartic
+** factors as (rho -+ R)^2 + y^2 = r^2, rho = sqrt(x^2 + z^2). The
+** segment is cut to the slab |y| <= r; as rho^2 is convex along a line,
+** the cut segment lies in the hole when both its ends do. 'tol' widens
+** both tests, so rays that graze the torus are still solved. The solve
+** itself keeps [lo, hi], so the roots found do not change.
+*/
+static bool torus_missed(double R, double r, vec3 p, vec3 d, double lo,
+                         double hi, double tol)
 {
-    double R = o->u.torus.major, r = o->u.torus.minor;
-    double dl = v3_len(rd);
-    if (!(dl > 0))
-        return;
-    vec3 d = v3_scale(rd, 1.0 / dl);
+    double ry = r + tol;
+    if (d.y != 0) {
+        double a = (-ry - p.y) / d.y, b = (ry - p.y) / d.y;
+        if (a > b) {
+            double tmp = a;
+            a = b;
+            b = tmp;
+        }
+        lo = fmax(lo, a);
+        hi = fmin(hi, b);
+        if (!(lo <= hi))
+            return true;
+    } else if (!(fabs(p.y) <= ry)) {
+        return true;
+    }
+    double hole = R - r - tol;
+    if (!(hole > 0))
+        return false;
+    double xa = p.x + lo * d.x, za = p.z + lo * d.z;
+    double xb = p.x + hi * d.x, zb = p.z + hi * d.z;
+    return xa * xa + za * za < hole * hole && xb * xb + zb * zb < hole * hole;
+}
 
+int geom_torus_roots(double R, double r, vec3 o, vec3 d, double t0,
+                     double t1, double *s_out, vec3 *p_out, double u[4])
+{
     /* Shift the origin to the closest approach; reject outside the
-    ** bounding sphere of radius R + r */
-    double s = -v3_dot(ro, d);
-    vec3 p = v3_madd(ro, d, s);
-    double rb = R + r;
+    ** bounding sphere of radius |R| + r */
+    double s = -v3_dot(o, d);
+    vec3 p = v3_madd(o, d, s);
+    double rb = fabs(R) + r;
     double h2 = rb * rb - v3_len2(p);
     if (h2 <= 0)
-        return;
+        return 0;
     /* Widen by 1e-9 so that roots on the sphere itself (a ray through the
     ** equator meets the outer rim exactly at distance R + r) stay inside
     ** the open interval the solver searches */
     double h = sqrt(h2) + 1e-9 * rb;
-    double lo = fmax(-h, t0 * dl - s), hi = fmin(h, t1 * dl - s);
+    double lo = fmax(-h, t0 - s), hi = fmin(h, t1 - s);
     if (!(lo < hi))
-        return;
+        return 0;
+    if (torus_missed(fabs(R), r, p, d, lo, hi, 1e-6 * rb))
+        return 0;
 
     double beta = 2 * v3_dot(p, d);
     double gamma = v3_len2(p) + R * R - r * r;
@@ -48,9 +81,22 @@ void geom_torus_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
     c[2] = beta * beta + 2 * gamma - 4 * R * R * (d.x * d.x + d.z * d.z);
     c[1] = 2 * beta * gamma - 8 * R * R * (p.x * d.x + p.z * d.z);
     c[0] = gamma * gamma - 4 * R * R * (p.x * p.x + p.z * p.z);
+    *s_out = s;
+    *p_out = p;
+    return roots_in_interval(c, 4, lo, hi, u);
+}
 
-    double u[4];
-    int n = roots_in_interval(c, 4, lo, hi, u);
+void geom_torus_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
+                     double t1, struct isect_list *out)
+{
+    double R = o->u.torus.major, r = o->u.torus.minor;
+    double dl = v3_len(rd);
+    if (!(dl > 0))
+        return;
+    vec3 d = v3_scale(rd, 1.0 / dl);
+    double s, u[4];
+    vec3 p;
+    int n = geom_torus_roots(R, r, ro, d, t0 * dl, t1 * dl, &s, &p, u);
     for (int i = 0; i < n; i++) {
         vec3 q = v3_madd(p, d, u[i]);
         double rxz = sqrt(q.x * q.x + q.z * q.z);

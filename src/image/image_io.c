@@ -102,6 +102,29 @@ enum iris_status iris_image_write(const iris_image *img, const char *path,
                                   int bits, enum iris_encoding enc, char *err,
                                   size_t errlen)
 {
+    return iris_image_write_alpha(img, path, bits, enc, false, err, errlen);
+}
+
+/* A premultiplied pixel to straight alpha as POV-Ray 3.7 encodes it
+** (encoding.cpp GetEncodedRGBAValue): brightness above alpha raises the
+** alpha (so that clipping does not kill highlights on glass), then the
+** colour is divided by it. Brightness is POV-Ray's greyscale. */
+static void unpremultiply(double c[4])
+{
+    double a = c[3] < 0 ? 0 : c[3] > 1 ? 1 : c[3];
+    double bright = 0.297 * c[0] + 0.589 * c[1] + 0.114 * c[2];
+    if (bright > a)
+        a = bright < 1.0 ? bright : 1.0;
+    for (int k = 0; k < 3; k++)
+        c[k] = a > 0 ? c[k] / a : 0.0;
+    c[3] = a;
+}
+
+enum iris_status iris_image_write_alpha(const iris_image *img,
+                                        const char *path, int bits,
+                                        enum iris_encoding enc, bool alpha,
+                                        char *err, size_t errlen)
+{
     const char *ext = extension(path);
     if (!ext) {
         snprintf(err, errlen, "%s: the output name needs an extension (png, exr, tif, hdr, jpg, pfm)", path);
@@ -114,23 +137,29 @@ enum iris_status iris_image_write(const iris_image *img, const char *path,
     int floats = !strcasecmp(ext, "exr") || !strcasecmp(ext, "hdr") || !strcasecmp(ext, "pfm");
     if (bits != 16 || !strcasecmp(ext, "jpg") || !strcasecmp(ext, "jpeg"))
         bits = 8;
-    const int nch = 3;
+    const int nch = alpha ? 4 : 3;
     size_t n = (size_t)img->width * (size_t)img->height;
     size_t size = floats ? sizeof(float) : bits == 16 ? 2 : 1;
     void *buf = iris_calloc(n * nch, size);
     if (!buf)
         return IRIS_ENOMEM;
     double maxv = bits == 16 ? 65535.0 : 255.0;
-    for (size_t i = 0; i < n; i++)
+    for (size_t i = 0; i < n; i++) {
+        double px[4];
+        for (int c = 0; c < 4; c++) {
+            px[c] = img->pixels[i * 4 + c];
+            if (!isfinite(px[c]))
+                px[c] = 0; /* never a NaN or Inf in a file */
+        }
+        if (alpha && !floats)
+            unpremultiply(px);
         for (int c = 0; c < nch; c++) {
-            double v = img->pixels[i * 4 + c];
-            if (!isfinite(v))
-                v = 0; /* never a NaN or Inf in a file */
+            double v = px[c];
             if (floats) {
                 ((float *)buf)[i * nch + c] = (float)v;
                 continue;
             }
-            if (enc == IRIS_ENC_SRGB)
+            if (enc == IRIS_ENC_SRGB && c < 3)
                 v = iris_srgb_encode(v);
             v = v < 0 ? 0 : v > 1 ? 1 : v;
             double q = floor(v * maxv + 0.5);
@@ -139,10 +168,11 @@ enum iris_status iris_image_write(const iris_image *img, const char *path,
             else
                 ((unsigned char *)buf)[i * nch + c] = (unsigned char)q;
         }
+    }
     const char *cs = floats || enc == IRIS_ENC_LINEAR ? "Linear" : "sRGB";
     enum oiio_type type = floats ? OIIO_FLOAT : bits == 16 ? OIIO_UINT16 : OIIO_UINT8;
-    int rc = is_png ? png_write_rgb(path, img->width, img->height, bits, buf,
-                                    enc == IRIS_ENC_SRGB, err, errlen)
+    int rc = is_png ? png_write_rgb(path, img->width, img->height, bits, nch,
+                                    buf, enc == IRIS_ENC_SRGB, err, errlen)
                     : m->write(path, img->width, img->height, nch, type, buf, cs,
                                err, errlen);
     iris_free(buf);

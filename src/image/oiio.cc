@@ -66,8 +66,14 @@ int write_file(const char *cpath, int w, int h, int nch, enum oiio_type type,
                 : type == OIIO_UINT16 ? TypeDesc::UINT16 : TypeDesc::UINT8;
     ImageSpec spec(w, h, nch, td);
     spec.attribute("oiio:ColorSpace", colorspace);
-    if (lower_ext(path) == "exr")
+    if (lower_ext(path) == "exr") {
         spec.attribute("compression", "zip");
+        /* OpenImageIO's EXR writer stamps the current time (capDate) into
+        ** the header unless DateTime is set: two renders of one scene
+        ** would then differ byte for byte. A fixed value keeps the file a
+        ** function of the image alone. */
+        spec.attribute("DateTime", "");
+    }
     std::string tmp = temp_name(path);
     auto out = ImageOutput::create(tmp);
     if (!out) {

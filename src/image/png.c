@@ -23,7 +23,7 @@ static void temp_name(char *out, size_t len, const char *path)
              (long)getpid());
 }
 
-int png_write_rgb(const char *path, int width, int height, int bits,
+int png_write_rgb(const char *path, int width, int height, int bits, int nch,
                   const void *pixels, int srgb, char *err, size_t errlen)
 {
     char tmp[4096];
@@ -48,7 +48,8 @@ int png_write_rgb(const char *path, int width, int height, int bits,
     }
     png_init_io(png, f);
     png_set_IHDR(png, info, (png_uint_32)width, (png_uint_32)height, bits,
-                 PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
+                 nch == 4 ? PNG_COLOR_TYPE_RGB_ALPHA : PNG_COLOR_TYPE_RGB,
+                 PNG_INTERLACE_NONE,
                  PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
     if (srgb)
         png_set_sRGB_gAMA_and_cHRM(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
@@ -57,7 +58,7 @@ int png_write_rgb(const char *path, int width, int height, int bits,
     png_write_info(png, info);
     if (bits == 16)
         png_set_swap(png); /* native uint16 to PNG's big-endian */
-    size_t stride = (size_t)width * 3 * (bits == 16 ? 2 : 1);
+    size_t stride = (size_t)width * (nch == 4 ? 4 : 3) * (bits == 16 ? 2 : 1);
     for (int y = 0; y < height; y++)
         rows[y] = (png_bytep)pixels + (size_t)y * stride;
     png_write_image(png, rows);

@@ -13,10 +13,11 @@
 
 #include <stddef.h>
 
-/* Writes 8- or 16-bit RGB to 'path' (sRGB chunk when 'srgb', as POV-Ray
-** writes), through a temporary file renamed into place. Returns 0, or -1
-** with a message in 'err'. 'pixels' holds bytes or native uint16s. */
-int png_write_rgb(const char *path, int width, int height, int bits,
+/* Writes 8- or 16-bit RGB ('nch' 3) or RGBA ('nch' 4, straight alpha as
+** PNG defines it) to 'path' (sRGB chunk when 'srgb', as POV-Ray writes),
+** through a temporary file renamed into place. Returns 0, or -1 with a
+** message in 'err'. 'pixels' holds bytes or native uint16s. */
+int png_write_rgb(const char *path, int width, int height, int bits, int nch,
                   const void *pixels, int srgb, char *err, size_t errlen);
 
 /* Reads a PNG as floats in [0,1], 1 to 4 channels as stored (palette and

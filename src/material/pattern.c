@@ -8,7 +8,9 @@
 ** layout): spiral arms (params[0]); agate_turb (params[0], 0 = POV-Ray's
 ** 1.0); quilted control0/control1 (params[0], params[1], both 0 = POV-Ray's
 ** 1, 1); crackle form (params[0..2], all 0 = <-1, 1, 0>), metric
-** (params[3], 0 = 2), offset (params[4]), solid (params[5] != 0).
+** (params[3], 0 = 2), offset (params[4]), solid (params[5] != 0);
+** mandel/julia interior type and factor, exterior type and factor
+** (params[0..3], used when params[5] != 0), exponent (params[6]).
 */
 #include "config.h"
 
@@ -293,6 +295,11 @@ vec3 pat_warp_world(const struct mat_ctx *ctx, const iris_pattern *pat,
     if (pat->n_warps == 1 && classic && uses_own_turb(pat->kind))
         return p;
     vec3 q = pat_space(ctx, pat, p);
+    /* back through every transform (the map entries carry them all),
+    ** also those written before a warp, kept as TRANSFORM entries */
+    for (int i = 0; i < pat->n_warps; i++)
+        if (pat->warps[i].kind == IRIS_WARP_TRANSFORM)
+            q = xf_point(&pat->warps[i].transform, q);
     return pat->has_transform ? xf_point(&pat->transform, q) : q;
 }
 
@@ -556,6 +563,33 @@ static vec3 cube_point(int x, int y, int z)
               z + pat_rand(seed + 2));
 }
 
+/*
+** The cube points around the last cell a thread asked about. Neighbouring
+** samples mostly fall in the same unit cell, and a point costs a hash and
+** three table reads; POV-Ray keeps a per-thread cache for the same
+** reason. The points are a pure function of the cube, so the pattern's
+** values do not change.
+*/
+struct crackle_cache {
+    bool valid;
+    int fx, fy, fz;
+    uint64_t have[2];          /* bit i: pts[i] is filled */
+    vec3 pts[125];             /* index (dx+2)*25 + (dy+2)*5 + (dz+2) */
+};
+static _Thread_local struct crackle_cache crackle_tls;
+
+static vec3 cached_cube_point(struct crackle_cache *cc, int dx, int dy,
+                              int dz)
+{
+    int i = (dx + 2) * 25 + (dy + 2) * 5 + (dz + 2);
+    uint64_t bit = (uint64_t)1 << (i & 63);
+    if (!(cc->have[i >> 6] & bit)) {
+        cc->pts[i] = cube_point(cc->fx + dx, cc->fy + dy, cc->fz + dz);
+        cc->have[i >> 6] |= bit;
+    }
+    return cc->pts[i];
+}
+
 static double crackle(const struct mat_ctx *ctx, const iris_pattern *pat,
                       vec3 p)
 {
@@ -569,6 +603,14 @@ static double crackle(const struct mat_ctx *ctx, const iris_pattern *pat,
         fz = (int)floor(p.z - PAT_EPSILON);
     double m1 = INFINITY, m2 = INFINITY, m3 = INFINITY;
     vec3 best = p;
+    struct crackle_cache *cc = &crackle_tls;
+    if (!cc->valid || cc->fx != fx || cc->fy != fy || cc->fz != fz) {
+        cc->valid = true;
+        cc->fx = fx;
+        cc->fy = fy;
+        cc->fz = fz;
+        cc->have[0] = cc->have[1] = 0;
+    }
     /*
     ** A 5x5x5 neighbourhood holds every candidate POV-Ray's 81 cubes do.
     ** The inner 3x3x3 cubes go first; an outer cube is skipped when even
@@ -590,7 +632,7 @@ static double crackle(const struct mat_ctx *ctx, const iris_pattern *pat,
                         if (crackle_dist(gap, metric) >= m3)
                             continue;
                     }
-                    vec3 c = cube_point(cx, cy, cz);
+                    vec3 c = cached_cube_point(cc, dx, dy, dz);
                     double s = crackle_dist(v3_sub(c, p), metric);
                     if (s < m1) {
                         m3 = m2; m2 = m1; m1 = s; best = c;
@@ -619,16 +661,58 @@ static double crackle(const struct mat_ctx *ctx, const iris_pattern *pat,
     return fmax(fmin(tf, 1.0), 0.0);
 }
 
+/* POV-Ray's fractal colouring (FractalPattern::ExteriorColour and
+** InteriorColour), for a point that escaped at step k with z = (a, b),
+** or never did, z = (a, b) then and mind2 the least |z|^2 on the way. */
+static double fractal_exterior(int type, double f, int k, int it_max,
+                               double a, double b)
+{
+    switch (type) {
+    case 0: return f;
+    case 1: return (double)k / it_max;
+    case 2: return a * f;
+    case 3: return b * f;
+    case 4: return a * a * f;
+    case 5: return b * b * f;
+    case 6: return sqrt(a * a + b * b) * f;
+    case 7: return f >= 1 ? (double)(k % (unsigned)f) / f : 0.0;
+    case 8: return f > 0 ? (double)(k % (unsigned)(1 + f)) / f : 0.0;
+    default: return 0.0;
+    }
+}
+
+static double fractal_interior(int type, double f, double a, double b,
+                               double mind2)
+{
+    switch (type) {
+    case 0: return f;
+    case 1: return sqrt(mind2) * f;
+    case 2: return a * f;
+    case 3: return b * f;
+    case 4: return a * a * f;
+    case 5: return b * b * f;
+    case 6: return a * a + b * b * f; /* sic: POV-Ray's precedence */
+    default: return 0.0;
+    }
+}
+
 /*
 ** The mandel and julia patterns (POV-Ray's mandel_pattern, julia_pattern
 ** and their higher-exponent forms): z -> z^n + c from z = (x, y), c = the
 ** point (mandel) or the pattern's constant (julia), for 'iterations'
-** steps. With POV-Ray's default colouring a point that escapes |z| > 2 at
-** step k gets k / iterations (exterior type 1), one that never does gets
-** 1 (interior type 0).
+** steps. The colouring types are the parser's params[0..3] (interior
+** type and factor, exterior type and factor) when params[5] != 0; else
+** POV-Ray's defaults: a point that escapes |z| > 2 at step k gets
+** k / iterations (exterior type 1), one that never does gets 1 (interior
+** type 0).
 */
 static double fractal(const iris_pattern *pat, vec3 p, bool julia)
 {
+    bool given = pat->params[5] != 0;
+    int itype = given ? (int)pat->params[0] : 0;
+    int etype = given ? (int)pat->params[2] : 1;
+    double ifac = given ? pat->params[1] : 1.0;
+    double efac = given ? pat->params[3] : 1.0;
     int it_max = pat->iterations > 0 ? pat->iterations : 1;
     int n = (int)lround(pat->params[6]);
     if (n < 2 || n > 33)
@@ -636,6 +720,7 @@ static double fractal(const iris_pattern *pat, vec3 p, bool julia)
     double a = p.x, b = p.y;
     double ca = julia ? pat->complex_c.u : p.x;
     double cb = julia ? pat->complex_c.v : p.y;
+    double mind2 = a * a + b * b;
     for (int k = 0; k < it_max; k++) {
         double ra = a, rb = b;
         for (int e = 1; e < n; e++) {
@@ -645,10 +730,13 @@ static double fractal(const iris_pattern *pat, vec3 p, bool julia)
         }
         a = ra + ca;
         b = rb + cb;
-        if (a * a + b * b > 4.0)
-            return (double)k / it_max;
+        double d2 = a * a + b * b;
+        if (d2 < mind2)
+            mind2 = d2;
+        if (d2 > 4.0)
+            return fractal_exterior(etype, efac, k, it_max, a, b);
     }
-    return 1.0;
+    return fractal_interior(itype, ifac, a, b, mind2);
 }
 
 static double function_value(const iris_pattern *pat, vec3 p)

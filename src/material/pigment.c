@@ -13,7 +13,13 @@
 #include <math.h>
 #include <string.h>
 
+#include "iris/image.h"
 #include "material/mat_internal.h"
+
+static void image_to_working(const struct mat_ctx *ctx, iris_colour *c);
+static bool image_map_colour(const struct mat_ctx *ctx,
+                             const iris_image_ref *ref, vec3 q,
+                             iris_colour *out);
 
 /* A colour-map entry of POV-Ray's built-in default maps. */
 struct def_entry {
@@ -171,7 +177,7 @@ bool mat_eval_pigment(const struct mat_ctx *ctx, const iris_pigment *pig,
         if (!pat->image)
             return true;
         vec3 q = pat_space(ctx, pat, pt->p);
-        if (!mat_image_lookup(ctx, pat->image, q, out)) {
+        if (!image_map_colour(ctx, pat->image, q, out)) {
             iris_colour clear = { 1, 1, 1, 0, 1 };
             *out = clear;
             return false;
@@ -324,11 +330,17 @@ static iris_colour texel(const iris_image *img, const iris_image_ref *ref,
 
 /* The image's colour at image coordinates (x, y), interpolated as the
 ** reference asks (POV-Ray's image_colour_at). */
-static void sample_at(const iris_image *img, const iris_image_ref *ref,
-                      double x, double y, iris_colour *out)
+/* The image's colour at (x, y); with 'working' (an image_map's colours)
+** each texel is first put into the working gamma space, as POV-Ray
+** converts the image as it reads it, before any interpolation. */
+static void sample_at(const struct mat_ctx *working, const iris_image *img,
+                      const iris_image_ref *ref, double x, double y,
+                      iris_colour *out)
 {
     if (ref->interpolate != 2 && ref->interpolate != 4) {
         *out = texel(img, ref, x, y);
+        if (working)
+            image_to_working(working, out);
         return;
     }
     /* Bilinear over the four texels around the sample (POV-Ray's Interp;
@@ -341,6 +353,12 @@ static void sample_at(const iris_image *img, const iris_image_ref *ref,
     iris_colour c1 = texel(img, ref, ix - 1, iy);
     iris_colour c2 = texel(img, ref, ix, iy - 1);
     iris_colour c3 = texel(img, ref, ix - 1, iy - 1);
+    if (working) {
+        image_to_working(working, &c0);
+        image_to_working(working, &c1);
+        image_to_working(working, &c2);
+        image_to_working(working, &c3);
+    }
     double f0 = p * qf, f1 = (1 - p) * qf, f2 = p * (1 - qf),
            f3 = (1 - p) * (1 - qf);
     out->r = c0.r * f0 + c1.r * f1 + c2.r * f2 + c3.r * f3;
@@ -360,8 +378,48 @@ bool mat_image_lookup(const struct mat_ctx *ctx, const iris_image_ref *ref,
     double x, y;
     if (!map_pos(ref, img->width, img->height, q, &x, &y))
         return false;
-    sample_at(img, ref, x, y, out);
+    sample_at(NULL, img, ref, x, y, out);
     return true;
+}
+
+/* mat_image_lookup() of an image_map pigment: in the working space. */
+static bool image_map_colour(const struct mat_ctx *ctx,
+                             const iris_image_ref *ref, vec3 q,
+                             iris_colour *out)
+{
+    memset(out, 0, sizeof *out);
+    const iris_image *img = mat_find_image(ctx, ref);
+    if (!img || img->width <= 0 || img->height <= 0)
+        return true; /* a missing image renders black (reported once) */
+    double x, y;
+    if (!map_pos(ref, img->width, img->height, q, &x, &y))
+        return false;
+    sample_at(ctx, img, ref, x, y, out);
+    return true;
+}
+
+/* Image colours come decoded to linear light (iris_image_read), but the
+** shading works in the scene's working gamma space (assumed_gamma,
+** semantics §3.9), so POV-Ray 3.7 hands an image_map's colours over in
+** that space: v^(1/assumed_gamma); a pre-3.7 scene without assumed_gamma
+** (gamma handling off) gets the file's encoded values back, as POV-Ray 3.6
+** read them. Without this an assumed_gamma 2.2 scene rendered its image
+** maps darker (a test PNG texel of 64 came out as 5). */
+static void image_to_working(const struct mat_ctx *ctx, iris_colour *c)
+{
+    const iris_scene *sc = ctx ? ctx->scene : NULL;
+    if (!sc)
+        return;
+    double g = sc->settings.assumed_gamma;
+    bool legacy = sc->version > 0 && sc->version < 3.7;
+    double *ch[3] = { &c->r, &c->g, &c->b };
+    for (int k = 0; k < 3; k++) {
+        double v = *ch[k];
+        if (g > 0 && g != 1.0)
+            *ch[k] = v > 0 ? pow(v, 1.0 / g) : v;
+        else if (!(g > 0) && legacy)
+            *ch[k] = iris_srgb_encode(v);
+    }
 }
 
 /* The grey level of a bump map sample, on the decoded (linear) values as
@@ -372,7 +430,7 @@ static double bump_grey(const iris_image *img, const iris_image_ref *ref,
                         double x, double y)
 {
     iris_colour c;
-    sample_at(img, ref, x, y, &c);
+    sample_at(NULL, img, ref, x, y, &c);
     const double g[3] = { c.r, c.g, c.b };
     return mat_greyscale(g);
 }

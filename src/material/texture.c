@@ -400,10 +400,20 @@ static void eval_list(const struct mat_ctx *ctx, const iris_texture *tex,
         plain = !(list[i]->map_pattern.kind != IRIS_PAT_NONE &&
                   list[i]->n_entries > 0);
     if (plain) {
-        for (int i = 0; i < n; i++)
-            eval_layer(ctx, list[i], pt, &out->layers[i]);
-        out->n_layers = n;
-        out->stacks[0].n = n;
+        /* Top down, stopping below an opaque layer (a colour with no
+        ** filter or transmit): no shading looks through it (POV-Ray's
+        ** layer loops end once the filter colour is black), so the
+        ** patterns and normals of the layers below would be evaluated
+        ** for nothing. */
+        int used = 0;
+        while (used < n) {
+            struct mat_layer *l = &out->layers[used];
+            eval_layer(ctx, list[used++], pt, l);
+            if (l->valid && l->pigment.f == 0.0 && l->pigment.t == 0.0)
+                break;
+        }
+        out->n_layers = used;
+        out->stacks[0].n = used;
         return;
     }
     for (int i = n - 1; i >= 0; i--) {
@@ -513,6 +523,14 @@ bool mat_layer_reflectivity(const struct mat_layer *layer, double cos_i,
                            f->reflection_max.b };
     const double mn[3] = { f->reflection_min.r, f->reflection_min.g,
                            f->reflection_min.b };
+    /* Most finishes do not reflect: every branch below then gives 0 (the
+    ** tracer asks for every layer of every hit) */
+    if (mx[0] == 0 && mx[1] == 0 && mx[2] == 0 && mn[0] == 0 && mn[1] == 0 &&
+        mn[2] == 0) {
+        refl[0] = refl[1] = refl[2] = 0.0;
+        *weight = 0.0;
+        return false;
+    }
     if (f->reflection_fresnel) {
         double fr = mat_fresnel(cos_i, n);
         double sqx = n * n + cos_i * cos_i - 1.0;

@@ -45,6 +45,7 @@
 #include "spectrum/spectrum.h"
 #include "util/mem.h"
 #include "util/rng.h"
+#include "util/thread.h"
 
 #define STACK_K 512
 
@@ -58,13 +59,12 @@ static int gather(const struct photon_map *m, vec3 p, double rad,
     return n;
 }
 
-void photon_map_shade(const struct photon_map *m,
+/* The estimate of one map (caustic or global) at 'in'. */
+static void shade_map(const struct photon_map *m,
                       const struct photon_shade_input *in, double rgb_out[3])
 {
     rgb_out[0] = rgb_out[1] = rgb_out[2] = 0.0;
-    if (!m || m->store.n == 0 || !in->finish)
-        return;
-    if (in->obj && !in->obj->photon_collect)
+    if (!m || m->store.n == 0)
         return;
     const iris_finish *fin = in->finish;
     if (!(fin->diffuse > 0.0) && !(fin->diffuse_back > 0.0))
@@ -100,7 +100,15 @@ void photon_map_shade(const struct photon_map *m,
         white_rgb[k] = m->white[k][0] * in->pigment_rgb[0] +
                        m->white[k][1] * in->pigment_rgb[1] +
                        m->white[k][2] * in->pigment_rgb[2];
+    double r2 = r * r;
     for (int i = 0; i < n && r > 0.0; i++) {
+        /* outside the (progressive) estimate radius first: no decoding */
+        if (buf[i].d2 > r2)
+            continue;
+        double d = sqrt(buf[i].d2);
+        double w = 1.0 - d / (kc * r);
+        if (w <= 0.0)
+            continue;
         size_t j = buf[i].index;
         vec3 om = pstore_direction(&m->store, j);
         double cos_l = v3_dot(in->n_layer, om);
@@ -113,10 +121,6 @@ void photon_map_shade(const struct photon_map *m,
         }
         double cos_raw = v3_dot(in->n_raw, om);
         double a = 1.0 / (cos_raw < 0.1 ? 0.1 : cos_raw > 1.0 ? 1.0 : cos_raw);
-        double d = sqrt(buf[i].d2);
-        double w = 1.0 - d / (kc * r);
-        if (w <= 0.0 || d > r)
-            continue;
         double br = fin->brilliance == 1.0 ? cos_l
                                            : pow(cos_l, fin->brilliance);
         double c = w * m->store.ph[j].power * diffuse * br * a;
@@ -139,6 +143,23 @@ void photon_map_shade(const struct photon_map *m,
     double norm = in->opacity / ((1.0 - 2.0 / (3.0 * kc)) * M_PI * r * r);
     for (int k = 0; k < 3; k++)
         rgb_out[k] = sum[k] * norm;
+}
+
+/* The caustic map's light plus the global map's (global.c): the two hold
+** disjoint paths, so they add. */
+void photon_map_shade(const struct photon_map *m,
+                      const struct photon_shade_input *in, double rgb_out[3])
+{
+    rgb_out[0] = rgb_out[1] = rgb_out[2] = 0.0;
+    if (!m || !in->finish || (in->obj && !in->obj->photon_collect))
+        return;
+    shade_map(m, in, rgb_out);
+    if (m->global) {
+        double g[3];
+        pmap_global_shade(m->global, in, g);
+        for (int k = 0; k < 3; k++)
+            rgb_out[k] += g[k];
+    }
 }
 
 static int cmp_double(const void *a, const void *b)
@@ -167,36 +188,76 @@ static int cmp_double(const void *a, const void *b)
 ** floored at 1e-6 of the photons' extent (the quantisation box, pstore.c),
 ** far below any gather radius a scene needs, yet not a degenerate 0.
 */
+/* The sampled photons' k-nearest searches, in parallel (one buffer a
+** thread): pass 1 records r^2 scaled to k photons (-1: unusable), pass 2
+** the density within r0 (rho_out). */
+struct radius_job {
+    const struct pstore *s;
+    int k;
+    size_t m;
+    struct pstore_found *bufs;   /* k per thread */
+    double *r2s;
+    double r0;                   /* pass 2 */
+    double *rho_out;
+};
+
+static void radius_sample(void *ctx, int64_t i, int thread)
+{
+    struct radius_job *j = ctx;
+    const struct pstore *s = j->s;
+    struct pstore_found *buf = j->bufs + (size_t)thread * (size_t)j->k;
+    size_t idx = (size_t)i * s->n / j->m;
+    double r2;
+    if (!j->rho_out) {
+        int n = pstore_knn(s, pstore_position(s, idx), j->k, INFINITY, buf,
+                           &r2);
+        /* fewer than k photons in the whole map: scale r^2 to k */
+        j->r2s[i] = n > 1 && isfinite(r2) ? r2 * j->k / n : -1.0;
+        return;
+    }
+    int n = pstore_knn(s, pstore_position(s, idx), j->k, j->r0 * j->r0, buf,
+                       &r2);
+    double rr = n >= j->k ? r2 : j->r0 * j->r0;
+    j->rho_out[i] = n / (M_PI * rr);
+}
+
 double pmap_auto_radius(const struct pstore *s, int gather_max)
+{
+    return pmap_auto_radius_mt(s, gather_max, 1);
+}
+
+double pmap_auto_radius_mt(const struct pstore *s, int gather_max,
+                           int threads)
 {
     if (s->n == 0 || gather_max <= 0)
         return 0.0;
+    if (threads < 1)
+        threads = 1;
     size_t m = s->n / 20;
     m = m < 100 ? 100 : m > 1000 ? 1000 : m;
     if (m > s->n)
         m = s->n;
-    struct pstore_found *buf = iris_malloc((size_t)gather_max * sizeof *buf);
-    double *r2s = iris_malloc(m * sizeof *r2s);
-    if (!buf || !r2s) {
-        iris_free(buf);
-        iris_free(r2s);
+    struct radius_job j = { s, gather_max, m, NULL, NULL, 0.0, NULL };
+    j.bufs = iris_malloc((size_t)threads * (size_t)gather_max *
+                         sizeof *j.bufs);
+    j.r2s = iris_malloc(m * sizeof *j.r2s);
+    double *rho = iris_malloc(m * sizeof *rho);
+    if (!j.bufs || !j.r2s || !rho) {
+        iris_free(j.bufs);
+        iris_free(j.r2s);
+        iris_free(rho);
         return 0.0;
     }
+    par_for(threads, (int64_t)m, radius_sample, &j);
     size_t used = 0;
-    for (size_t i = 0; i < m; i++) {
-        size_t j = i * s->n / m;
-        double r2;
-        int n = pstore_knn(s, pstore_position(s, j), gather_max, INFINITY,
-                           buf, &r2);
-        /* fewer than k photons in the whole map: scale r^2 to k */
-        if (n > 1 && isfinite(r2))
-            r2s[used++] = r2 * gather_max / n;
-    }
+    for (size_t i = 0; i < m; i++)
+        if (j.r2s[i] >= 0.0)
+            j.r2s[used++] = j.r2s[i];
     double r0 = 0.0;
     if (used > 0) {
-        qsort(r2s, used, sizeof *r2s, cmp_double);
-        double med = used % 2 ? r2s[used / 2]
-                              : 0.5 * (r2s[used / 2 - 1] + r2s[used / 2]);
+        qsort(j.r2s, used, sizeof *j.r2s, cmp_double);
+        double med = used % 2 ? j.r2s[used / 2]
+                              : 0.5 * (j.r2s[used / 2 - 1] + j.r2s[used / 2]);
         double ext = 0.0; /* the extent of the quantisation box */
         for (int a = 0; a < 3; a++)
             ext = fmax(ext, s->step[a] * 1048575.0);
@@ -205,21 +266,18 @@ double pmap_auto_radius(const struct pstore *s, int gather_max)
         if (!(r0 > floor_r))
             r0 = floor_r;
         double rho_med = gather_max / (M_PI * r0 * r0);
+        j.r0 = r0;
+        j.rho_out = rho;
+        par_for(threads, (int64_t)m, radius_sample, &j);
         size_t less = 0;
-        for (size_t i = 0; i < m; i++) {
-            size_t j = i * s->n / m;
-            double r2;
-            int n = pstore_knn(s, pstore_position(s, j), gather_max, r0 * r0,
-                               buf, &r2);
-            double rr = n >= gather_max ? r2 : r0 * r0;
-            double rho = n / (M_PI * rr);
-            if (rho > 0.05 * rho_med && rho < 0.7 * rho_med)
+        for (size_t i = 0; i < m; i++)
+            if (rho[i] > 0.05 * rho_med && rho[i] < 0.7 * rho_med)
                 less++;
-        }
         r0 *= 1.0 + 20.0 * (double)less / (double)m;
     }
-    iris_free(r2s);
-    iris_free(buf);
+    iris_free(rho);
+    iris_free(j.r2s);
+    iris_free(j.bufs);
     return r0;
 }
 
@@ -261,6 +319,8 @@ void photon_map_destroy(struct photon_map *m)
 {
     if (!m)
         return;
+    photon_map_destroy(m->global);
+    iris_free(m->irr);
     pstore_fini(&m->store);
     iris_free(m);
 }

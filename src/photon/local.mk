@@ -1,4 +1,5 @@
-## src/photon: spectral caustic photon map (see photon.h and shoot.c).
+## src/photon: spectral caustic and global photon maps (photon.h, shoot.c,
+## global.c).
 libiris_core_la_SOURCES += %reldir%/photon.h %reldir%/photon.c \
 	%reldir%/pmap.h %reldir%/shoot.c %reldir%/trace.c %reldir%/trace.h \
-	%reldir%/estimate.c %reldir%/pstore.c %reldir%/pstore.h
+	%reldir%/global.c %reldir%/estimate.c %reldir%/pstore.c %reldir%/pstore.h

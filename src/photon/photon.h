@@ -15,6 +15,10 @@
 ** POV-Ray's shading model (§2.7): k nearest photons, the seed paper's cone
 ** filter, the surface reflectance applied per photon wavelength.
 **
+** With `radiosity {}` in global_settings the map also holds a global
+** photon map (global.c): photons after at least one diffuse bounce, read
+** at every diffuse eye hit as indirect light.
+**
 ** Depends on: util, math, spectrum, accel. Used by: render.
 ** The map is immutable after the build; shade and the shadow query are
 ** thread-safe.
@@ -34,6 +38,11 @@ struct accel;
 struct mat_ctx;
 struct photon_map;
 
+/* Global photons shot per pass (all lights), and the neighbours of their
+** estimate (global.c). */
+#define PMAP_GLOBAL_PHOTONS 400000
+#define PMAP_GLOBAL_GATHER 400
+
 struct photon_options {
     int threads;               /* worker threads (< 1: one) */
     uint64_t seed;             /* random streams: (seed, pass, photon) */
@@ -48,12 +57,16 @@ struct photon_options {
                                   error past what half the memory holds
                                   (shoot.c) */
     FILE *log;                 /* warnings (NULL: stderr) */
+    int64_t global_photons;    /* global map (radiosity{}): photons per
+                                  pass, 0 = PMAP_GLOBAL_PHOTONS (pmap.h) */
 };
 
 /* What a build did, for -v and the benchmarks. */
 struct photon_stats {
     int64_t shot;              /* photons emitted */
     int64_t stored;            /* photons in the map */
+    int64_t shot_global;       /* global map (radiosity{}): emitted, */
+    int64_t stored_global;     /* and stored */
     int64_t bytes;             /* memory of the stored map */
     int n_combos;              /* light x target pairs that shot */
     double spacing;            /* the spacing used (after 'count' and
@@ -66,7 +79,8 @@ struct photon_stats {
 ** Builds the photon map of 'scene' (borrowed, like 'accel'; both must
 ** outlive the map). *out is NULL when the scene asks for no photons
 ** (no photons{} block, gather max 0, or no light x target pair with
-** refraction or reflection on). Returns IRIS_OK or IRIS_ENOMEM.
+** refraction or reflection on) and no global map is wanted. Returns
+** IRIS_OK, IRIS_ENOMEM, or IRIS_EINVAL after a located error in the log.
 */
 IRIS_NODISCARD enum iris_status
 photon_map_build(const iris_scene *scene, const struct accel *accel,

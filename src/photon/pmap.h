@@ -41,7 +41,36 @@ struct photon_map {
                                   this times the k-nearest radius (1) */
     double white[3][3];        /* rgb of a white photon on pigment p:
                                   white·p (pmap_white_matrix) */
+    struct photon_map *global; /* the global map (global.c), or NULL */
+    float (*irr)[9];           /* global map only: 'store' holds the
+                                  irradiance points (global.c), irr[i] the
+                                  3x3 matrix of point i; dir_q its normal */
+    double irr_radius;         /* global map: lookup radius of the points */
 };
+
+/* True when 'scene' asks for diffuse interreflection (radiosity{}) and
+** has a light to bounce. */
+bool pmap_wants_global(const iris_scene *scene);
+
+/* Builds the global photon map (global.c); *out NULL when not wanted.
+** Adds its counts to 'stats' (shot_global, stored_global, bytes, times). */
+IRIS_NODISCARD enum iris_status
+pmap_build_global(const iris_scene *scene, const struct pmap_world *w,
+                  const struct photon_options *opts, struct photon_map **out,
+                  struct photon_stats *stats);
+
+/* The indirect light of the global map 'g' at 'in' (global.c). */
+void pmap_global_shade(const struct photon_map *g,
+                       const struct photon_shade_input *in, double rgb[3]);
+
+struct ptrace_out;
+/* Concatenates the raw photons of 'n' batch buffers in order into one
+** new array (*all; NULL when there are none) and frees the buffers.
+** Returns IRIS_ENOMEM when a batch failed or the array cannot be had. */
+IRIS_NODISCARD enum iris_status pmap_concat(struct ptrace_out *outs,
+                                            int64_t n,
+                                            struct pstore_raw **all,
+                                            size_t *total);
 
 /* photon_map_build() against any world. */
 IRIS_NODISCARD enum iris_status
@@ -51,6 +80,11 @@ pmap_build(const iris_scene *scene, const struct pmap_world *w,
 
 /* The shooting rule of semantics §2.2b for one light and target. */
 bool pmap_shoots(const iris_light *l, const iris_object *target);
+
+/* A spot or cylinder light's attenuation of a photon leaving 'origin' in
+** direction 'dir' (1 for other lights); 'axis' is the unit vector from
+** the light to its point_at. Fade is applied where the photon lands. */
+double pmap_light_atten(const iris_light *l, vec3 axis, vec3 origin, vec3 dir);
 
 /*
 ** Unpolarised Fresnel reflectance for a cosine 'cos_i' in [0,1] of the
@@ -69,5 +103,8 @@ void pmap_white_matrix(double out[3][3]);
 
 /* The gather radius POV-Ray picks automatically (semantics §2.6). */
 double pmap_auto_radius(const struct pstore *s, int gather_max);
+/* The same with 'threads' threads (the same result). */
+double pmap_auto_radius_mt(const struct pstore *s, int gather_max,
+                           int threads);
 
 #endif

@@ -14,6 +14,7 @@
 
 #include "spectrum/spectrum.h"
 #include "util/mem.h"
+#include "util/thread.h"
 
 #define QBITS 20
 #define QMAX ((1u << QBITS) - 1u)
@@ -128,6 +129,98 @@ static void build_rec(struct pstore_raw *raw, uint8_t *axes, size_t lo,
     }
 }
 
+/*
+** The same tree built by several threads. A serial build is the progressive
+** pass's largest serial part (a quarter of a pass of bench/caustic_ball.pov
+** on 1 thread), which capped 2 threads at 1.7x. The top levels are split
+** level by level, the segments of one level in parallel (each median
+** selection is build_rec's own step), until there are PAR_SEGMENTS per
+** thread; then the segments' subtrees are built in parallel. Every step is
+** the serial build's, so the tree does not depend on the thread count.
+*/
+#define PAR_MIN_PHOTONS 16384
+#define PAR_SEGMENTS 8
+
+struct seg {
+    size_t lo, hi;
+    double mn[3], mx[3];
+};
+
+struct par_build {
+    struct pstore_raw *raw;
+    uint8_t *axes;
+    struct seg *cur, *next;       /* a level's segments, the next's */
+};
+
+/* Splits segment 'item' of the level at its median (build_rec's step). */
+static void split_seg(void *ctx, int64_t item, int thread)
+{
+    (void)thread;
+    struct par_build *b = ctx;
+    struct seg sg = b->cur[item];
+    struct seg *l = &b->next[2 * item], *r = &b->next[2 * item + 1];
+    if (sg.hi - sg.lo <= 1) {
+        *l = sg;
+        *r = sg;
+        r->lo = r->hi = sg.hi; /* empty */
+        return;
+    }
+    int axis = 0;
+    for (int a = 1; a < 3; a++)
+        if (sg.mx[a] - sg.mn[a] > sg.mx[axis] - sg.mn[axis])
+            axis = a;
+    size_t mid = sg.lo + (sg.hi - sg.lo) / 2;
+    select_kth(b->raw, sg.lo, sg.hi, mid, axis);
+    b->axes[mid] = (uint8_t)axis;
+    double cut = b->raw[mid].p[axis];
+    *l = sg;
+    l->hi = mid;
+    l->mx[axis] = cut;
+    *r = sg;
+    r->lo = mid + 1;
+    r->mn[axis] = cut;
+}
+
+static void finish_seg(void *ctx, int64_t item, int thread)
+{
+    (void)thread;
+    struct par_build *b = ctx;
+    const struct seg *sg = &b->cur[item];
+    build_rec(b->raw, b->axes, sg->lo, sg->hi, sg->mn, sg->mx);
+}
+
+static bool build_par(struct pstore_raw *raw, uint8_t *axes, size_t n,
+                      const double mn[3], const double mx[3], int threads)
+{
+    size_t target = (size_t)threads * PAR_SEGMENTS, cap = 4 * target + 4;
+    struct par_build b = { raw, axes, iris_malloc(cap * sizeof(struct seg)),
+                           iris_malloc(cap * sizeof(struct seg)) };
+    if (!b.cur || !b.next) {
+        iris_free(b.cur);
+        iris_free(b.next);
+        return false;
+    }
+    b.cur[0].lo = 0;
+    b.cur[0].hi = n;
+    memcpy(b.cur[0].mn, mn, sizeof b.cur[0].mn);
+    memcpy(b.cur[0].mx, mx, sizeof b.cur[0].mx);
+    size_t n_seg = 1;
+    while (n_seg < target) {
+        par_for(threads, (int64_t)n_seg, split_seg, &b);
+        size_t k = 0;
+        for (size_t i = 0; i < 2 * n_seg; i++)
+            if (b.next[i].hi - b.next[i].lo > 1)
+                b.cur[k++] = b.next[i]; /* 0 or 1 photon: done */
+        n_seg = k;
+        if (n_seg == 0)
+            break;
+    }
+    par_for(threads, (int64_t)n_seg, finish_seg, &b);
+    iris_free(b.cur);
+    iris_free(b.next);
+    return true;
+}
+
 static uint64_t quantise(double x, double lo, double step)
 {
     double q = step > 0.0 ? (x - lo) / step : 0.0;
@@ -197,6 +290,12 @@ static void robust_box(const struct pstore_raw *raw, size_t n, double lo[3],
 enum iris_status pstore_build(struct pstore *s, struct pstore_raw *raw,
                               size_t n)
 {
+    return pstore_build_mt(s, raw, n, 1);
+}
+
+enum iris_status pstore_build_mt(struct pstore *s, struct pstore_raw *raw,
+                                 size_t n, int threads)
+{
     memset(s, 0, sizeof *s);
     if (n == 0)
         return IRIS_OK;
@@ -224,7 +323,9 @@ enum iris_status pstore_build(struct pstore *s, struct pstore_raw *raw,
         s->lo[a] = mn[a];
         s->step[a] = (mx[a] - mn[a]) / QMAX;
     }
-    build_rec(raw, axes, 0, n, mn, mx);
+    if (threads <= 1 || n < PAR_MIN_PHOTONS ||
+        !build_par(raw, axes, n, mn, mx, threads))
+        build_rec(raw, axes, 0, n, mn, mx);
     for (size_t i = 0; i < n; i++) {
         const struct pstore_raw *r = &raw[i];
         uint64_t pos = quantise(r->p[0], s->lo[0], s->step[0]) |

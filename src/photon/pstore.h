@@ -72,6 +72,11 @@ IRIS_NODISCARD enum iris_status pstore_build(struct pstore *s,
                                              struct pstore_raw *raw,
                                              size_t n);
 
+/* The same, with 'threads' threads (the tree does not depend on it). */
+IRIS_NODISCARD enum iris_status pstore_build_mt(struct pstore *s,
+                                                struct pstore_raw *raw,
+                                                size_t n, int threads);
+
 void pstore_fini(struct pstore *s);
 
 #define PSTORE_WHITE 65535u

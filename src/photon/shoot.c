@@ -137,9 +137,8 @@ static double smooth(double t)
     return t * t * (3.0 - 2.0 * t);
 }
 
-static double spot_atten(const iris_light *l, vec3 origin, vec3 dir)
+double pmap_light_atten(const iris_light *l, vec3 axis, vec3 origin, vec3 dir)
 {
-    vec3 axis = v3_norm(v3_sub(l->point_at, l->location));
     if (l->kind == IRIS_LIGHT_SPOT && !l->parallel) {
         double k = v3_dot(axis, dir);
         if (k <= 0.0)
@@ -509,11 +508,10 @@ static void cell_uniform(const struct combo *c, const struct ring *rg,
     *ph = -M_PI + dphi * ((double)k_phi + v);
 }
 
-/* Emits and traces photon 'j'. */
-static void shoot_one(const struct shoot *s, int64_t j,
+/* Emits and traces photon 'j' of ring 'rg'. */
+static void shoot_one(const struct shoot *s, const struct ring *rg, int64_t j,
                       struct ptrace_out *out)
 {
-    const struct ring *rg = ring_of(s, j);
     const struct combo *c = &s->combos[rg->combo];
     int64_t local = j - rg->first;
     int64_t per = (int64_t)c->n1 * c->n2;
@@ -546,7 +544,9 @@ static void shoot_one(const struct shoot *s, int64_t j,
         o = v3_madd(o, c->axis1, (double)u / (c->n1 - 1) - 0.5);
         o = v3_madd(o, c->axis2, (double)v / (c->n2 - 1) - 0.5);
     }
-    double a = spot_atten(c->tc.light, o, d);
+    const iris_light *cl = c->tc.light;
+    double a = pmap_light_atten(cl, v3_norm(v3_sub(cl->point_at, cl->location)),
+                                o, d);
     if (a < 1e-5)
         return;
     double u = s->u0 + lambda_lattice(rg - s->rings, k_phi, k_area);
@@ -564,8 +564,14 @@ static void shoot_batch(void *ctx, int64_t item, int thread)
     int64_t lo = item * PHOTON_BATCH;
     int64_t hi = lo + PHOTON_BATCH < s->n_photons ? lo + PHOTON_BATCH
                                                   : s->n_photons;
-    for (int64_t j = lo; j < hi && !s->outs[item].failed; j++)
-        shoot_one(s, j, &s->outs[item]);
+    /* one search per batch, then the rings in order */
+    const struct ring *rg = ring_of(s, lo);
+    const struct ring *last = s->rings + s->n_rings - 1;
+    for (int64_t j = lo; j < hi && !s->outs[item].failed; j++) {
+        while (rg < last && j >= rg[1].first)
+            rg++;
+        shoot_one(s, rg, j, &s->outs[item]);
+    }
 }
 
 static void shoot_fini(struct shoot *s, int64_t n_batches)
@@ -578,10 +584,41 @@ static void shoot_fini(struct shoot *s, int64_t n_batches)
     iris_free(s->combos);
 }
 
-enum iris_status pmap_build(const iris_scene *scene, const struct pmap_world *w,
-                            const struct photon_options *opts,
-                            struct photon_map **out,
-                            struct photon_stats *stats)
+enum iris_status pmap_concat(struct ptrace_out *outs, int64_t n,
+                             struct pstore_raw **all, size_t *total)
+{
+    enum iris_status rc = IRIS_OK;
+    size_t sum = 0;
+    for (int64_t b = 0; b < n; b++) {
+        if (outs[b].failed)
+            rc = IRIS_ENOMEM;
+        sum += outs[b].n;
+    }
+    struct pstore_raw *a = NULL;
+    if (rc == IRIS_OK && sum > 0) {
+        a = iris_malloc(sum * sizeof *a);
+        if (!a)
+            rc = IRIS_ENOMEM;
+    }
+    size_t at = 0;
+    for (int64_t b = 0; b < n; b++) {
+        if (a && outs[b].n)
+            memcpy(a + at, outs[b].ph, outs[b].n * sizeof *a);
+        at += outs[b].n;
+        iris_free(outs[b].ph);
+        outs[b].ph = NULL;
+    }
+    *all = a;
+    *total = rc == IRIS_OK ? sum : 0;
+    return rc;
+}
+
+/* The caustic map (see the DESIGN note at the top). */
+static enum iris_status build_caustic(const iris_scene *scene,
+                                      const struct pmap_world *w,
+                                      const struct photon_options *opts,
+                                      struct photon_map **out,
+                                      struct photon_stats *stats)
 {
     struct photon_stats st;
     memset(&st, 0, sizeof st);
@@ -625,25 +662,9 @@ enum iris_status pmap_build(const iris_scene *scene, const struct pmap_world *w,
 
     /* Concatenate the batches in order */
     size_t total = 0;
-    for (int64_t b = 0; rc == IRIS_OK && b < n_batches; b++) {
-        if (s.outs[b].failed)
-            rc = IRIS_ENOMEM;
-        total += s.outs[b].n;
-    }
     struct pstore_raw *all = NULL;
-    if (rc == IRIS_OK && total > 0) {
-        all = iris_calloc(total, sizeof *all);
-        if (!all)
-            rc = IRIS_ENOMEM;
-    }
-    size_t at = 0;
-    for (int64_t b = 0; rc == IRIS_OK && b < n_batches; b++) {
-        if (s.outs[b].n)
-            memcpy(all + at, s.outs[b].ph, s.outs[b].n * sizeof *all);
-        at += s.outs[b].n;
-        iris_free(s.outs[b].ph);
-        s.outs[b].ph = NULL;
-    }
+    if (rc == IRIS_OK)
+        rc = pmap_concat(s.outs, n_batches, &all, &total);
     st.shot = s.n_photons;
     st.n_combos = s.n_combos;
     shoot_fini(&s, n_batches);
@@ -656,7 +677,7 @@ enum iris_status pmap_build(const iris_scene *scene, const struct pmap_world *w,
             rc = IRIS_ENOMEM;
     }
     if (rc == IRIS_OK)
-        rc = pstore_build(&m->store, all, total);
+        rc = pstore_build_mt(&m->store, all, total, opts->threads);
     iris_free(all);
     if (rc != IRIS_OK) {
         photon_map_destroy(m);
@@ -671,8 +692,10 @@ enum iris_status pmap_build(const iris_scene *scene, const struct pmap_world *w,
     m->cone_k = 1.0;
     pmap_white_matrix(m->white);
     double rmul = ps->radius_mul > 0.0 ? ps->radius_mul : 1.0;
-    m->radius = ps->radius > 0.0 ? ps->radius
-                                 : pmap_auto_radius(&m->store, m->gather_max);
+    m->radius = ps->radius > 0.0
+                    ? ps->radius
+                    : pmap_auto_radius_mt(&m->store, m->gather_max,
+                                          opts->threads);
     m->radius *= rmul;
     /* The progressive schedule shrinks the estimate radius, not the
     ** search radius (estimate.c) */
@@ -682,6 +705,43 @@ enum iris_status pmap_build(const iris_scene *scene, const struct pmap_world *w,
     st.gather_radius = m->radius;
     st.seconds_shoot = t1 - t0;
     st.seconds_build = par_now() - t1;
+    if (stats)
+        *stats = st;
+    *out = m;
+    return IRIS_OK;
+}
+
+/*
+** The caustic map and, with radiosity{}, the global map (global.c), which
+** hangs off the caustic one (an empty caustic map when the scene has no
+** photons{} block).
+*/
+enum iris_status pmap_build(const iris_scene *scene, const struct pmap_world *w,
+                            const struct photon_options *opts,
+                            struct photon_map **out,
+                            struct photon_stats *stats)
+{
+    struct photon_stats st;
+    memset(&st, 0, sizeof st);
+    struct photon_map *m = NULL, *g = NULL;
+    enum iris_status rc = build_caustic(scene, w, opts, &m, &st);
+    if (rc == IRIS_OK)
+        rc = pmap_build_global(scene, w, opts, &g, &st);
+    if (rc == IRIS_OK && g && !m) {
+        m = iris_calloc(1, sizeof *m);
+        if (!m)
+            rc = IRIS_ENOMEM;
+        else
+            m->scene = scene;
+    }
+    if (rc != IRIS_OK) {
+        photon_map_destroy(g);
+        photon_map_destroy(m);
+        *out = NULL;
+        return rc;
+    }
+    if (m)
+        m->global = g;
     if (stats)
         *stats = st;
     *out = m;

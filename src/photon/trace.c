@@ -24,6 +24,9 @@
 ** is stored as white (pstore.h): it stands for the whole spectrum, and the
 ** estimate weighs it by the spectrum's mean instead of by one wavelength's
 ** RGB weight, so scenes without dispersion get no colour noise.
+** Global photons (c->global; global.c, radiosity{}) take the same path
+** with Lambertian bounces at diffuse surfaces, by Russian roulette on the
+** albedo, and are stored from the second diffuse surface on.
 ** As in POV-Ray: photons pass through no_shadow objects (they are "shadow
 ** rays" for this purpose), but NOT through no_image objects, although
 ** POV-Ray 3.7 lets them pass (photons are launched as primary rays, so
@@ -72,6 +75,14 @@ static bool grey(const double rgb[3])
     return rgb[0] == rgb[1] && rgb[1] == rgb[2];
 }
 
+/* spec_reflectance() without the table lookup for grey colours (Burns'
+** three curves sum to 1, so grey g is the flat curve g): most filters,
+** fades and mirrors are grey, and the lookup was 5% of the shooting. */
+static double reflectance(const double rgb[3], double lambda)
+{
+    return grey(rgb) ? rgb[0] : spec_reflectance(rgb, lambda);
+}
+
 /* What a photon needs of the surface it hits. */
 struct psurf {
     double transm;             /* spectral transmittance of the layers */
@@ -79,6 +90,8 @@ struct psurf {
     const iris_finish *fin;    /* top layer finish (NULL: none) */
     vec3 n;                    /* top layer normal, facing the photon */
     double refl[3];            /* top layer reflection colour */
+    double pigment[3];         /* top layer pigment rgb (global photons'
+                                  diffuse albedo) */
     bool reflects;
     bool transm_grey;          /* the transmittance is the same at every
                                   wavelength */
@@ -102,18 +115,23 @@ static void eval_surface(const struct ptrace_combo *c, const struct hit *h,
     s->n = nf;
     s->reflects = false;
     s->transm_grey = true;
+    s->pigment[0] = s->pigment[1] = s->pigment[2] = 0.0;
     double cos_i = -v3_dot(d, nf);
     if (!c->mat) {
         iris_colour col = { 0, 0, 0, 0, 0 };
         if (h->texture && h->texture->pigment)
             col = h->texture->pigment->colour;
         double rgb[3] = { col.r, col.g, col.b };
-        s->transm = clamp01(col.f * clamp01(spec_reflectance(rgb, lambda)) +
-                            col.t);
+        double fr = col.f > 0.0 ? col.f * clamp01(reflectance(rgb, lambda))
+                                : 0.0;
+        s->transm = clamp01(fr + col.t);
         s->transm_grey = grey(rgb) || !(col.f > 0.0);
         s->opacity = 1.0 - col.f - col.t;
+        for (int k = 0; k < 3; k++)
+            s->pigment[k] = rgb[k];
         if (s->fin) {
-            double fl = pow(1.0 - cos_i, s->fin->reflection_falloff);
+            double fo = s->fin->reflection_falloff;
+            double fl = fo == 1.0 ? 1.0 - cos_i : pow(1.0 - cos_i, fo);
             s->refl[0] = fl * s->fin->reflection_max.r +
                          (1 - fl) * s->fin->reflection_min.r;
             s->refl[1] = fl * s->fin->reflection_max.g +
@@ -145,8 +163,10 @@ static void eval_surface(const struct ptrace_combo *c, const struct hit *h,
         if (!ly->valid)
             continue;
         double rgb[3] = { ly->pigment.r, ly->pigment.g, ly->pigment.b };
-        t *= clamp01(ly->pigment.f * clamp01(spec_reflectance(rgb, lambda)) +
-                     ly->pigment.t);
+        t *= clamp01(ly->pigment.f > 0.0
+                         ? ly->pigment.f * clamp01(reflectance(rgb, lambda)) +
+                               ly->pigment.t
+                         : ly->pigment.t);
         if (!grey(rgb) && ly->pigment.f > 0.0)
             s->transm_grey = false;
     }
@@ -154,6 +174,9 @@ static void eval_surface(const struct ptrace_combo *c, const struct hit *h,
     if (st->n > 0 && ev.layers[st->first].valid) {
         const struct mat_layer *top = &ev.layers[st->first];
         s->opacity = mat_opacity(c->mat, &top->pigment);
+        s->pigment[0] = top->pigment.r;
+        s->pigment[1] = top->pigment.g;
+        s->pigment[2] = top->pigment.b;
         s->fin = top->finish;
         if (v3_dot(top->n, nf) > 0.0)
             s->n = top->n;
@@ -170,7 +193,7 @@ static double fade_factor(const iris_interior *in, double d, double lambda)
         return 1.0;
     double rgb[3] = { in->fade_colour.r, in->fade_colour.g,
                       in->fade_colour.b };
-    double fc = clamp01(spec_reflectance(rgb, lambda));
+    double fc = clamp01(reflectance(rgb, lambda));
     if (in->fade_power >= 1000.0)
         return exp(-(1.0 - fc) * d / in->fade_distance);
     return fc + (1.0 - fc) /
@@ -184,13 +207,16 @@ static bool allowed(enum iris_tristate obj, enum iris_tristate light)
            (obj != IRIS_OFF && light == IRIS_ON);
 }
 
+#define PTRACE_FIRST_CAP 4096
+
 /* Stores a photon; lambda < 0 marks one whose path and power are the same
 ** at every wavelength (pstore.h: a white photon). */
 static void deposit(struct ptrace_out *out, vec3 p, double power,
                     double lambda, vec3 from)
 {
     if (out->n == out->cap) {
-        size_t cap = out->cap ? 2 * out->cap : 256;
+        /* a batch's photons mostly deposit once: start there */
+        size_t cap = out->cap ? 2 * out->cap : PTRACE_FIRST_CAP;
         struct pstore_raw *ph = iris_realloc(out->ph, cap * sizeof *ph);
         if (!ph) {
             out->failed = true;
@@ -208,6 +234,29 @@ static void deposit(struct ptrace_out *out, vec3 p, double power,
     r->dir[0] = (float)from.x;
     r->dir[1] = (float)from.y;
     r->dir[2] = (float)from.z;
+}
+
+/* POV-Ray's photon power at a point 'depth' along the path from a light
+** (shoot.c): x D^2 (not for parallel lights) and the light's fade. */
+static double landing_factor(const struct ptrace_combo *c, double depth)
+{
+    double f = c->parallel ? 1.0 : depth * depth;
+    if (c->fade_power > 0.0 && fabs(c->fade_distance) > 1e-10)
+        f *= 2.0 / (1.0 + pow(depth / c->fade_distance, c->fade_power));
+    return f;
+}
+
+/* A cosine-weighted direction about unit 'n' (Malley's method). */
+static vec3 cosine_dir(vec3 n, rng *r)
+{
+    vec3 a, b;
+    v3_basis(n, &a, &b);
+    double u = rng_uniform(r), v = rng_uniform(r);
+    double rad = sqrt(u), ph = 2.0 * M_PI * v;
+    double z = sqrt(fmax(0.0, 1.0 - u));
+    return v3_norm(v3_add(v3_scale(n, z),
+                          v3_add(v3_scale(a, rad * cos(ph)),
+                                 v3_scale(b, rad * sin(ph)))));
 }
 
 /* The index of the medium at the top of the stack (1 = atmosphere). */
@@ -234,7 +283,10 @@ void ptrace_photon(const struct pmap_world *w, const struct ptrace_combo *c,
     ** skip the wall's far side. A world that sets no h.eps (0) keeps the
     ** global offset. */
     double tmin = w->epsilon;
-    for (int level = 1; level <= c->max_level && power > 0.0; level++) {
+    int max_level = c->global ? PTRACE_GLOBAL_MAX_LEVEL : c->max_level;
+    int n_diffuse = 0;         /* global: diffuse bounces so far */
+    bool landed = false;       /* global: D^2 and fade applied */
+    for (int level = 1; level <= max_level && power > 0.0; level++) {
         ray ry = { o, d };
         h.eps = 0.0;
         if (!w->intersect(w->ctx, &ry, tmin, INFINITY, ACCEL_SKIP_NO_SHADOW,
@@ -253,8 +305,8 @@ void ptrace_photon(const struct pmap_world *w, const struct ptrace_combo *c,
         }
         const iris_object *obj = h.obj;
         /* The first surface must belong to the target */
-        if (level == 1 && h.top != c->target && obj != c->target &&
-            !obj->photon_pass_through)
+        if (!c->global && level == 1 && h.top != c->target &&
+            obj != c->target && !obj->photon_pass_through)
             return;
         bool entering = v3_dot(d, h.n) < 0.0;
         vec3 nf = entering ? h.n : v3_neg(h.n); /* facing the photon */
@@ -262,14 +314,27 @@ void ptrace_photon(const struct pmap_world *w, const struct ptrace_combo *c,
         eval_surface(c, &h, d, nf, lambda, r, &sf);
         const iris_finish *fin = sf.fin;
 
+        /* Global photons: the light's power lands where the photon first
+        ** meets a diffuse surface (as a caustic photon's would); stored
+        ** from the second diffuse surface on (direct light and caustics
+        ** are the light loop's and the caustic map's) */
+        bool diffusive = fin && fin->diffuse > 0.0 && sf.opacity > 0.0;
+        if (c->global && diffusive) {
+            if (!landed)
+                power *= landing_factor(c, depth);
+            landed = true;
+            if (n_diffuse > 0) {
+                /* the direction field holds the surface normal on the
+                ** photon's side: the global estimate is Lambertian and
+                ** needs only which surface the photon lit (global.c) */
+                deposit(out, h.p, power, chroma ? lambda : -1.0, nf);
+                if (out->failed)
+                    return;
+            }
+        }
         /* Store caustic photons (after at least one bounce) */
-        if (level > 1 && obj->photon_collect && fin && fin->diffuse > 0.0 &&
-            sf.opacity > 0.0) {
-            double p = power;
-            if (!c->parallel)
-                p *= depth * depth;
-            if (c->fade_power > 0.0 && fabs(c->fade_distance) > 1e-10)
-                p *= 2.0 / (1.0 + pow(depth / c->fade_distance, c->fade_power));
+        if (!c->global && level > 1 && obj->photon_collect && diffusive) {
+            double p = power * landing_factor(c, depth);
             deposit(out, h.p, p, chroma ? lambda : -1.0, v3_neg(d));
             if (out->failed)
                 return;
@@ -283,13 +348,34 @@ void ptrace_photon(const struct pmap_world *w, const struct ptrace_combo *c,
             o = h.p;
             continue;
         }
+        vec3 n_geom = nf;
         nf = sf.n; /* the perturbed normal bends and mirrors */
         double cos_i = -v3_dot(d, nf);
-        bool refl_ok = allowed(obj->photon_reflection,
-                               c->light->photon_reflection);
-        bool refr_ok = allowed(obj->photon_refraction,
-                               c->light->photon_refraction) &&
+        bool refl_ok = c->global || allowed(obj->photon_reflection,
+                                            c->light->photon_reflection);
+        bool refr_ok = (c->global || allowed(obj->photon_refraction,
+                                             c->light->photon_refraction)) &&
                        h.interior && transm > 0.0;
+        if (c->global && diffusive) {
+            /* Lambertian bounce with probability = the albedo at lambda,
+            ** POV-Ray's diffuse x pigment x opacity; otherwise the specular
+            ** events below, their power divided by the probability of
+            ** getting there, so that diffuse and specular light add as in
+            ** POV-Ray's finish. About the geometric normal: a perturbed
+            ** one would send photons into the surface. */
+            double p_d = clamp01(fin->diffuse * sf.opacity *
+                                 clamp01(reflectance(sf.pigment, lambda)));
+            chroma = chroma || !grey(sf.pigment);
+            if (rng_uniform(r) < p_d) {
+                n_diffuse++;
+                d = cosine_dir(n_geom, r);
+                o = h.p;
+                continue;
+            }
+            if (!(p_d < 0.999) || !(refr_ok || (refl_ok && sf.reflects)))
+                return;
+            power /= 1.0 - p_d;
+        }
         double u = rng_uniform(r);
         if (refr_ok) {
             /* Indices on both sides from the interior stack (§1.2) */
@@ -353,7 +439,7 @@ void ptrace_photon(const struct pmap_world *w, const struct ptrace_combo *c,
         } else if (refl_ok && sf.reflects) {
             /* A mirror: POV-Ray's reflection colour (falloff, metallic),
             ** as a spectral reflectivity taken by Russian roulette */
-            double p = clamp01(spec_reflectance(sf.refl, lambda));
+            double p = clamp01(reflectance(sf.refl, lambda));
             chroma = chroma || !grey(sf.refl);
             if (!(u < p))
                 return;

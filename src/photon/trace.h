@@ -20,6 +20,13 @@ struct ptrace_combo {
     double fade_distance, fade_power; /* the light's fade */
     int max_level;             /* photon max_trace_level */
     bool chromatic;            /* the light's emission varies with lambda */
+    bool global;               /* a global-map photon (global.c): any first
+                                  hit, physical specular transport whatever
+                                  the photon flags, Lambertian bounces by
+                                  Russian roulette, stored after >= 1
+                                  diffuse bounce; the D^2 and fade factors
+                                  are applied where it first lands on a
+                                  diffuse surface */
     const struct mat_ctx *mat; /* NULL: solid pigments (tests) */
     int n_stack;               /* interiors containing the light */
     const iris_object *stack[PTRACE_MAX_STACK];
@@ -31,6 +38,10 @@ struct ptrace_out {
     size_t n, cap;
     bool failed;               /* an allocation failed */
 };
+
+/* The level cap of a global photon: diffuse bounces end by Russian
+** roulette on the albedo, this only guards an albedo-1 closed scene. */
+#define PTRACE_GLOBAL_MAX_LEVEL 100
 
 /*
 ** Traces one photon from 'o' along unit 'd' at 'lambda' with power

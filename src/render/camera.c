@@ -128,6 +128,13 @@ static bool angular_ray(const iris_camera *cam, double u, double v, ray *r)
 bool camera_ray(const iris_camera *cam, int width, int height, double x,
                 double y, ray *r)
 {
+    vec3 raw;
+    return camera_ray_raw(cam, width, height, x, y, r, &raw);
+}
+
+bool camera_ray_raw(const iris_camera *cam, int width, int height, double x,
+                    double y, ray *r, vec3 *raw)
+{
     double w = width > 0 ? width : 1, h = height > 0 ? height : 1;
     /* POV-Ray shifts to the pixel's corner first, then maps to [-.5, .5]. */
     x += 0.5;
@@ -173,7 +180,10 @@ bool camera_ray(const iris_camera *cam, int width, int height, double x,
     case IRIS_CAM_CYLINDER:
     case IRIS_CAM_OMNIMAX:
     case IRIS_CAM_SPHERICAL:
-        return angular_ray(cam, x / w, ((h - 1) - y) / h, r);
+        if (!angular_ray(cam, x / w, ((h - 1) - y) / h, r))
+            return false;
+        *raw = r->d;
+        return true;
     default: /* perspective */
         d = v3_add(v3_add(cam->direction, v3_scale(cam->right, x0)),
                    v3_scale(cam->up, y0));
@@ -182,6 +192,7 @@ bool camera_ray(const iris_camera *cam, int width, int height, double x,
     double len = v3_len(d);
     if (!(len > 0) || !isfinite(len))
         return false;
+    *raw = d;
     r->d = v3_scale(d, 1.0 / len);
     return true;
 }

@@ -25,4 +25,10 @@
 bool camera_ray(const iris_camera *cam, int width, int height, double x,
                 double y, ray *r);
 
+/* camera_ray() that also gives the direction before normalisation (for
+** the perspective camera D + x0 R + y0 U), which focal blur scales to
+** the focal plane as POV-Ray does. */
+bool camera_ray_raw(const iris_camera *cam, int width, int height, double x,
+                    double y, ray *r, vec3 *raw);
+
 #endif

@@ -21,11 +21,17 @@
 
 #include "render/camera.h"
 #include "render/eyepass.h"
+#include "render/eyespectrum.h"
+#include "render/focalblur.h"
 #include "render/jitter.h"
 #include "util/mem.h"
 #include "util/thread.h"
 
 #define TILE 32
+
+/* A sample's channels: linear r, g, b, then POV-Ray's transmit channel
+** (what the sample saw of the background; alpha = 1 - it under +UA). */
+#define NCH 4
 
 /* ------------------------------------------------------------------ */
 /* Sampling                                                             */
@@ -38,10 +44,13 @@ struct job {
     struct trace_ctx *ctx;     /* one per thread */
     struct interior_stack cam_stack;
     bool ortho;
+    bool blur;                 /* focal blur (fb) */
+    struct focal_blur fb;
     iris_image *out;
     int x0, y0, x1, y1;        /* render window, inclusive, 0-based */
     int tiles_x, tiles_y;
-    double aa_threshold, aa_gamma, jitter;
+    double aa_threshold, jitter;
+    struct eye_aa_gamma gam;   /* the AA comparison's gamma */
     int aa_depth;
     enum iris_aa_method aa;
     atomic_ullong nan_count;
@@ -58,11 +67,16 @@ static uint64_t pos_key(double x, double y)
     return ((uint64_t)ix << 32) ^ (uint64_t)iy ^ ((uint64_t)iy << 17);
 }
 
-/* Traces the camera ray through image point (x, y). */
-static void trace_sample(struct job *j, struct trace_ctx *c, double x,
-                         double y, double rgb[3])
+/* Traces one camera ray through image point (x, y): the pinhole ray, or
+** with focal blur blur ray 'nr' of the sample at (bx, by). Returns whether
+** it split into wavelengths (then rgb may lie outside the sRGB gamut). */
+static bool trace_one(struct job *j, struct trace_ctx *c, double x,
+                      double y, int nr, double bx, double by, double rgb[NCH])
 {
-    rng_seed(&c->rng, j->opts->seed, 1, pos_key(x, y));
+    /* blur rays of one sample may share an image position: their streams
+    ** are told apart by the ray number */
+    rng_seed(&c->rng, j->opts->seed, 1,
+             pos_key(x, y) ^ ((uint64_t)nr * 0x9e3779b97f4a7c15u));
     /* Only the used part of the interior stack is set: clearing and
     ** copying the whole struct cost more than a simple scene's shading. */
     struct tray r;
@@ -70,10 +84,18 @@ static void trace_sample(struct job *j, struct trace_ctx *c, double x,
     r.lambda = 0.0;
     r.tmin = 0.0;
     rgb[0] = rgb[1] = rgb[2] = 0.0;
-    if (!camera_ray(&j->scene->camera, j->opts->width, j->opts->height, x, y,
-                    &r.r))
-        return;
-    if (j->ortho) {
+    rgb[3] = 1.0;              /* no ray: transparent, as POV-Ray has it */
+    c->spectral = false;
+    vec3 raw;
+    if (!camera_ray_raw(&j->scene->camera, j->opts->width, j->opts->height,
+                        x, y, &r.r, &raw))
+        return false;
+    if (j->blur) {
+        focal_blur_ray(&j->fb, &j->scene->camera, bx, by, nr, raw, &r.r);
+        /* the aperture moves the origin: which interiors hold it is
+        ** asked again, as POV-Ray does for blurred rays */
+        trace_containing(j->tracer, r.r.o, &r.st);
+    } else if (j->ortho) {
         trace_containing(j->tracer, r.r.o, &r.st);
     } else {
         r.st.n = j->cam_stack.n;
@@ -82,28 +104,109 @@ static void trace_sample(struct job *j, struct trace_ctx *c, double x,
     }
     c->level = 0;
     trace_ray(c, &r, 1.0, false, rgb);
-    for (int k = 0; k < 3; k++)
+    rgb[3] = c->transm;
+    for (int k = 0; k < NCH; k++)
         if (!isfinite(rgb[k])) {
-            rgb[0] = rgb[1] = rgb[2] = 0.0;
+            rgb[0] = rgb[1] = rgb[2] = rgb[3] = 0.0;
             atomic_fetch_add(&j->nan_count, 1);
             break;
         }
+    return c->spectral;
+}
+
+/* The image sample at (x, y): one pinhole ray, or POV-Ray's focal blur
+** loop (focalblur.h): batches of blur rays, each at its own sub-pixel
+** position, until the confidence test passes or blur_samples are in. */
+static bool trace_sample(struct job *j, struct trace_ctx *c, double x,
+                         double y, double rgb[NCH])
+{
+    if (!j->blur)
+        return trace_one(j, c, x, y, 0, x, y, rgb);
+    const struct focal_blur *fb = &j->fb;
+    int seed = focal_blur_seed(x, y);
+    double sum[NCH] = { 0, 0, 0, 0 }, s2[3] = { 0, 0, 0 };
+    int nr = 0, level = 0;
+    bool spectral = false;
+    do {
+        int batch = 4;
+        if (fb->batches && fb->batches[level] > 0)
+            batch = fb->batches[level++];
+        for (int i = 0; i < batch && nr < fb->samples; i++, nr++) {
+            double dx, dy, col[NCH];
+            focal_blur_subpixel(seed, nr, &dx, &dy);
+            spectral |= trace_one(j, c, x + dx, y + dy, nr, x + dx, y + dy,
+                                  col);
+            for (int k = 0; k < NCH; k++)
+                sum[k] += col[k];
+            for (int k = 0; k < 3; k++)
+                s2[k] += col[k] * col[k];
+        }
+    } while (!focal_blur_converged(fb, nr, sum, s2) && nr < fb->samples);
+    for (int k = 0; k < NCH; k++)
+        rgb[k] = sum[k] / nr;
+    return spectral;
 }
 
 /* A traced sample of the AA buffers: its colour and, once, the colour the
 ** AA threshold compares (gamma-adjusted, §4.1), so that the pow() calls
 ** are not repeated at every comparison. */
 struct px {
-    double c[3];
+    double c[NCH];
     double g[3];               /* c^(1/aa_gamma), see px_gamma */
+    double gerr;               /* bound on sum |g - exact g|, 0: exact */
     bool done;                 /* already supersampled (or not allowed) */
+    bool spectral;             /* a sample split into wavelengths */
 };
 
+void eye_aa_gamma_init(struct eye_aa_gamma *a, double aa_gamma)
+{
+    a->e = aa_gamma > 0 ? 1.0 / aa_gamma : 1.0;
+    a->ef = (float)a->e;
+    /* powf is within 1 ulp (2^-23 relative, glibc's documents 0.82);
+    ** rounding the input to float adds e * 2^-24, rounding the exponent
+    ** |e - ef| |ln v| with |ln v| <= 14 on [1e-6, 1e6]. Doubled for the
+    ** rounding of the sums that use the bound. With e <= 4, v^e stays in
+    ** float's normal range there. */
+    a->fast = a->e != 1.0 && a->e > 0.0 && a->e <= 4.0;
+    a->rel = 2.0 * (a->e * 0x1p-24 + fabs(a->e - (double)a->ef) * 14.0 +
+                    0x1p-23);
+}
+
+double eye_aa_gamma_apply(const struct eye_aa_gamma *a, const double c[3],
+                          double g[3])
+{
+    double err = 0.0;
+    for (int k = 0; k < 3; k++) {
+        double v = c[k] > 0.0 ? c[k] : 0.0; /* fmax(c, 0): no call */
+        if (a->e == 1.0 || (v == 0.0 && a->e > 0.0)) {
+            g[k] = v;            /* pow(v, 1) = v, pow(0, e > 0) = 0 */
+        } else if (a->fast && v >= 1e-6 && v <= 1e6) {
+            g[k] = powf((float)v, a->ef);
+            err += g[k] * a->rel;
+        } else {
+            g[k] = pow(v, a->e);
+        }
+    }
+    return err;
+}
+
+/* The gamma-adjusted colour, fast (with an error bound) or exact. The
+** fast one costs half of pow(); aa_differs() redoes it exactly when the
+** bound does not settle the threshold test, so the AA decisions, and the
+** image, are those of pow() (2.5: 3 pow() per sample were 5% of render
+** time). */
 static void px_gamma(const struct job *j, struct px *p)
 {
-    double g = j->aa_gamma > 0 ? 1.0 / j->aa_gamma : 1.0;
+    p->gerr = eye_aa_gamma_apply(&j->gam, p->c, p->g);
+}
+
+static void px_gamma_exact(const struct job *j, struct px *p)
+{
+    if (p->gerr == 0.0)
+        return;
     for (int k = 0; k < 3; k++)
-        p->g[k] = g == 1.0 ? fmax(p->c[k], 0.0) : pow(fmax(p->c[k], 0.0), g);
+        p->g[k] = pow(fmax(p->c[k], 0.0), j->gam.e);
+    p->gerr = 0.0;
 }
 
 /* The difference the AA threshold is compared with. */
@@ -113,10 +216,26 @@ static double aa_distance(const struct px *a, const struct px *b)
            fabs(a->g[2] - b->g[2]);
 }
 
-/* Method 1: (centre + R x R jittered samples) / (R^2 + 1). */
-static void supersample(struct job *j, struct trace_ctx *c, double x, double y,
-                        double col[3])
+/* Whether a and b differ by the AA threshold, as with exact pow(): the
+** fast distance is off by at most a->gerr + b->gerr, so only a distance
+** that close to the threshold needs the exact values. */
+static bool aa_differs(const struct job *j, struct px *a, struct px *b)
 {
+    double d = aa_distance(a, b), e = a->gerr + b->gerr;
+    if (e > 0.0 && fabs(d - j->aa_threshold) <= e) {
+        px_gamma_exact(j, a);
+        px_gamma_exact(j, b);
+        d = aa_distance(a, b);
+    }
+    return d >= j->aa_threshold;
+}
+
+/* Method 1: (centre + R x R jittered samples) / (R^2 + 1). Returns
+** whether a sample split into wavelengths. */
+static bool supersample(struct job *j, struct trace_ctx *c, double x, double y,
+                        double col[NCH])
+{
+    bool spectral = false;
     int R = j->aa_depth;
     double step = 1.0 / R, range = 0.5 - step * 0.5;
     double js = j->jitter / R;
@@ -130,48 +249,60 @@ static void supersample(struct job *j, struct trace_ctx *c, double x, double y,
                 sx += rx * js;
                 sy += ry * js;
             }
-            double s[3];
-            trace_sample(j, c, sx, sy, s);
-            for (int k = 0; k < 3; k++)
+            double s[NCH];
+            spectral |= trace_sample(j, c, sx, sy, s);
+            for (int k = 0; k < NCH; k++)
                 col[k] += s[k];
         }
-    for (int k = 0; k < 3; k++)
+    for (int k = 0; k < NCH; k++)
         col[k] /= R * R + 1;
+    return spectral;
 }
 
 /* Stratified supersampling: R x R samples, one per jittered stratum. */
-static void stratified(struct job *j, struct trace_ctx *c, int x, int y,
-                       double col[3])
+static bool stratified(struct job *j, struct trace_ctx *c, int x, int y,
+                       double col[NCH])
 {
     int R = j->aa_depth;
-    col[0] = col[1] = col[2] = 0.0;
+    bool spectral = false;
+    col[0] = col[1] = col[2] = col[3] = 0.0;
     rng r;
     rng_seed(&r, j->opts->seed, 3, (uint64_t)y * 65536u + (uint64_t)x);
     for (int iy = 0; iy < R; iy++)
         for (int ix = 0; ix < R; ix++) {
             double ux = j->jitter > 0 ? rng_uniform(&r) : 0.5;
             double uy = j->jitter > 0 ? rng_uniform(&r) : 0.5;
-            double s[3];
-            trace_sample(j, c, x - 0.5 + (ix + ux) / R, y - 0.5 + (iy + uy) / R,
-                         s);
-            for (int k = 0; k < 3; k++)
+            double s[NCH];
+            spectral |= trace_sample(j, c, x - 0.5 + (ix + ux) / R,
+                                     y - 0.5 + (iy + uy) / R, s);
+            for (int k = 0; k < NCH; k++)
                 col[k] += s[k];
         }
-    for (int k = 0; k < 3; k++)
+    for (int k = 0; k < NCH; k++)
         col[k] /= R * R;
+    return spectral;
 }
 
-static void put_pixel(struct job *j, int x, int y, const double col[3])
+/* Writes pixel (x, y) from the mean of its samples. The samples were
+** summed unclipped; only here does the colour enter the gamut: a pixel
+** with spectral samples keeps its luminance (eye_gamut_map), an RGB one
+** has its negative channels clipped to 0 as POV-Ray does. Under +UA the
+** alpha is 1 - the mean transmit, and the colour stays premultiplied by
+** it (a transparent background contributes no colour). */
+static void put_pixel(struct job *j, int x, int y, const double in[NCH],
+                      bool spectral)
 {
     const struct tracer *t = j->tracer;
     float *px = &j->out->pixels[((size_t)y * j->out->width + x) * 4];
+    double col[3] = { in[0], in[1], in[2] };
+    if (!isfinite(col[0]) || !isfinite(col[1]) || !isfinite(col[2])) {
+        col[0] = col[1] = col[2] = 0.0;
+        atomic_fetch_add(&j->nan_count, 1);
+    }
+    if (spectral)
+        eye_gamut_map(col);
     for (int k = 0; k < 3; k++) {
-        double v = col[k];
-        if (!isfinite(v)) {
-            v = 0.0;
-            atomic_fetch_add(&j->nan_count, 1);
-        }
-        v = fmax(v, 0.0);
+        double v = fmax(col[k], 0.0);
         /* from the working gamma space to linear light (§3.9) */
         if (t->gamma_off)
             v = iris_srgb_decode(fmin(v, 1.0));
@@ -179,7 +310,8 @@ static void put_pixel(struct job *j, int x, int y, const double col[3])
             v = pow(v, t->working_gamma);
         px[k] = (float)v;
     }
-    px[3] = 1.0f;
+    double a = isfinite(in[3]) ? 1.0 - in[3] : 1.0;
+    px[3] = j->opts->alpha ? (float)fmin(fmax(a, 0.0), 1.0) : 1.0f;
 }
 
 /* The tile's pixel (x, y) in a buffer with one extra row and column on
@@ -196,26 +328,37 @@ static void tile_method1(struct job *j, struct trace_ctx *c, int tx0,
         return;
     }
     for (int x = tx0; x <= tx1; x++) {
-        trace_sample(j, c, x, ty0 - 1, TB(buf, x, ty0 - 1).c);
+        TB(buf, x, ty0 - 1).spectral =
+            trace_sample(j, c, x, ty0 - 1, TB(buf, x, ty0 - 1).c);
         px_gamma(j, &TB(buf, x, ty0 - 1));
         TB(buf, x, ty0 - 1).done = true;
     }
     for (int y = ty0; y <= ty1; y++) {
-        trace_sample(j, c, tx0 - 1, y, TB(buf, tx0 - 1, y).c);
+        TB(buf, tx0 - 1, y).spectral =
+            trace_sample(j, c, tx0 - 1, y, TB(buf, tx0 - 1, y).c);
         px_gamma(j, &TB(buf, tx0 - 1, y));
         TB(buf, tx0 - 1, y).done = true;
         for (int x = tx0; x <= tx1; x++) {
             struct px *cur = &TB(buf, x, y), *left = &TB(buf, x - 1, y),
                       *top = &TB(buf, x, y - 1);
-            trace_sample(j, c, x, y, cur->c);
+            cur->spectral = trace_sample(j, c, x, y, cur->c);
             px_gamma(j, cur);
-            bool ldiff = aa_distance(left, cur) >= j->aa_threshold;
-            bool tdiff = aa_distance(top, cur) >= j->aa_threshold;
+            bool ldiff = aa_differs(j, left, cur);
+            bool tdiff = aa_differs(j, top, cur);
             bool sl = !left->done && ldiff, st = !top->done && tdiff;
             bool sc = ldiff || tdiff;
-            if (sl) { supersample(j, c, x - 1, y, left->c); px_gamma(j, left); }
-            if (st) { supersample(j, c, x, y - 1, top->c); px_gamma(j, top); }
-            if (sc) { supersample(j, c, x, y, cur->c); px_gamma(j, cur); }
+            if (sl) {
+                left->spectral |= supersample(j, c, x - 1, y, left->c);
+                px_gamma(j, left);
+            }
+            if (st) {
+                top->spectral |= supersample(j, c, x, y - 1, top->c);
+                px_gamma(j, top);
+            }
+            if (sc) {
+                cur->spectral |= supersample(j, c, x, y, cur->c);
+                px_gamma(j, cur);
+            }
             if (sl) left->done = true;
             if (st) top->done = true;
             if (sc) cur->done = true;
@@ -223,7 +366,7 @@ static void tile_method1(struct job *j, struct trace_ctx *c, int tx0,
     }
     for (int y = ty0; y <= ty1; y++)
         for (int x = tx0; x <= tx1; x++)
-            put_pixel(j, x, y, TB(buf, x, y).c);
+            put_pixel(j, x, y, TB(buf, x, y).c, TB(buf, x, y).spectral);
     iris_free(buf);
 }
 
@@ -241,17 +384,16 @@ static struct px *sd_at(struct subdiv *b, int x, int y)
 /* POV-Ray's SubdivideOnePixel. */
 static void subdivide(struct job *j, struct trace_ctx *c, double x, double y,
                       double d, int bx, int by, int bstep, struct subdiv *b,
-                      double res[3], int level, double js)
+                      double res[NCH], int level, double js)
 {
     struct px *c00 = sd_at(b, bx, by), *c02 = sd_at(b, bx, by + bstep),
               *c20 = sd_at(b, bx + bstep, by),
               *c22 = sd_at(b, bx + bstep, by + bstep);
     int h = bstep / 2;
-    double thr = j->aa_threshold;
     if (level > 0 && h > 0 &&
-        (aa_distance(c00, c02) >= thr || aa_distance(c00, c20) >= thr ||
-         aa_distance(c00, c22) >= thr || aa_distance(c02, c20) >= thr ||
-         aa_distance(c02, c22) >= thr || aa_distance(c20, c22) >= thr)) {
+        (aa_differs(j, c00, c02) || aa_differs(j, c00, c20) ||
+         aa_differs(j, c00, c22) || aa_differs(j, c02, c20) ||
+         aa_differs(j, c02, c22) || aa_differs(j, c20, c22))) {
         const struct { int bx, by; double dx, dy; } mids[5] = {
             { bx, by + h, -d, 0 }, { bx + h, by, 0, -d },
             { bx + bstep, by + h, d, 0 }, { bx + h, by + bstep, 0, d },
@@ -267,11 +409,11 @@ static void subdivide(struct job *j, struct trace_ctx *c, double x, double y,
                 sx += rx * js;
                 sy += ry * js;
             }
-            trace_sample(j, c, sx, sy, p->c);
+            p->spectral = trace_sample(j, c, sx, sy, p->c);
             px_gamma(j, p);
             p->done = true;
         }
-        double d2 = d * 0.5, r[4][3];
+        double d2 = d * 0.5, r[4][NCH];
         subdivide(j, c, x - d2, y - d2, d2, bx, by, h, b, r[0], level - 1, js);
         subdivide(j, c, x - d2, y + d2, d2, bx, by + h, h, b, r[1], level - 1,
                   js);
@@ -279,10 +421,10 @@ static void subdivide(struct job *j, struct trace_ctx *c, double x, double y,
                   js);
         subdivide(j, c, x + d2, y + d2, d2, bx + h, by + h, h, b, r[3],
                   level - 1, js);
-        for (int k = 0; k < 3; k++)
+        for (int k = 0; k < NCH; k++)
             res[k] = (r[0][k] + r[1][k] + r[2][k] + r[3][k]) / 4.0;
     } else {
-        for (int k = 0; k < 3; k++)
+        for (int k = 0; k < NCH; k++)
             res[k] = (c00->c[k] + c02->c[k] + c20->c[k] + c22->c[k]) / 4.0;
     }
 }
@@ -305,7 +447,7 @@ static void tile_method2(struct job *j, struct trace_ctx *c, int tx0,
     for (int y = ty0; y <= ty1 + 1; y++)
         for (int x = tx0; x <= tx1 + 1; x++) {
             struct px *p = &corners[(y - ty0) * (tw + 1) + (x - tx0)];
-            trace_sample(j, c, x - 0.5, y - 0.5, p->c);
+            p->spectral = trace_sample(j, c, x - 0.5, y - 0.5, p->c);
             px_gamma(j, p);
         }
     double js = j->jitter / (double)(sub + 1);
@@ -319,9 +461,14 @@ static void tile_method2(struct job *j, struct trace_ctx *c, int tx0,
                 corners[(y - ty0 + 1) * (tw + 1) + (x - tx0 + 1)];
             sd_at(&b, 0, 0)->done = sd_at(&b, 0, sub)->done =
                 sd_at(&b, sub, 0)->done = sd_at(&b, sub, sub)->done = true;
-            double col[3];
+            double col[NCH];
             subdivide(j, c, x, y, 0.5, 0, 0, sub, &b, col, R - 1, js);
-            put_pixel(j, x, y, col);
+            /* the buffer holds the samples this pixel used (the rest
+            ** were cleared) */
+            bool spectral = false;
+            for (int i = 0; i < b.size * b.size; i++)
+                spectral |= b.s[i].spectral;
+            put_pixel(j, x, y, col, spectral);
         }
     iris_free(corners);
     iris_free(b.s);
@@ -350,12 +497,11 @@ static void run_tile(void *ctx, int64_t item, int thread)
     default:
         for (int y = y0; y <= y1; y++)
             for (int x = x0; x <= x1; x++) {
-                double col[3];
-                if (j->aa == IRIS_AA_STRATIFIED)
-                    stratified(j, c, x, y, col);
-                else
-                    trace_sample(j, c, x, y, col);
-                put_pixel(j, x, y, col);
+                double col[NCH];
+                bool spectral = j->aa == IRIS_AA_STRATIFIED
+                                    ? stratified(j, c, x, y, col)
+                                    : trace_sample(j, c, x, y, col);
+                put_pixel(j, x, y, col, spectral);
             }
         break;
     }
@@ -395,16 +541,22 @@ enum iris_status eyepass_run(const struct tracer *tr,
     j.aa = opts->aa;
     j.aa_depth = opts->aa_depth < 1 ? 1 : opts->aa_depth > 9 ? 9 : opts->aa_depth;
     j.aa_threshold = opts->aa_threshold;
-    j.aa_gamma = opts->aa_gamma;
+    eye_aa_gamma_init(&j.gam, opts->aa_gamma);
     /* POV-Ray clips the jitter amount to [0, 1] */
     j.jitter = opts->jitter ? fmin(fmax(opts->jitter_amount, 0.0), 1.0) : 0.0;
     j.ortho = scene->camera.kind == IRIS_CAM_ORTHOGRAPHIC;
     if (threads < 1)
         threads = 1;
     trace_containing(tr, scene->camera.location, &j.cam_stack);
-    j.ctx = iris_calloc((size_t)threads, sizeof *j.ctx);
-    if (!j.ctx)
+    j.blur = focal_blur_wanted(&scene->camera);
+    if (j.blur && !focal_blur_init(&j.fb, &scene->camera))
         return IRIS_ENOMEM;
+    j.ctx = iris_calloc((size_t)threads, sizeof *j.ctx);
+    if (!j.ctx) {
+        if (j.blur)
+            focal_blur_fini(&j.fb);
+        return IRIS_ENOMEM;
+    }
     enum iris_status st = IRIS_OK;
     int n_ctx = 0;
     for (; n_ctx < threads; n_ctx++)
@@ -436,5 +588,7 @@ enum iris_status eyepass_run(const struct tracer *tr,
     for (int i = 0; i < n_ctx; i++)
         trace_ctx_fini(&j.ctx[i]);
     iris_free(j.ctx);
+    if (j.blur)
+        focal_blur_fini(&j.fb);
     return st;
 }

@@ -23,4 +23,21 @@ enum iris_status eyepass_run(const struct tracer *tr,
                              const iris_render_options *opts, int threads,
                              iris_image *out, iris_render_stats *stats);
 
+/*
+** The colour POV-Ray's AA threshold compares: each channel, clipped at 0,
+** to the power e = 1/aa_gamma (§4.1). eye_aa_gamma_apply() writes it to
+** 'g' and returns a bound on sum |g - pow(c, e)|: 0 where it used pow()
+** (or e is 1), else at most g * rel per channel from a float powf().
+** The eye pass uses the bound to redo the rare comparisons it could flip.
+*/
+struct eye_aa_gamma {
+    double e;                  /* 1 / aa_gamma */
+    float ef;                  /* e rounded to float */
+    double rel;                /* relative error bound of the fast path */
+    bool fast;                 /* e allows the float path */
+};
+void eye_aa_gamma_init(struct eye_aa_gamma *a, double aa_gamma);
+double eye_aa_gamma_apply(const struct eye_aa_gamma *a, const double c[3],
+                          double g[3]);
+
 #endif

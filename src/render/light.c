@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "render/light.h"
+#include "render/query.h"
 
 #define LIGHT_EPSILON 1e-10
 
@@ -124,4 +125,18 @@ vec3 light_area_offset(const struct rlight *l, vec3 a1, vec3 a2, double u,
     if (l->size2 > 1)
         o = v3_madd(o, a2, v / (double)(l->size2 - 1) - 0.5);
     return o;
+}
+
+bool light_through(const struct rlight *l, vec3 p, double tmin, vec3 L,
+                   double *depth)
+{
+    if (!l->through)
+        return true;
+    ray r = { p, L };
+    struct hit h;
+    if (!l->through->intersect(l->through->impl, &r, tmin, *depth, 0, &h) ||
+        !(h.t < *depth))
+        return false;
+    *depth = h.t;
+    return true;
 }

@@ -14,6 +14,8 @@
 #include "iris/scene.h"
 #include "math/vec3.h"
 
+struct rquery;
+
 /* A light prepared for shading: POV-Ray's derived quantities. */
 struct rlight {
     const iris_light *src;
@@ -26,6 +28,9 @@ struct rlight {
     bool spot, cylinder, parallel, area, fill;
     vec3 axis1, axis2;
     int size1, size2;
+    /* projected_through: a query on that object alone (render.c builds
+    ** it), NULL for a light without one */
+    const struct rquery *through;
 };
 
 /* Fills 'out' from 'l'. */
@@ -56,5 +61,17 @@ double light_smoothstep(double low, double high, double pos);
 */
 vec3 light_area_offset(const struct rlight *l, vec3 a1, vec3 a2, double u,
                        double v);
+
+/*
+** POV-Ray's projected_through test (TracePointLightShadowRay): a light
+** with a projected_through object reaches 'p' only if the ray from 'p'
+** along 'L' meets that object (beyond 'tmin') before the light, at
+** '*depth'. Returns false when it does not (the light is black there);
+** else true, with '*depth' cut to the object's hit, since only objects
+** between 'p' and the projecting object can cast shadows. A light
+** without one returns true and leaves '*depth'.
+*/
+bool light_through(const struct rlight *l, vec3 p, double tmin, vec3 L,
+                   double *depth);
 
 #endif

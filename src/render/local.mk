@@ -3,6 +3,9 @@ libiris_core_la_SOURCES += %reldir%/render.c \
 	%reldir%/camera.c %reldir%/camera.h %reldir%/light.c %reldir%/light.h \
 	%reldir%/query.h %reldir%/trace.c %reldir%/trace.h \
 	%reldir%/plan.c %reldir%/plan.h %reldir%/eyepass.c %reldir%/eyepass.h \
-	%reldir%/jitter.c %reldir%/jitter.h
+	%reldir%/jitter.c %reldir%/jitter.h \
+	%reldir%/eyespectrum.c %reldir%/eyespectrum.h \
+	%reldir%/focalblur.c %reldir%/focalblur.h \
+	%reldir%/check_ior.c %reldir%/check_ior.h
 libiris_core_la_SOURCES += %reldir%/progressive.c %reldir%/progressive.h
 libiris_core_la_SOURCES += %reldir%/mpi_passes.c %reldir%/mpi_passes.h

@@ -85,14 +85,19 @@ void mpi_passes_bcast_int(int *v, int n)
         MPI_Bcast(v, n, MPI_INT, 0, MPI_COMM_WORLD);
 }
 
-int mpi_passes_agree(int go_root, int failed_local)
+int mpi_passes_agree(int go_root, int failed_local, int *flag)
 {
     if (mpi_passes_size() <= 1)
         return go_root && !failed_local;
-    /* one collective: the largest of "rank 0 says stop" and "failed" */
-    int mine[2] = { mpi_passes_rank() == 0 ? !go_root : 0, !!failed_local };
-    int all[2] = { 0, 0 };
-    MPI_Allreduce(mine, all, 2, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+    /* one collective: the largest of "rank 0 says stop", "failed" and
+    ** rank 0's flag (the others contribute 0) */
+    int root = mpi_passes_rank() == 0;
+    int mine[3] = { root ? !go_root : 0, !!failed_local,
+                    root && flag ? !!*flag : 0 };
+    int all[3] = { 0, 0, 0 };
+    MPI_Allreduce(mine, all, 3, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+    if (flag)
+        *flag = all[2];
     return !all[0] && !all[1];
 }
 
@@ -124,6 +129,29 @@ void mpi_passes_reduce(double *sum, size_t n, int *passes,
     }
 }
 
+void mpi_passes_snapshot(const double *sum, double *total, size_t n,
+                         int passes, uint64_t photons, int *tot_passes,
+                         uint64_t *tot_photons)
+{
+    int root = mpi_passes_rank() == 0;
+    if (mpi_passes_size() <= 1) {
+        for (size_t i = 0; root && i < n; i++)
+            total[i] = sum[i];
+        *tot_passes = passes;
+        *tot_photons = photons;
+        return;
+    }
+    const size_t chunk = (size_t)(INT_MAX / 2);
+    for (size_t off = 0; off < n; off += chunk) {
+        int c = (int)(n - off < chunk ? n - off : chunk);
+        MPI_Reduce(sum + off, root ? total + off : NULL, c, MPI_DOUBLE,
+                   MPI_SUM, 0, MPI_COMM_WORLD);
+    }
+    MPI_Reduce(&passes, tot_passes, 1, MPI_INT, MPI_SUM, 0, MPI_COMM_WORLD);
+    MPI_Reduce(&photons, tot_photons, 1, MPI_UINT64_T, MPI_SUM, 0,
+               MPI_COMM_WORLD);
+}
+
 #else /* !HAVE_MPI: one rank */
 
 void mpi_passes_init(int *argc, char ***argv)
@@ -144,9 +172,20 @@ void mpi_passes_bcast_int(int *v, int n)
     (void)n;
 }
 
-int mpi_passes_agree(int go_root, int failed_local)
+int mpi_passes_agree(int go_root, int failed_local, int *flag)
 {
+    (void)flag; /* rank 0's value stays */
     return go_root && !failed_local;
+}
+
+void mpi_passes_snapshot(const double *sum, double *total, size_t n,
+                         int passes, uint64_t photons, int *tot_passes,
+                         uint64_t *tot_photons)
+{
+    for (size_t i = 0; i < n; i++)
+        total[i] = sum[i];
+    *tot_passes = passes;
+    *tot_photons = photons;
 }
 
 void mpi_passes_reduce(double *sum, size_t n, int *passes,

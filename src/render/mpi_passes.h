@@ -34,9 +34,11 @@ void mpi_passes_bcast_int(int *v, int n);
 
 /*
 ** One round's decision, the same on every rank: true when rank 0's
-** 'go_root' is true and no rank has 'failed_local' set.
+** 'go_root' is true and no rank has 'failed_local' set. *flag (may be
+** NULL) is rank 0's value on entry and, on return, rank 0's value on
+** every rank (a second decision in the same collective).
 */
-int mpi_passes_agree(int go_root, int failed_local);
+int mpi_passes_agree(int go_root, int failed_local, int *flag);
 
 /*
 ** Sums 'sum[0..n-1]', *passes and *photons over all ranks onto rank 0
@@ -44,5 +46,14 @@ int mpi_passes_agree(int go_root, int failed_local);
 */
 void mpi_passes_reduce(double *sum, size_t n, int *passes,
                        uint64_t *photons);
+
+/*
+** The same sums onto rank 0 without touching the ranks' own: rank 0 gets
+** them in 'total' (n doubles; NULL on the other ranks), *tot_passes and
+** *tot_photons. A snapshot of the run so far (progressive.c).
+*/
+void mpi_passes_snapshot(const double *sum, double *total, size_t n,
+                         int passes, uint64_t photons, int *tot_passes,
+                         uint64_t *tot_photons);
 
 #endif

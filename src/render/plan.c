@@ -3,13 +3,17 @@
 ** plan.c: the render plan (see plan.h). Photons follow POV-Ray's rules
 ** (semantics §2.1, §2.2b): a photons{} block with gather > 0, quality 9,
 ** and some non-shadowless light and photon target whose merged flags ask
-** for refraction or reflection. Spectral splitting is planned when some
-** interior's index varies with the wavelength.
+** for refraction or reflection. A global photon map (diffuse
+** interreflection, src/photon/global.c) when global_settings has
+** radiosity{}, quality 9 and a light that is not shadowless. Spectral
+** splitting is planned when some interior's index varies with the
+** wavelength.
 */
 #include "config.h"
 
 #include <string.h>
 
+#include "photon/photon.h"
 #include "render/plan.h"
 #include "render/trace.h"
 #include "spectrum/ior.h"
@@ -102,7 +106,21 @@ void plan_compute(const iris_scene *scene, const iris_render_options *opts,
         p->photon_reason = "no light and target ask for refraction or "
                            "reflection photons";
     else
-        p->photons = true;
+        p->caustic_photons = true;
+    bool lit = false;
+    for (int i = 0; i < scene->n_lights; i++)
+        lit = lit || !scene->lights[i]->shadowless;
+    if (!opts->use_photons)
+        p->global_reason = "disabled by the options";
+    else if (!scene->settings.radiosity)
+        p->global_reason = "no radiosity{} block";
+    else if (p->quality < 9)
+        p->global_reason = "quality below 9";
+    else if (!lit)
+        p->global_reason = "no light that casts shadows";
+    else
+        p->global_photons = true;
+    p->photons = p->caustic_photons || p->global_photons;
     p->fog = scene->n_fogs > 0;
     p->sky_sphere = scene->sky_sphere && scene->sky_sphere->n_pigments > 0;
     p->max_trace_level = scene->settings.max_trace_level > 0
@@ -140,10 +158,17 @@ void plan_print(const struct render_plan *p, FILE *out)
     if (p->n_area > 0 && !p->area_sampling)
         fprintf(out, " (quality below 5: area lights act as point lights)");
     fprintf(out, "\n");
-    if (p->photons)
+    if (p->caustic_photons)
         fprintf(out, "  photon pass: yes\n");
     else
         fprintf(out, "  photon pass: no (%s)\n", p->photon_reason);
+    if (p->global_photons)
+        fprintf(out, "  global photon map (radiosity): yes, %d photons a "
+                "pass, %d-nearest estimate at diffuse hits, no final "
+                "gather\n", PMAP_GLOBAL_PHOTONS, PMAP_GLOBAL_GATHER);
+    else
+        fprintf(out, "  global photon map (radiosity): no (%s)\n",
+                p->global_reason);
     if (p->spectral)
         fprintf(out, "  spectral splitting: yes, up to %d wavelengths at "
                 "dispersive interiors\n", p->spectral_samples);

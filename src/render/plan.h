@@ -25,7 +25,10 @@ struct render_plan {
     int n_point, n_spot, n_cylinder, n_parallel, n_area, n_shadowless;
     bool shadows, area_sampling, refraction, reflection, normals;
     bool photons;              /* a photon pass before the eye pass */
-    const char *photon_reason; /* why not, when photons is false */
+    bool caustic_photons;      /* ... with a caustic map (photons{}) */
+    const char *photon_reason; /* why no caustic map */
+    bool global_photons;       /* ... with a global map (radiosity{}) */
+    const char *global_reason; /* why no global map */
     bool spectral;             /* camera rays split at dispersive interiors */
     int spectral_samples;      /* the largest split */
     bool fog, sky_sphere;

@@ -40,7 +40,12 @@
 ** left, time limit, interrupt) and every rank learns the decision, plus
 ** whether any rank failed, in one collective. At the end the sums, pass
 ** and photon counts are reduced onto rank 0, which averages, reports the
-** one pass callback and writes the checkpoint. The image equals the
+** pass callback and writes the checkpoint. During the run rank 0 also
+** gets a snapshot (the same reduction into a separate buffer) at the start
+** of a round when that costs at most 1/SNAPSHOT_COST_RATIO of the time,
+** and reports it to the pass callback (error-log lines, intermediate
+** images), so a long MPI run logs as it goes, from rank 0 only. Ranks
+** other than 0 do not build pass 0's map (render.c). The image equals the
 ** one-rank image up to the order of the double additions. On resume rank
 ** 0 reads the checkpoint and carries its sum; the other ranks start from
 ** zero at the next pass number. With R = 1 nothing of this changes the
@@ -63,6 +68,13 @@
 
 /* Seconds between checkpoint writes during a run (and one at the end). */
 #define CHECKPOINT_EVERY_S 10.0
+
+/* MPI: the pass callback (error log, intermediate images) runs on rank 0
+** after a round when the time since the last such snapshot is at least
+** this many times the last snapshot's reduction: at most 5% of the run
+** goes into them (a 160x120 image reduces in ~1 ms, so then every round;
+** a 4K image's 265 MB less often). */
+#define SNAPSHOT_COST_RATIO 20.0
 
 static const char CKPT_MAGIC[8] = { 'I', 'R', 'I', 'S', 'P', 'P', 'M', '1' };
 
@@ -225,6 +237,38 @@ static enum iris_status build_map(struct tracer *tr, const struct accel *acc,
     return st;
 }
 
+/*
+** MPI: every rank's sums so far onto rank 0 ('snap', NULL elsewhere),
+** which reports their average to the pass callback. *cost gets the
+** reduction's seconds, *last the time it ended.
+*/
+static void report_snapshot(const struct accum *a, double *snap,
+                            const iris_render_options *opts,
+                            iris_image *out, double t_start, double *cost,
+                            double *last)
+{
+    double t0 = par_now();
+    int passes = 0;
+    uint64_t photons = 0;
+    mpi_passes_snapshot(a->sum, snap, accum_len(a), a->passes, a->photons,
+                        &passes, &photons);
+    /* the smallest seen: a snapshot waits for the slowest rank too, and
+    ** a loaded machine's one slow reduction must not stop the reports */
+    double c = par_now() - t0;
+    if (*cost <= 0.0 || c < *cost)
+        *cost = c;
+    if (snap && passes > 0) {
+        struct accum all = *a;
+        all.sum = snap;
+        all.passes = passes;
+        accum_average(&all, out);
+        iris_pass_info info = { passes, a->seconds + (par_now() - t_start),
+                                photons, progressive_radius_scale(passes - 1) };
+        opts->on_pass(opts->on_pass_user, out, &info);
+    }
+    *last = par_now();
+}
+
 /* Should the loop start pass 'pass'? */
 static bool another_pass(const iris_render_options *opts, int pass,
                          int first, double elapsed, double last_dt)
@@ -302,13 +346,23 @@ enum iris_status progressive_run(struct tracer *tr, const struct accel *acc,
     iris_render_stats es_sum;
     memset(&es_sum, 0, sizeof es_sum);
     bool failed = false;
+    double *snap = NULL; /* rank 0's snapshot buffer (MPI) */
+    if (rank == 0 && nranks > 1 && opts->on_pass)
+        snap = iris_malloc(accum_len(&a) * sizeof *snap);
+    double last_snap = par_now(), snap_cost = 0.0;
     for (int base = first;; base += nranks) {
-        /* The round of passes base..base+R-1, decided by rank 0 */
+        /* The round of passes base..base+R-1, decided by rank 0, and
+        ** whether to report a snapshot of the rounds before it */
         int go = rank == 0 &&
                  another_pass(opts, base, first, par_now() - t_start,
                               last_dt);
-        if (!mpi_passes_agree(go, failed))
+        int do_snap = snap && base > first &&
+                      par_now() - last_snap >= SNAPSHOT_COST_RATIO * snap_cost;
+        if (!mpi_passes_agree(go, failed, &do_snap))
             break;
+        if (do_snap)
+            report_snapshot(&a, snap, opts, out, t_start, &snap_cost,
+                            &last_snap);
         int p = base + ((rank - base) % nranks + nranks) % nranks;
         if (nranks > 1 && !another_pass(opts, p, first, 0.0, 0.0))
             continue; /* past --passes (or --resume's one pass) */
@@ -384,6 +438,7 @@ enum iris_status progressive_run(struct tracer *tr, const struct accel *acc,
         }
     }
     tr->seed = seed0;
+    iris_free(snap);
     if (nranks > 1) {
         /* rank 0 gets the sum of every rank's passes */
         mpi_passes_reduce(a.sum, accum_len(&a), &a.passes, &a.photons);

@@ -16,7 +16,9 @@
 #include "iris/render.h"
 #include "material/material.h"
 #include "photon/photon.h"
+#include "render/check_ior.h"
 #include "render/eyepass.h"
+#include "render/mpi_passes.h"
 #include "render/plan.h"
 #include "render/progressive.h"
 #include "render/trace.h"
@@ -93,6 +95,13 @@ static enum iris_status photon_pass(const struct render_plan *plan,
     t->photon_map = NULL;
     if (!plan->photons)
         return IRIS_OK;
+    if (progressive_wanted(opts) && mpi_passes_rank() != 0) {
+        /* MPI: pass 0 is rank 0's; this rank builds only its own passes'
+        ** maps (progressive.c) */
+        t->photon_shade = shade_photons;
+        t->photon_shadow = photon_shadow;
+        return IRIS_OK;
+    }
     struct photon_options po;
     memset(&po, 0, sizeof po);
     po.threads = threads;
@@ -152,6 +161,67 @@ static const iris_scene *with_looks_like(const iris_scene *scene,
     return copy;
 }
 
+/*
+** projected_through: a light with such an object shines only where the
+** ray to it meets that object (light_through(), light.h). The object is
+** not part of the scene (POV-Ray does not render it), so each such light
+** gets a query of its own on an accel built from a one-object copy of the
+** scene.
+*/
+struct through {
+    int n;
+    struct accel **acc;
+    struct rquery *q;
+    iris_scene *sc;
+};
+
+static void through_free(struct through *th)
+{
+    for (int i = 0; i < th->n; i++)
+        accel_destroy(th->acc[i]);
+    iris_free(th->acc);
+    iris_free(th->q);
+    iris_free(th->sc);
+    memset(th, 0, sizeof *th);
+}
+
+static enum iris_status through_build(const iris_scene *scene,
+                                      struct tracer *tr, FILE *log,
+                                      char *err, size_t errlen,
+                                      struct through *th)
+{
+    int n = 0;
+    for (int i = 0; i < tr->n_lights; i++)
+        if (tr->lights[i].src && tr->lights[i].src->projected_through)
+            n++;
+    if (n == 0)
+        return IRIS_OK;
+    th->acc = iris_calloc((size_t)n, sizeof *th->acc);
+    th->q = iris_calloc((size_t)n, sizeof *th->q);
+    th->sc = iris_calloc((size_t)n, sizeof *th->sc);
+    if (!th->acc || !th->q || !th->sc)
+        return IRIS_ENOMEM;
+    for (int i = 0; i < tr->n_lights; i++) {
+        const iris_light *l = tr->lights[i].src;
+        if (!l || !l->projected_through)
+            continue;
+        iris_scene *s = &th->sc[th->n];
+        *s = *scene;
+        s->objects = (iris_object **)&l->projected_through;
+        s->n_objects = 1;
+        enum iris_status st = accel_build(s, &th->acc[th->n], log, err,
+                                          errlen);
+        if (st != IRIS_OK)
+            return st;
+        th->q[th->n] = (struct rquery){ th->acc[th->n], accel_isect,
+                                        accel_in,
+                                        accel_epsilon(th->acc[th->n]) };
+        tr->lights[i].through = &th->q[th->n];
+        th->n++;
+    }
+    return IRIS_OK;
+}
+
 static void set_err(char *err, size_t errlen, const char *msg)
 {
     if (err && errlen) {
@@ -195,9 +265,16 @@ enum iris_status iris_render(const iris_scene *scene,
     plan.tiles = ((opts->width + 31) / 32) * ((opts->height + 31) / 32);
     if (opts->plan_out)
         plan_print(&plan, opts->plan_out);
+    if (opts->plan_only) { /* --plan: nothing to build or render */
+        iris_free(extra_objects);
+        return IRIS_OK;
+    }
 
     struct accel *acc = NULL;
-    enum iris_status st = accel_build(scene, &acc, log, err, errlen);
+    /* unknown glass names (an error) and clamping indices, located */
+    enum iris_status st = check_ior(scene, log, err, errlen);
+    if (st == IRIS_OK)
+        st = accel_build(scene, &acc, log, err, errlen);
     if (st != IRIS_OK) {
         iris_free(extra_objects);
         return st;
@@ -214,12 +291,18 @@ enum iris_status iris_render(const iris_scene *scene,
                                    TQ_QUICK_COLOUR) != 0);
     struct rquery q = { acc, accel_isect, accel_in, accel_epsilon(acc) };
     struct tracer tr;
+    struct through th;
+    memset(&th, 0, sizeof th);
     if (!tracer_init(&tr, scene, mat, &q, plan.quality)) {
         st = IRIS_ENOMEM;
         goto done;
     }
+    st = through_build(scene, &tr, log, err, errlen, &th);
+    if (st != IRIS_OK)
+        goto done;
     tr.seed = opts->seed;
     tr.spectral_min = opts->spectral_samples_min;
+    tr.alpha = opts->alpha;
     double t1 = par_now();
     struct photon_map *pmap = NULL;
     st = photon_pass(&plan, &tr, acc, mat, threads, opts, &pmap, stats);
@@ -245,6 +328,7 @@ enum iris_status iris_render(const iris_scene *scene,
         set_err(err, errlen, "iris_render: empty render window");
     photon_map_destroy(pmap);
 done:
+    through_free(&th);
     tracer_fini(&tr);
     mat_ctx_destroy(mat);
     accel_destroy(acc);

@@ -12,6 +12,7 @@
 #include <string.h>
 
 #include "render/trace.h"
+#include "render/eyespectrum.h"
 #include "material/noise.h"
 #include "math/transform.h"
 #include "spectrum/ior.h"
@@ -358,7 +359,10 @@ static void area_sample(struct trace_ctx *c, const struct area_job *j,
     double depth;
     light_ray(l, j->p, off, &L, &depth);
     memcpy(out, j->lc, sizeof j->lc);
-    point_shadow(c, j->st, l->src, j->lit, j->p, j->eps, L, depth, out);
+    if (light_through(l, j->p, leave_eps(c->t, j->eps), L, &depth))
+        point_shadow(c, j->st, l->src, j->lit, j->p, j->eps, L, depth, out);
+    else                       /* projected_through, per sample ray */
+        out[0] = out[1] = out[2] = 0.0;
     memcpy(c->grid[idx], out, sizeof c->grid[idx]);
     c->grid_set[idx] = true;
 }
@@ -420,8 +424,18 @@ static void trace_shadow(struct trace_ctx *c, const struct interior_stack *st,
         lc[0] = lc[1] = lc[2] = 0.0;
         return;
     }
+    /* projected_through (light.h): an area light's samples test their
+    ** own rays (area_sample), any other light the ray to its centre; a
+    ** shadowless light stops after the test */
+    bool area = l->area && (t->quality & TQ_AREA_LIGHT) && !l->fill;
+    if (!area && !light_through(l, p, leave_eps(t, eps), L, &depth)) {
+        lc[0] = lc[1] = lc[2] = 0.0;
+        return;
+    }
+    if (l->fill)
+        return;
     c->level++;
-    if (l->area && (t->quality & TQ_AREA_LIGHT)) {
+    if (area) {
         struct area_job j = { l, st, lit, p, v3(0, 0, 0), v3(0, 0, 0),
                               { lc[0], lc[1], lc[2] }, eps };
         area_axes(l, p, &j.a1, &j.a2);
@@ -593,7 +607,7 @@ static void diffuse_light(struct trace_ctx *c, const struct layer_shade *s,
             else
                 continue;
         }
-        if ((t->quality & TQ_SHADOW) && !l->fill) {
+        if ((t->quality & TQ_SHADOW) && (!l->fill || l->through)) {
             if (i < MAX_CACHED_LIGHTS && cache->tested[i]) {
                 memcpy(lc, cache->colour[i], sizeof lc);
             } else {
@@ -684,7 +698,8 @@ static bool refract_one(struct trace_ctx *c, const struct tray *eye,
 }
 
 /* The wavelength-split refraction of a camera ray at a dispersive
-** interface (DESIGN.md: chromatic aberration). */
+** interface (DESIGN.md: chromatic aberration); eyespectrum.h says how the
+** wavelengths are drawn and summed. */
 static void refract_spectral(struct trace_ctx *c, const struct tray *eye,
                              const struct tray *nr, const struct hit *h,
                              const iris_finish *f, vec3 n_top, vec3 raw,
@@ -692,10 +707,13 @@ static void refract_spectral(struct trace_ctx *c, const struct tray *eye,
                              const iris_interior *to, int n_samples,
                              double weight, double out[3])
 {
-    double sum[3] = { 0, 0, 0 };
+    struct eye_spectrum acc;
+    eye_spectrum_init(&acc);
+    double transm = 0.0;       /* the bands' c->transm, averaged */
     for (int i = 0; i < n_samples; i++) {
-        double lambda = SPEC_LAMBDA_MIN + SPEC_LAMBDA_RANGE *
-                        (i + rng_uniform(&c->rng)) / n_samples;
+        double a[3];
+        double lambda = eye_lambda_sample(i, n_samples,
+                                          rng_uniform(&c->rng), a);
         double eta = ior_eval(from, lambda) / ior_eval(to, lambda);
         struct tray band;
         tray_copy(&band, nr);
@@ -703,14 +721,12 @@ static void refract_spectral(struct trace_ctx *c, const struct tray *eye,
         double col[3] = { 0, 0, 0 };
         (void)refract_one(c, eye, &band, h, f, n_top, raw, local, eta,
                           weight, col);
-        double w[3];
-        spec_lambda_rgb_weight(lambda, w);
-        double r = spec_reflectance(col, lambda);
-        for (int k = 0; k < 3; k++)
-            sum[k] += r * w[k];
+        eye_spectrum_add(&acc, a, spec_reflectance(col, lambda));
+        transm += c->transm;
     }
-    for (int k = 0; k < 3; k++)
-        out[k] = sum[k] / n_samples;
+    eye_spectrum_rgb(&acc, out);
+    c->transm = transm / n_samples;
+    c->spectral = true;        /* the eye pass maps the pixel's gamut */
 }
 
 /* POV-Ray's ComputeRefraction with the interior stack of §1.2. Returns
@@ -824,11 +840,13 @@ static void lighted_texture(struct trace_ctx *c, const struct tray *eye,
     const struct tracer *t = c->t;
     const iris_scene *sc = t->scene;
     double filcol[3] = { 1, 1, 1 }, trans = 1.0;
+    double stack_transm = 0.0; /* c->transm of this stack, see the end */
     bool one_found = false;
     struct refl_entry refl[MAT_MAX_LAYERS];
     int n_done = 0;
     vec3 n_top = raw;
     out[0] = out[1] = out[2] = 0.0;
+    c->transm = 0.0;
     const double amb_light[3] = { sc->settings.ambient_light.r,
                                   sc->settings.ambient_light.g,
                                   sc->settings.ambient_light.b };
@@ -910,6 +928,9 @@ static void lighted_texture(struct trace_ctx *c, const struct tray *eye,
         double att[3] = { 1, 1, 1 };
         if (h->interior && stack_find(&eye->st, interior_key(h)) >= 0)
             interior_fade(h->interior, h->t, true, att);
+        /* alpha: what the refracted ray saw of the background, through
+        ** this surface (semantics §3.4) */
+        stack_transm = fabs(mat_greyscale(att)) * c->transm * trans;
         for (int k = 0; k < 3; k++) {
             if (tir || !one_found)
                 out[k] += att[k] * rfr[k];
@@ -938,6 +959,7 @@ static void lighted_texture(struct trace_ctx *c, const struct tray *eye,
             }
         }
     }
+    c->transm = stack_transm;  /* the reflected rays do not count */
 }
 
 /* POV-Ray's ComputeTextureColour: the texture stacks blended. */
@@ -959,6 +981,7 @@ static void texture_colour(struct trace_ctx *c, const struct tray *eye,
     mat_eval_texture(t->mat, hit_texture(h, nd > 0.0), &pt, ev);
     struct light_cache cache;
     memset(cache.tested, 0, sizeof cache.tested);
+    double transm = 0.0;       /* the stacks' c->transm, blended */
     for (int s = 0; s < ev->n_stacks; s++) {
         const struct mat_stack *sk = &ev->stacks[s];
         if (sk->weight < t->adc)
@@ -967,7 +990,9 @@ static void texture_colour(struct trace_ctx *c, const struct tray *eye,
         lighted_texture(c, eye, h, ev, sk, raw, weight, &cache, col);
         for (int k = 0; k < 3; k++)
             out[k] += sk->weight * col[k];
+        transm += sk->weight * c->transm;
     }
+    c->transm = transm;
 }
 
 /* ------------------------------------------------------------------ */
@@ -1023,10 +1048,15 @@ static void sky_colour(struct trace_ctx *c, vec3 d, double out[3])
                 filcol[k] *= tr[k];
         }
     }
-    /* The background's filter and transmit count only for alpha output. */
-    out[0] = col[0] + bg->r * filcol[0];
-    out[1] = col[1] + bg->g * filcol[1];
-    out[2] = col[2] + bg->b * filcol[2];
+    /* The background's filter and transmit count only for alpha output:
+    ** there the background shows by 1 - transmit and the rest is
+    ** transparent (POV-Ray writes a transmit-1 background as (0,0,0,0)) */
+    double keep = t->alpha ? 1.0 - bg->t : 1.0;
+    out[0] = col[0] + bg->r * filcol[0] * keep;
+    out[1] = col[1] + bg->g * filcol[1] * keep;
+    out[2] = col[2] + bg->b * filcol[2] * keep;
+    c->transm = t->alpha ? bg->t * fmin(1.0, fabs(mat_greyscale(filcol)))
+                         : 0.0;
 }
 
 static double fog_turbulence(const struct tracer *t, const iris_fog *fog,
@@ -1103,6 +1133,7 @@ double trace_ray(struct trace_ctx *c, const struct tray *r, double weight,
 {
     const struct tracer *t = c->t;
     rgb[0] = rgb[1] = rgb[2] = 0.0;
+    c->transm = 0.0;
     if (c->level >= t->max_level || weight < t->adc)
         return HUGE_VAL;
     struct hit h;

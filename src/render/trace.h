@@ -83,6 +83,7 @@ struct tracer {
     ** the values as computed. */
     double working_gamma;      /* 1 for assumed_gamma 1 */
     bool gamma_off;
+    bool alpha;                /* +UA: the background's transmit counts */
     uint64_t seed;
     trace_photon_fn photon_shade;
     trace_photon_shadow_fn photon_shadow;
@@ -132,6 +133,12 @@ struct trace_ctx {
     const struct tracer *t;
     rng rng;                   /* re-seeded per pixel sample by the caller */
     int level;                 /* current trace level */
+    bool spectral;             /* a camera ray split into wavelengths since
+                                  the caller last cleared it */
+    double transm;             /* set by trace_ray: how much of the
+                                  background the ray saw through
+                                  transparent surfaces (POV-Ray's transmit
+                                  channel; alpha = 1 - transm) */
     uint64_t rays;
     double (*grid)[3];         /* area-light samples, max_area_grid */
     bool *grid_set;

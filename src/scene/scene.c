@@ -79,6 +79,9 @@ void iris_camera_defaults(iris_camera *c)
     c->sky.y = 1;
     c->look_at.z = 1;
     c->blur_samples = 0;
+    c->blur_samples_min = 0;
+    c->focal_point.z = 1;      /* POV-Ray's Camera::Init */
+    c->focal_distance = -1;
     c->confidence = 0.9;
-    c->variance = 1.0 / 128;
+    c->variance = 1.0 / 10000;
 }

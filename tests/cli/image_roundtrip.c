@@ -113,6 +113,45 @@ static void test_write_errors(void **state)
     iris_image_fini(&a);
 }
 
+/* +UA files (iris_image_write_alpha). Pixels hold premultiplied colour.
+** PNG: straight alpha as POV-Ray writes it: (0.25 grey, a 0.5) reads back
+** as grey 0.5 with alpha 0.5; a transparent pixel as 0; a pixel brighter
+** than its alpha (0.9 grey, a 0.2) gets alpha 0.9 (its POV-Ray greyscale,
+** weights 0.297 + 0.589 + 0.114 = 1) and colour 1. Tolerance: one 8-bit
+** step, 1/255, of the alpha, and of the sRGB code of the colour (slope of
+** the decoding <= 1.1 below 1: 1.2/255 in linear terms). EXR: the
+** premultiplied floats and alpha, exactly. */
+static void test_alpha_files(void **state)
+{
+    (void)state;
+    iris_image a, b;
+    assert_int_equal(iris_image_init(&a, 3, 1), IRIS_OK);
+    const float px[3][4] = { { 0.25f, 0.25f, 0.25f, 0.5f },
+                             { 0, 0, 0, 0 },
+                             { 0.9f, 0.9f, 0.9f, 0.2f } };
+    memcpy(a.pixels, px, sizeof px);
+    char path[300], err[256];
+    snprintf(path, sizeof path, "%s/alpha.png", dir);
+    assert_int_equal(iris_image_write_alpha(&a, path, 8, IRIS_ENC_SRGB, true,
+                                            err, sizeof err), IRIS_OK);
+    assert_int_equal(iris_image_read(&b, path, err, sizeof err), IRIS_OK);
+    const double want[3][4] = { { 0.5, 0.5, 0.5, 0.5 }, { 0, 0, 0, 0 },
+                                { 1, 1, 1, 0.9 } };
+    for (int i = 0; i < 3; i++)
+        for (int k = 0; k < 4; k++)
+            assert_near(b.pixels[i * 4 + k], want[i][k], 1.2 / 255);
+    iris_image_fini(&b);
+    snprintf(path, sizeof path, "%s/alpha.exr", dir);
+    assert_int_equal(iris_image_write_alpha(&a, path, 0, IRIS_ENC_SRGB, true,
+                                            err, sizeof err), IRIS_OK);
+    assert_int_equal(iris_image_read(&b, path, err, sizeof err), IRIS_OK);
+    for (int i = 0; i < 3; i++)
+        for (int k = 0; k < 4; k++)
+            assert_near(b.pixels[i * 4 + k], px[i][k], 0);
+    iris_image_fini(&b);
+    iris_image_fini(&a);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -120,6 +159,7 @@ int main(void)
         cmocka_unit_test(test_exr_float),
         cmocka_unit_test(test_png_srgb),
         cmocka_unit_test(test_write_errors),
+        cmocka_unit_test(test_alpha_files),
     };
     return cmocka_run_group_tests_name("image files", tests, setup, teardown);
 }

@@ -58,6 +58,14 @@ static void test_pov_switches(void **state)
     assert_int_equal(o.n_include_paths, 1);
     assert_string_equal(o.include_paths[0], "/inc");
 
+    /* +UA: output alpha, off by default, case-insensitive, -UA undoes */
+    assert_int_equal(parse(&o, err, 1, "s.pov"), 0);
+    assert_false(o.render.alpha);
+    assert_int_equal(parse(&o, err, 2, "s.pov", "+ua"), 0);
+    assert_true(o.render.alpha);
+    assert_int_equal(parse(&o, err, 3, "s.pov", "+UA", "-UA"), 0);
+    assert_false(o.render.alpha);
+
     assert_int_equal(parse(&o, err, 2, "s.pov", "Declare=Size=2.5"), 0);
     assert_int_equal(o.n_declares, 1);
     assert_string_equal(o.declares[0].name, "Size");

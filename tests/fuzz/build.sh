@@ -1,34 +1,72 @@
 #!/bin/sh
 # SPDX-License-Identifier: MIT
-# tests/fuzz/build.sh: builds the libFuzzer target of povparse with clang,
-# AddressSanitizer and UBSan, and optionally runs it.
+# tests/fuzz/build.sh: builds the libFuzzer targets (issue 7) with clang,
+# AddressSanitizer and UBSan: fuzz_parse (scanner and parser) and
+# fuzz_plan (parse -> render plan, no pixels), and optionally runs them.
 #
 # usage: tests/fuzz/build.sh BUILD_DIR [SECONDS]
-#   BUILD_DIR  a configured build tree (for config.h)
-#   SECONDS    if given, fuzz that long from the golden test cases as seed
-#              corpus (a crash leaves crash-* files in the current directory)
+#   BUILD_DIR  a configured build tree (for config.h and the library flags)
+#   SECONDS    if given, fuzz each target that long from a seed corpus of
+#              scenes/ and the test cases (crash-* files land in the
+#              current directory)
+#
+# The library sources are compiled once into an archive, so a target links
+# only the objects it reaches (the plan pulls in the tracer, which needs
+# Embree's symbols but never calls them here).
 set -e
 top=$(cd "$(dirname "$0")/../.." && pwd)
 build=${1:?usage: build.sh BUILD_DIR [SECONDS]}
+build=$(cd "$build" && pwd)
 out="$build/tests/fuzz"
-mkdir -p "$out"
+obj="$out/obj"
+mkdir -p "$obj"
 CC=${CC:-clang}
-# src/fn evaluates pattern and pigment functions with src/material, which
-# the parser calls when a scene evaluates such a function while parsing.
-srcs="$top/tests/fuzz/fuzz_parse.c $top/povparse/*.c $top/src/util/arena.c \
- $top/src/util/mem.c $top/src/math/transform.c $top/src/scene/scene.c \
- $top/src/fn/*.c $top/src/material/*.c $top/src/image/image.c \
- $top/src/image/image_io.c $top/src/image/png.c"
-$CC -g -O1 -std=c11 -D_GNU_SOURCE -fsanitize=fuzzer,address,undefined \
-    -fno-sanitize-recover=undefined \
-    -I"$build" -I"$top/include" -I"$top/src" -I"$top" \
-    -DIRIS_PKGLIBDIR='"/nonexistent"' \
-    $srcs -lpng -ldl -lm -o "$out/fuzz_parse"
-echo "built $out/fuzz_parse"
+jobs=${FUZZ_JOBS:-$(nproc 2>/dev/null || echo 2)}
+# library flags as configure found them (MPI, FreeType, PNG paths)
+mkvar() { sed -n "s/^$1 = //p" "$build/Makefile" | head -n 1; }
+cflags="-g -O1 -std=c11 -D_GNU_SOURCE -fsanitize=fuzzer-no-link,address,undefined \
+ -fno-sanitize-recover=undefined -Wno-constant-logical-operand -I$build -I$top/include -I$top/src -I$top \
+ $(mkvar FREETYPE_CFLAGS) $(mkvar PNG_CFLAGS) $(mkvar MPI_CFLAGS) \
+ -DIRIS_PKGLIBDIR=\"/nonexistent\""
+libs="$(mkvar EMBREE_LIBS) $(mkvar FREETYPE_LIBS) $(mkvar PNG_LIBS) \
+ $(mkvar MPI_LIBS) -pthread -ldl -lm"
+# everything but the programs (cli, compare) and the C++ OpenImageIO module
+srcs=$(cd "$top" && ls povparse/*.c src/*/*.c | grep -v -e '^src/cli/' \
+       -e '^src/compare/')
+# compile what changed since its object was built, 'jobs' at a time
+printf '%s\n' $srcs | CFLAGS_FUZZ="$cflags" TOP="$top" OBJ="$obj" CC="$CC" \
+    xargs -P "$jobs" -I{} sh -c '
+        o="$OBJ/$(echo {} | tr / _ | sed "s/\.c\$/.o/")"
+        if [ ! -f "$o" ] || [ "$TOP/{}" -nt "$o" ] || \
+           [ -n "$(find "$TOP/povparse" "$TOP/src" "$TOP/include" \
+                   -name "*.h" -newer "$o" 2>/dev/null | head -n 1)" ]; then
+            $CC $CFLAGS_FUZZ -c "$TOP/{}" -o "$o" 2>"$o.err" || {
+                cat "$o.err"; rm -f "$o"
+                echo "build.sh: {} does not compile with $CC; left out" \
+                     "(the link fails if a target needs it)"; }
+            cat "$o.err"; rm -f "$o.err"
+        fi'
+rm -f "$out/libfuzzcore.a"
+# objects of sources removed since the last build must not linger
+for o in "$obj"/*.o; do
+    [ -e "$o" ] || continue
+    n=$(basename "$o" .o)
+    printf '%s\n' $srcs | tr / _ | grep -qx "$n.c" || rm -f "$o"
+done
+ar rcs "$out/libfuzzcore.a" "$obj"/*.o
+for t in fuzz_parse fuzz_plan; do
+    # shellcheck disable=SC2086
+    $CC $cflags -fsanitize=fuzzer "$top/tests/fuzz/$t.c" "$out/libfuzzcore.a" \
+        $libs -o "$out/$t"
+    echo "built $out/$t"
+done
 if [ -n "$2" ]; then
-    corpus="$out/corpus"
+    corpus="$out/seed"
     mkdir -p "$corpus"
-    cp "$top"/tests/parse/cases/*.pov "$corpus"/ 2>/dev/null || true
-    "$out/fuzz_parse" -max_total_time="$2" -timeout=10 -rss_limit_mb=1024 \
-        -max_len=4096 "$corpus"
+    sh "$top/tests/fuzz/seed.sh" "$corpus"
+    for t in fuzz_parse fuzz_plan; do
+        mkdir -p "$out/corpus-$t"
+        "$out/$t" -max_total_time="$2" -timeout=10 -rss_limit_mb=2048 \
+            -max_len=8192 "$out/corpus-$t" "$corpus"
+    done
 fi

@@ -9,7 +9,7 @@
 # (imgdiff: largest absolute difference; imgtool stats: the largest value).
 . "$top_srcdir/tests/tap.sh"
 [ -n "$MPIRUN" ] || tap_skip_all "iris was built without MPI"
-tap_plan 8
+tap_plan 10
 scene="$top_srcdir/tests/progressive/ball.pov"
 imgdiff="$top_builddir/tests/progressive/imgdiff"
 imgtool="$top_builddir/tests/cli/imgtool"
@@ -46,6 +46,21 @@ tap_ok "--stats counts the passes of both ranks (5)" \
 mpi 2 "$scene" +W24 +H24 --threads 1 -o "$tmp/w.exr" --passes 2 \
     2>"$tmp/log" >/dev/null
 tap_is "one rank reports" "$(grep -c 'iris: wrote' "$tmp/log")" "1"
+
+# The error log during the run, from rank 0 only: the first round after
+# the first is always reported (later ones when the reduction costs at
+# most 5% of the time), then the end; pass counts increase, none twice.
+"$IRIS" -q "$scene" +W24 +H24 --threads 1 --passes 8 --seed 3 \
+    -o "$tmp/ref8.exr"
+mpi 2 -q "$scene" +W24 +H24 --threads 1 --passes 8 --seed 3 \
+    -o "$tmp/e8.exr" --reference "$tmp/ref8.exr" --error-log "$tmp/err.csv"
+passes=$(tail -n +2 "$tmp/err.csv" | cut -d, -f2 | tr '\n' ' ')
+tap_ok "error log on 2 ranks: a line during the run ($passes)" \
+    test "$(tail -n +2 "$tmp/err.csv" | wc -l)" -ge 2 -a \
+    "$(tail -n +2 "$tmp/err.csv" | head -1 | cut -d, -f2)" = 2
+tap_ok "... increasing pass counts ending at 8, one line each" \
+    awk -F, 'NR > 1 { if ($2 <= last) exit 1; last = $2 }
+             END { exit !(last == 8) }' "$tmp/err.csv"
 
 # Checkpoint and resume across ranks: 2 passes, then 3 more
 mpi 2 -q "$scene" +W24 +H24 --threads 1 -o "$tmp/c2.exr" --passes 2 \

@@ -11,6 +11,8 @@
 ** (IRIS_IO_UNRESTRICTED); -W allows #fopen write in the scene's directory;
 ** -s sets image_width and image_height; -t prints the time iris_parse_file
 ** took on stderr ("parse time: S s"), like POV-Ray's own "Parse Time".
+** trace(), inside() and object extents are answered as the iris command
+** answers them (src/cli/geomq.c).
 */
 #include "config.h"
 
@@ -19,6 +21,7 @@
 #include <string.h>
 #include <time.h>
 
+#include "cli/geomq.h"
 #include "iris/parse.h"
 
 int main(int argc, char **argv)
@@ -75,6 +78,8 @@ int main(int argc, char **argv)
     opt.declares = decl;
     opt.n_declares = nd;
     opt.debug_stream = stdout;
+    struct geomq *gq = geomq_new(NULL);
+    opt.geometry = geomq_callbacks(gq);
     iris_diag_list diags;
     iris_diag_list_init(&diags);
     iris_scene *scene = NULL;
@@ -83,6 +88,7 @@ int main(int argc, char **argv)
     enum iris_status st = iris_parse_file(argv[argc - 1], &opt, &scene,
                                           &diags);
     clock_gettime(CLOCK_MONOTONIC, &t1);
+    geomq_free(gq);
     if (timing)
         fprintf(stderr, "parse time: %.6f s\n",
                 (double)(t1.tv_sec - t0.tv_sec) +

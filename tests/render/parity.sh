@@ -8,9 +8,9 @@
 # with a line '// parity-min-psnr: N reason', or mark a known failure of
 # another part with '// parity-todo: reason' (reported as TAP TODO).
 #
-# A scene iris cannot parse or render yet (exit status 2) is skipped, so
-# the suite stays green while the parser grows; without POV-Ray every
-# scene is skipped.
+# Every scene here is one iris renders: a scene error (exit status 2)
+# fails like any other exit status, so a parser regression cannot hide
+# as a skip. Without POV-Ray every scene is skipped.
 #
 # Environment: IRIS, POVRAY, top_srcdir, top_builddir (set by make check).
 
@@ -49,11 +49,6 @@ for scene in $scenes; do
         -q --threads=2 \
         > "$work/$name.iris.log" 2>&1
     rc=$?
-    if [ $rc -eq 2 ]; then
-        why=$(grep -m 1 . "$work/$name.iris.log" | cut -c 1-120)
-        echo "ok $i - $name # SKIP iris cannot parse or render it yet: $why"
-        continue
-    fi
     if [ $rc -ne 0 ]; then
         echo "not ok $i - $name: iris exited with status $rc$directive"
         sed 's/^/# /' "$work/$name.iris.log" | head -n 5

@@ -6,6 +6,9 @@
 **   imgcheck same A B    exits 0 when A and B hold the same pixels, bit
 **                        for bit (file metadata such as a DateTime is
 **                        not compared), else prints the first difference
+**   imgcheck colour FILE prints "meanR meanG meanB spread": the mean of
+**                        each channel and the largest max - min of the
+**                        channels of one pixel (0 for a grey image)
 **
 ** over the linear r, g, b of every pixel: 'bad' counts NaN, Inf and
 ** negative values, 'maxc' is the largest channel value, 'maxY' and
@@ -63,13 +66,38 @@ static int same(const char *pa, const char *pb)
     return rc;
 }
 
+/* Mean colour and greyness (the 'colour' command). */
+static int colour(const char *path)
+{
+    iris_image img;
+    if (load(&img, path))
+        return 1;
+    double sum[3] = { 0, 0, 0 }, spread = 0;
+    size_t n = (size_t)img.width * (size_t)img.height;
+    for (size_t i = 0; i < n; i++) {
+        const float *p = img.pixels + i * 4;
+        for (int c = 0; c < 3; c++)
+            sum[c] += p[c];
+        spread = fmax(spread, fmax(p[0], fmax(p[1], p[2])) -
+                                  fmin(p[0], fmin(p[1], p[2])));
+    }
+    double d = n ? (double)n : 1.0;
+    printf("%.6g %.6g %.6g %.6g\n", sum[0] / d, sum[1] / d, sum[2] / d,
+           spread);
+    iris_image_fini(&img);
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
     iris_image img;
     if (argc == 4 && !strcmp(argv[1], "same"))
         return same(argv[2], argv[3]);
+    if (argc == 3 && !strcmp(argv[1], "colour"))
+        return colour(argv[2]);
     if (argc != 2) {
-        fputs("usage: imgcheck FILE | imgcheck same A B\n", stderr);
+        fputs("usage: imgcheck FILE | imgcheck same A B | imgcheck colour "
+              "FILE\n", stderr);
         return 2;
     }
     if (load(&img, argv[1]))

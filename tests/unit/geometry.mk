@@ -3,6 +3,12 @@ check_PROGRAMS += tests/unit/test_geom tests/unit/test_accel \
 	tests/unit/test_accel_pov
 TESTS += tests/unit/test_geom tests/unit/test_accel \
 	tests/unit/test_accel_pov
+check_PROGRAMS += tests/unit/test_geom_shapes
+TESTS += tests/unit/test_geom_shapes
+tests_unit_test_geom_shapes_SOURCES = tests/unit/test_geom_shapes.c \
+	tests/testutil.h
+tests_unit_test_geom_shapes_CFLAGS = $(TEST_CFLAGS)
+tests_unit_test_geom_shapes_LDADD = $(TEST_LDADD)
 tests_unit_test_geom_SOURCES = tests/unit/test_geom.c tests/testutil.h
 tests_unit_test_geom_CFLAGS = $(TEST_CFLAGS)
 tests_unit_test_geom_LDADD = $(TEST_LDADD)

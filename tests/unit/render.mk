@@ -19,3 +19,6 @@ tests_render_psnr_SOURCES = tests/render/psnr.c
 tests_render_psnr_LDADD = libiris_core.la $(IRIS_LIBS)
 TESTS += tests/render/parity.sh
 EXTRA_DIST += tests/render/parity.sh tests/render/scenes
+# +UA output against POV-Ray's (tests/render/alpha.sh)
+TESTS += tests/render/alpha.sh
+EXTRA_DIST += tests/render/alpha.sh tests/render/alpha

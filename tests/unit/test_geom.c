@@ -233,6 +233,117 @@ static void test_torus(void **state)
     assert_false(geom_inside(&t, NULL, v3(0, 0, 0)));
 }
 
+/*
+** The written-out order-2 solver (poly.c quadric_roots) on the paraboloid
+** y = x² + z² (POV-Ray's Paraboloid_Y: quadric <1,0,1>,<0,0,0>,<0,-1,0>,0),
+** against hand-solved crossings:
+**   - a ray along -y through x = 0.5 is linear in t (no t² term): one
+**     crossing where y = 0.25, t = 9.75;
+**   - from (-3, 5, 0) along (1, -1, 0)/sqrt2, s = t/sqrt2 solves
+**     s² - 5s + 4 = 0: s = 1 and 4, points (-2, 4, 0) and (1, 1, 0), with
+**     normals along the gradient (2x, -1, 2z);
+**   - the horizontal line y = 1 in the plane z = 0 touches nothing it does
+**     not cross twice (x = ±1), and the line y = -1 misses.
+** The same coefficients as a poly and as the cubic (x² + z² - y)(x - 100),
+** solved by the general root finder, give the same crossings below
+** x = 100. Tolerance 1e-12: a few thousand ulps of these small numbers.
+*/
+static void test_quadric_fast(void **state)
+{
+    (void)state;
+    double qc[10] = { 1, 0, 1, 0, 0, 0, 0, -1, 0, 0 };
+    iris_object q = mk(IRIS_OBJ_QUADRIC);
+    q.u.poly.order = 2;
+    q.u.poly.n_coeffs = 10;
+    q.u.poly.coeffs = qc;
+    assert_null(geom_validate(&q));
+    struct geom_isect h[4];
+    assert_int_equal(hits(&q, NULL, v3(0.5, 10, 0), v3(0, -1, 0), h, 4), 1);
+    assert_near(h[0].t, 9.75, 1e-12);
+    assert_dir(h[0].n, v3_norm(v3(1, -1, 0)), 1e-12);
+
+    double r2 = sqrt(2.0);
+    assert_int_equal(hits(&q, NULL, v3(-3, 5, 0), v3(1, -1, 0), h, 4), 2);
+    /* the direction is not unit: t is in its units, s = t */
+    assert_near(h[0].t, 1, 1e-12);
+    assert_near(h[1].t, 4, 1e-12);
+    assert_dir(h[0].n, v3_norm(v3(-4, -1, 0)), 1e-12);
+    assert_dir(h[1].n, v3_norm(v3(2, -1, 0)), 1e-12);
+    assert_int_equal(hits(&q, NULL, v3(-3, 5, 0), v3(1 / r2, -1 / r2, 0), h,
+                          4), 2);
+    assert_near(h[0].t, r2, 1e-12);
+    assert_near(h[1].t, 4 * r2, 1e-12);
+
+    assert_int_equal(hits(&q, NULL, v3(-5, 1, 0), v3(1, 0, 0), h, 4), 2);
+    assert_near(h[0].t, 4, 1e-12);
+    assert_near(h[1].t, 6, 1e-12);
+    assert_int_equal(hits(&q, NULL, v3(-5, -1, 0), v3(1, 0, 0), h, 4), 0);
+
+    /* The general solver on a cubic with the same surface below x = 100 */
+    int idx = 0, map[4][4][4];
+    for (int i = 3; i >= 0; i--)
+        for (int j = 3 - i; j >= 0; j--)
+            for (int l = 3 - i - j; l >= 0; l--)
+                map[i][j][l] = idx++;
+    double c3[20] = { 0 };
+    /* (x² + z² - y)(x - 100) = x³ + xz² - xy - 100x² - 100z² + 100y */
+    c3[map[3][0][0]] = 1;
+    c3[map[1][0][2]] = 1;
+    c3[map[1][1][0]] = -1;
+    c3[map[2][0][0]] = -100;
+    c3[map[0][0][2]] = -100;
+    c3[map[0][1][0]] = 100;
+    iris_object cubic = mk(IRIS_OBJ_POLY);
+    cubic.u.poly.order = 3;
+    cubic.u.poly.n_coeffs = 20;
+    cubic.u.poly.coeffs = c3;
+    assert_null(geom_validate(&cubic));
+    vec3 ro[3] = { v3(-3, 5, 0.5), v3(0.2, 9, -0.3), v3(-2, 0.5, -2) };
+    vec3 rd[3] = { v3(0.7, -0.6, 0.1), v3(0.01, -1, 0.02), v3(0.5, 0.1, 0.6) };
+    for (int k = 0; k < 3; k++) {
+        struct isect_list a, b;
+        isect_list_init(&a);
+        isect_list_init(&b);
+        geom_intersect(&q, NULL, ro[k], rd[k], 0, 10, &a);
+        geom_intersect(&cubic, NULL, ro[k], rd[k], 0, 10, &b);
+        assert_true(a.n > 0);
+        assert_int_equal(a.n, b.n);
+        for (int i = 0; i < a.n; i++) {
+            assert_near(a.v[i].t, b.v[i].t, 1e-12);
+            vec3 p = v3_madd(ro[k], rd[k], a.v[i].t);
+            assert_near(p.x * p.x + p.z * p.z - p.y, 0, 1e-12);
+        }
+        isect_list_fini(&a);
+        isect_list_fini(&b);
+    }
+}
+
+/*
+** POV-Ray's sphere uv (geom_sphere_uv): u is the angle about y measured
+** from +x towards -z over 2 pi, v = 1/2 + latitude / pi. Points: +x on
+** the equator (0, 1/2), -z (1/4, 1/2), -x (1/2, 1/2), +z (3/4, 1/2), the
+** north pole v = 1 and 45 degrees south v = 1/4, for a sphere off the
+** origin (the centre is subtracted). Exact up to rounding of atan2/asin.
+*/
+static void test_sphere_uv(void **state)
+{
+    (void)state;
+    iris_object s = mk(IRIS_OBJ_SPHERE);
+    s.u.sphere.centre = v3(1, 2, 3);
+    s.u.sphere.radius = 2;
+    struct { vec3 p; double u, v; } pts[] = {
+        { { 3, 2, 3 }, 0, 0.5 },     { { 1, 2, 1 }, 0.25, 0.5 },
+        { { -1, 2, 3 }, 0.5, 0.5 },  { { 1, 2, 5 }, 0.75, 0.5 },
+        { { 1, 4, 3 }, 0.0, 1.0 },
+        { { 1 + sqrt(2.0), 2 - sqrt(2.0), 3 }, 0, 0.25 },
+    };
+    for (size_t i = 0; i < sizeof pts / sizeof pts[0]; i++) {
+        iris_vec2 uv = geom_sphere_uv(&s, pts[i].p);
+        assert_near(uv.u, pts[i].u, 1e-12);
+        assert_near(uv.v, pts[i].v, 1e-12);
+    }
+}
+
 /* A quadric equal to the unit sphere (its SDL order: x², y², z², xy, xz,
 ** yz, x, y, z, 1), the same as an order-2 poly (POV-Ray's poly order: x²,
 ** xy, xz, x, y², yz, y, z², z, 1) and the quartic torus in poly form give
@@ -578,6 +689,8 @@ int main(void)
         cmocka_unit_test(test_spline_lathe),
         cmocka_unit_test(test_flat),
         cmocka_unit_test(test_text),
+        cmocka_unit_test(test_quadric_fast),
+        cmocka_unit_test(test_sphere_uv),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -1,0 +1,246 @@
+/* SPDX-License-Identifier: MIT */
+/*
+** parametric.c: the surface (x(u,v), y(u,v), z(u,v)) over a uv rectangle,
+** found as POV-Ray 3.7 finds it (fpmetric.cpp).
+**
+** POV-Ray subdivides the uv rectangle depth first, always halving the
+** longer side. For each cell it bounds each coordinate function from its
+** four corner values and 'max_gradient' (a Lipschitz bound: between two
+** values a and b a distance dx apart the function can reach
+** max(a, b) + (max_gradient·dx - |a - b|)/2), turns the three bounds into
+** slabs along the ray and drops the cell when the slabs are disjoint, lie
+** outside the container box or beyond the nearest hit so far. A cell is a
+** hit when its uv size, or the longest slab along the ray, is below
+** 'accuracy'; its distance is the entry of the last slab computed. Only
+** the nearest hit is reported (POV-Ray has no other: a parametric has no
+** inside, so CSG sees one crossing), and the search starts 4·accuracy
+** past the container's entry, or past the ray origin inside it.
+**
+** POV-Ray's quirks are kept because they shape the image: the functions
+** are bounded as f - accuracy (its "threshold" argument, so the surface
+** found is shifted by -accuracy on every axis), the normal is the cross
+** product of forward differences of step 'accuracy' at the cell's low uv
+** corner, and uv is the raw (u, v). 'precompute' only caches the same
+** bounds in POV-Ray, so it is not needed here. With too small a
+** max_gradient the bounds are wrong and parts of the surface are missed,
+** in POV-Ray and here alike.
+*/
+#include "config.h"
+
+#include "geometry/geom.h"
+#include "iris/fn.h"
+
+#include <math.h>
+
+#define PAR_STACK 64     /* subdivision depth; POV-Ray's stack holds 32 */
+
+struct par {
+    const iris_fn *f[3];
+    double acc, grad;
+};
+
+static struct par par_of(const iris_object *o)
+{
+    struct par p;
+    p.f[0] = o->u.parametric.fx;
+    p.f[1] = o->u.parametric.fy;
+    p.f[2] = o->u.parametric.fz;
+    p.acc = o->u.parametric.accuracy > 0 ? o->u.parametric.accuracy : 0.001;
+    p.grad = o->u.parametric.max_gradient > 0
+                 ? o->u.parametric.max_gradient : 1.0;
+    return p;
+}
+
+static double eval(const iris_fn *f, double u, double v)
+{
+    double args[3] = { u, v, 0 };
+    return iris_fn_eval(f, args, 3);
+}
+
+/* POV-Ray's Interval(): bounds over a span dx with end values a, b. */
+static void span(double dx, double a, double b, double g, double *lo,
+                 double *hi)
+{
+    double ofs = g * (dx - fabs(a - b) / g) / 2;
+    if (ofs < 0)
+        ofs = 0;
+    *hi = fmax(a, b) + ofs;
+    *lo = fmin(a, b) - ofs;
+}
+
+/*
+** Bounds of f - acc over the cell [u0,u1]x[v0,v1] from the function's
+** values at its corners c = { f(u0,v0), f(u0,v1), f(u1,v0), f(u1,v1) },
+** as POV-Ray's Evaluate_Function_Interval_UV: the two v edges, then
+** across u.
+*/
+static void cell_bounds(const struct par *p, const double c[4], double u0,
+                        double u1, double v0, double v1, double *lo,
+                        double *hi)
+{
+    double f00 = c[0] - p->acc, f01 = c[1] - p->acc;
+    double f10 = c[2] - p->acc, f11 = c[3] - p->acc;
+    double l0, h0, l1, h1, junk;
+    span(v1 - v0, f00, f01, p->grad, &l0, &h0);
+    span(v1 - v0, f10, f11, p->grad, &l1, &h1);
+    span(u1 - u0, h0, h1, p->grad, &junk, hi);
+    span(u1 - u0, l0, l1, p->grad, lo, &junk);
+}
+
+static void container(const iris_object *o, vec3 *lo, vec3 *hi)
+{
+    vec3 a = o->u.parametric.lo, b = o->u.parametric.hi;
+    if (a.x == 0 && a.y == 0 && a.z == 0 && b.x == 0 && b.y == 0 &&
+        b.z == 0) {
+        /* no contained_by: POV-Ray's default box */
+        a = v3(-1, -1, -1);
+        b = v3(1, 1, 1);
+    }
+    *lo = v3_min(a, b);
+    *hi = v3_max(a, b);
+}
+
+void geom_parametric_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
+                          double t1, struct isect_list *out)
+{
+    struct par p = par_of(o);
+    vec3 blo, bhi;
+    container(o, &blo, &bhi);
+    /* The container along the ray, from the origin on (POV-Ray's box
+    ** test starts at 0) */
+    double d1 = 0, d2 = INFINITY;
+    if (!geom_clip_box(blo, bhi, ro, rd, &d1, &d2))
+        return;
+    d1 += 4 * p.acc;
+    if (d1 > d2)
+        return;
+
+    /* The stack of cells, each with the three functions' corner values
+    ** (a child shares two corners with its parent, so a split costs two
+    ** new points, not eight) */
+    double ulo[PAR_STACK], uhi[PAR_STACK], vlo[PAR_STACK], vhi[PAR_STACK];
+    double cv[PAR_STACK][3][4];
+    iris_vec2 a = o->u.parametric.uv_lo, b = o->u.parametric.uv_hi;
+    ulo[0] = fmin(a.u, b.u);
+    uhi[0] = fmax(a.u, b.u);
+    vlo[0] = fmin(a.v, b.v);
+    vhi[0] = fmax(a.v, b.v);
+    for (int k = 0; k < 3; k++) {
+        cv[0][k][0] = eval(p.f[k], ulo[0], vlo[0]);
+        cv[0][k][1] = eval(p.f[k], ulo[0], vhi[0]);
+        cv[0][k][2] = eval(p.f[k], uhi[0], vlo[0]);
+        cv[0][k][3] = eval(p.f[k], uhi[0], vhi[0]);
+    }
+    double best = INFINITY, bu = 0, bv = 0;
+    double P[3] = { ro.x, ro.y, ro.z }, D[3] = { rd.x, rd.y, rd.z };
+    int i = 0;
+    while (i >= 0) {
+        double u0 = ulo[i], u1 = uhi[i], v0 = vlo[i], v1 = vhi[i];
+        double len = u1 - u0;
+        bool split_u = true;
+        if (v1 - v0 > len) {
+            len = v1 - v0;
+            split_u = false;
+        }
+        double tlen = 0, pot = 0;
+        double smin[3], smax[3];
+        bool par[3], drop = false;
+        for (int k = 0; k < 3 && !drop; k++) {
+            double lo, hi;
+            cell_bounds(&p, cv[i][k], u0, u1, v0, v1, &lo, &hi);
+            /* POV-Ray's close(D, 0): an axis the ray is parallel to */
+            par[k] = fabs(D[k]) < 1e-10;
+            if (par[k]) {
+                drop = hi < P[k] || lo > P[k];
+                continue;
+            }
+            double s0 = (hi - P[k]) / D[k], s1 = (lo - P[k]) / D[k];
+            smin[k] = fmin(s0, s1);
+            smax[k] = fmax(s0, s1);
+            if (smin[k] > d2 || smax[k] < d1 || (pot = smin[k]) > best) {
+                drop = true;
+                continue;
+            }
+            for (int j = 0; j < k; j++)
+                if (!par[j] && (smin[k] > smax[j] || smax[k] < smin[j]))
+                    drop = true;
+            tlen = fmax(tlen, smax[k] - smin[k]);
+        }
+        if (drop) {
+            i--;
+            continue;
+        }
+        if (len > tlen)
+            len = tlen;
+        if (len < p.acc || i == PAR_STACK - 1) {
+            if (best > pot && pot > d1) {
+                best = pot;
+                bu = u0;
+                bv = v0;
+            }
+            i--;
+            continue;
+        }
+        /* Split: slot i keeps the upper half, slot i + 1 the lower, which
+        ** is therefore searched first */
+        ulo[i + 1] = u0;
+        uhi[i + 1] = u1;
+        vlo[i + 1] = v0;
+        vhi[i + 1] = v1;
+        for (int k = 0; k < 3; k++) {
+            double *lw = cv[i + 1][k], *up = cv[i][k];
+            if (split_u) {
+                double m = (u0 + u1) / 2;
+                double e0 = eval(p.f[k], m, v0), e1 = eval(p.f[k], m, v1);
+                lw[0] = up[0];
+                lw[1] = up[1];
+                lw[2] = up[0] = e0;
+                lw[3] = up[1] = e1;
+            } else {
+                double m = (v0 + v1) / 2;
+                double e0 = eval(p.f[k], u0, m), e1 = eval(p.f[k], u1, m);
+                lw[0] = up[0];
+                lw[2] = up[2];
+                lw[1] = up[0] = e0;
+                lw[3] = up[2] = e1;
+            }
+        }
+        if (split_u) {
+            double m = (u0 + u1) / 2;
+            uhi[i + 1] = m;
+            ulo[i] = m;
+        } else {
+            double m = (v0 + v1) / 2;
+            vhi[i + 1] = m;
+            vlo[i] = m;
+        }
+        i++;
+    }
+    if (!(best < d2) || !(best > t0 && best < t1))
+        return;
+    /* Normal: forward differences of step 'accuracy' at the cell corner */
+    double f0[3], fu[3], fv[3];
+    for (int k = 0; k < 3; k++) {
+        f0[k] = eval(p.f[k], bu, bv);
+        fu[k] = eval(p.f[k], bu + p.acc, bv) - f0[k];
+        fv[k] = eval(p.f[k], bu, bv + p.acc) - f0[k];
+    }
+    vec3 n = v3_cross(v3(fu[0], fu[1], fu[2]), v3(fv[0], fv[1], fv[2]));
+    isect_push(out, best, n, bu, bv);
+}
+
+void geom_parametric_bounds(const iris_object *o, vec3 *lo, vec3 *hi)
+{
+    container(o, lo, hi);
+}
+
+const char *geom_parametric_check(const iris_object *o)
+{
+    if (!o->u.parametric.fx || !o->u.parametric.fy || !o->u.parametric.fz)
+        return "parametric needs three functions";
+    iris_vec2 a = o->u.parametric.uv_lo, b = o->u.parametric.uv_hi;
+    if (!isfinite(a.u) || !isfinite(a.v) || !isfinite(b.u) ||
+        !isfinite(b.v))
+        return "parametric uv range is not finite";
+    return NULL;
+}

@@ -1,0 +1,44 @@
+#!/bin/sh
+# SPDX-License-Identifier: MIT
+# tests/progressive/radiosity.sh: the global photon map (radiosity{},
+# src/photon/global.c) through the whole pipeline: plan, photon pass,
+# the tracer's shading call, progressive passes. The furnace scene has an
+# analytic answer: total = a/(1 - a) = 0.6667 for albedo a = 0.4, of
+# which the direct light is a = 0.4.
+. "$top_srcdir/tests/tap.sh"
+tap_plan 6
+scene="$top_srcdir/tests/progressive/furnace.pov"
+imgstat="$top_builddir/tests/progressive/imgstat"
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+r() { "$IRIS" -q "$scene" +W32 +H24 "$@" 2>/dev/null; }
+# within(value, expected, relative tolerance)
+within() { awk -v v="$1" -v e="$2" -v t="$3" \
+    'BEGIN { d = v - e; if (d < 0) d = -d; exit !(d <= t * e) }'; }
+
+"$IRIS" --plan "$scene" >"$tmp/plan" 2>/dev/null
+tap_ok "--plan keeps the global map" grep -q "global photon map (radiosity): yes" "$tmp/plan"
+
+r -o "$tmp/direct.exr" --no-photons
+set -- $("$imgstat" "$tmp/direct.exr")
+tap_ok "direct light alone is a = 0.4 (got $1)" within "$1" 0.4 0.001
+
+# One pass: 4e5 photons; the image mean averages 768 pixels over the
+# whole sphere, each a blend of 400-photon estimates (5% noise, strongly
+# correlated over a few pixels): the mean is within ~1%. Bound 2.5%.
+r -o "$tmp/p1.exr"
+set -- $("$imgstat" "$tmp/p1.exr")
+tap_ok "one pass: total a/(1-a) = 0.6667 within 2.5% (got $1)" \
+    within "$1" 0.666667 0.025
+sd1=$4
+tap_ok "grey stays grey (r = b = $1 $3)" test "$1" = "$3"
+
+# Four passes average independent maps with a shrinking radius: still
+# unbiased, and the pixel noise falls (about 1/2; bound: below 0.8 of one
+# pass's).
+r -o "$tmp/p4.exr" --passes 4
+set -- $("$imgstat" "$tmp/p4.exr")
+tap_ok "4 passes: 0.6667 within 2.5% (got $1)" within "$1" 0.666667 0.025
+tap_ok "4 passes: pixel noise falls ($4 < 0.8 x $sd1)" \
+    awk -v a="$4" -v b="$sd1" 'BEGIN { exit !(a < 0.8 * b) }'
+exit $((tap_failed > 0))
