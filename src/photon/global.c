@@ -434,19 +434,12 @@ enum iris_status pmap_build_global(const iris_scene *scene,
     iris_free(g.src);
     double t1 = par_now();
     struct photon_map *m = NULL;
-    if (rc == IRIS_OK) {
-        m = iris_calloc(1, sizeof *m);
-        if (!m)
-            rc = IRIS_ENOMEM;
-    }
     if (rc == IRIS_OK)
-        rc = pstore_build_mt(&m->store, all, n_all, opts->threads);
-    iris_free(all);
-    if (rc != IRIS_OK) {
-        photon_map_destroy(m);
+        rc = pmap_from_raw(scene, all, n_all, opts->threads, &m);
+    else
+        iris_free(all);
+    if (rc != IRIS_OK)
         return rc;
-    }
-    m->scene = scene;
     m->gather_max = PMAP_GLOBAL_GATHER;
     m->gather_min = 0; /* no 3R expansion: the global map is smooth */
     m->cone_k = 1.0;

@@ -78,6 +78,13 @@ pmap_build(const iris_scene *scene, const struct pmap_world *w,
            const struct photon_options *opts, struct photon_map **out,
            struct photon_stats *stats);
 
+/* A photon map over the photons 'all' (n of them; freed here, whatever
+** happens), built with 'threads' threads; the caller sets the estimate's
+** parameters. */
+enum iris_status pmap_from_raw(const iris_scene *scene,
+                               struct pstore_raw *all, size_t n, int threads,
+                               struct photon_map **out);
+
 /* The shooting rule of semantics §2.2b for one light and target. */
 bool pmap_shoots(const iris_light *l, const iris_object *target);
 

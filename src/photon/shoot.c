@@ -671,19 +671,12 @@ static enum iris_status build_caustic(const iris_scene *scene,
     double t1 = par_now();
 
     struct photon_map *m = NULL;
-    if (rc == IRIS_OK) {
-        m = iris_calloc(1, sizeof *m);
-        if (!m)
-            rc = IRIS_ENOMEM;
-    }
     if (rc == IRIS_OK)
-        rc = pstore_build_mt(&m->store, all, total, opts->threads);
-    iris_free(all);
-    if (rc != IRIS_OK) {
-        photon_map_destroy(m);
+        rc = pmap_from_raw(scene, all, total, opts->threads, &m);
+    else
+        iris_free(all);
+    if (rc != IRIS_OK)
         return rc;
-    }
-    m->scene = scene;
     m->gather_min = ps->gather_min > 0 ? ps->gather_min : 0;
     m->gather_max = ps->gather_max > PSTORE_MAX_K ? PSTORE_MAX_K
                                                   : ps->gather_max;
@@ -716,6 +709,24 @@ static enum iris_status build_caustic(const iris_scene *scene,
 ** hangs off the caustic one (an empty caustic map when the scene has no
 ** photons{} block).
 */
+enum iris_status pmap_from_raw(const iris_scene *scene,
+                               struct pstore_raw *all, size_t n, int threads,
+                               struct photon_map **out)
+{
+    struct photon_map *m = iris_calloc(1, sizeof *m);
+    enum iris_status rc = m ? IRIS_OK : IRIS_ENOMEM;
+    if (rc == IRIS_OK)
+        rc = pstore_build_mt(&m->store, all, n, threads);
+    iris_free(all);
+    if (rc != IRIS_OK) {
+        photon_map_destroy(m);
+        return rc;
+    }
+    m->scene = scene;
+    *out = m;
+    return IRIS_OK;
+}
+
 enum iris_status pmap_build(const iris_scene *scene, const struct pmap_world *w,
                             const struct photon_options *opts,
                             struct photon_map **out,

@@ -15,6 +15,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "fuzz_common.h"
 #include "iris/parse.h"
 #include "iris/render.h"
 #include "render/plan.h"
@@ -23,19 +24,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
-    iris_parse_options o;
-    memset(&o, 0, sizeof o);
-    o.max_while_iterations = 20000;
-    o.max_macro_depth = 64;
-    o.max_include_depth = 8;
-    o.max_memory = 64u << 20;
-    o.quiet_debug = true;
-    o.no_system_includes = true;
     iris_diag_list d;
-    iris_diag_list_init(&d);
     iris_scene *scene = NULL;
-    enum iris_status st = iris_parse_string("fuzz.pov", (const char *)data,
-                                            size, &o, &scene, &d);
+    enum iris_status st = fuzz_parse(data, size, &scene, &d);
     if (st == IRIS_OK && scene) {
         FILE *null = fopen("/dev/null", "w");
         /* quality 9 plans photons, 4 drops area lights, 0 everything */
