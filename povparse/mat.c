@@ -351,18 +351,22 @@ const char *pp_find_file(pp_state *ps, const pp_token *at, const char *name)
 /* The same, trying the file type's extensions as POV-Ray's FindFile
 ** (backendscenedata.cpp) does: a name that already ends in one of them
 ** is tried as written first, else last, after name+ext for each. */
-const char *pp_find_file_ext(pp_state *ps, const pp_token *at,
-                             const char *name, const char *const *exts)
+/* Searches for 'name' and name+ext for each of the NULL-ended 'exts' in
+** POV-Ray's order (FindFile, backendscenedata.cpp): a name that already
+** ends in one of them is tried as written first, else last. NULL when
+** the file is found nowhere. */
+static const char *search_ext(pp_state *ps, const pp_token *at,
+                              const char *name, const char *const *exts)
 {
     size_t len = strlen(name);
     bool exact_first = false;
-    for (int i = 0; exts[i]; i++) {
+    for (int i = 0; exts && exts[i]; i++) {
         size_t el = strlen(exts[i]);
         if (len >= el && strcmp(name + len - el, exts[i]) == 0)
             exact_first = true;
     }
     const char *found = exact_first ? find_in_path(ps, at, name) : NULL;
-    for (int i = 0; exts[i] && !found; i++) {
+    for (int i = 0; exts && exts[i] && !found; i++) {
         char *with = pp_salloc(ps, len + strlen(exts[i]) + 1);
         memcpy(with, name, len);
         strcpy(with + len, exts[i]);
@@ -370,7 +374,18 @@ const char *pp_find_file_ext(pp_state *ps, const pp_token *at,
     }
     if (!found && !exact_first)
         found = find_in_path(ps, at, name);
-    return found ? found : not_found(ps, at, name);
+    return found;
+}
+
+const char *pp_require_file(pp_state *ps, const pp_token *at,
+                            const char *name, const char *const *exts,
+                            const char *what)
+{
+    const char *found = search_ext(ps, at, name, exts);
+    if (!found)
+        pp_error(ps, at, "cannot find %s \"%s\" (looked beside the scene "
+                 "and in the library paths)", what, name);
+    return found;
 }
 
 static bool is_image_type(int k)
@@ -392,7 +407,7 @@ static iris_image_ref *image_file(pp_state *ps)
     pp_unget(ps);
     pp_token at = ps->tok;
     const char *name = pp_string(ps);
-    img->path = pp_find_file(ps, &at, name);
+    img->path = pp_require_file(ps, &at, name, NULL, "image file");
     return img;
 }
 

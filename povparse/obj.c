@@ -1135,7 +1135,7 @@ static void shape_body(pp_state *ps, iris_object *o, int kw, const pp_token *at)
             st = ps->tok;
             pp_unget(ps);
             const char *name = pp_string(ps);
-            img->path = pp_find_file(ps, &st, name);
+            img->path = pp_require_file(ps, &st, name, NULL, "image file");
             o->u.height_field.image = img;
         }
         for (;;) {
@@ -1168,7 +1168,8 @@ static void shape_body(pp_state *ps, iris_object *o, int kw, const pp_token *at)
             pp_unget(ps);
             const char *font = pp_string(ps);
             static const char *const ttf_ext[] = { ".ttf", ".TTF", NULL };
-            o->u.text.font = pp_find_file_ext(ps, &ft, font, ttf_ext);
+            o->u.text.font = pp_require_file(ps, &ft, font, ttf_ext,
+                                             "font file");
         }
         pp_accept(ps, T_COMMA);
         {

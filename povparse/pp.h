@@ -451,12 +451,17 @@ iris_pigment *pp_pigment_new(pp_state *ps, const pp_token *at);
 iris_fog *pp_fog(pp_state *ps);
 iris_sky_sphere *pp_sky_sphere(pp_state *ps, const iris_sky_sphere *b);
 void pp_pattern_init(iris_pattern *p);
-/* An image or font file resolved along the search path (scene arena). */
+/* A file resolved along the search path (scene arena); one found nowhere
+** keeps its name, with a located warning (density_file, not rendered). */
 const char *pp_find_file(pp_state *ps, const pp_token *at, const char *name);
-/* The same, also trying name+ext for each of the NULL-ended 'exts' in
-** POV-Ray's order (a font "cyrvetic" is found as cyrvetic.ttf). */
-const char *pp_find_file_ext(pp_state *ps, const pp_token *at,
-                             const char *name, const char *const *exts);
+/* A file the scene cannot do without (an image, a font), also trying
+** name+ext for each of the NULL-ended 'exts' (may be NULL) in POV-Ray's
+** order (a font "cyrvetic" is found as cyrvetic.ttf); not finding it is a
+** located error, as it is fatal in POV-Ray ("Cannot find image file",
+** "Cannot open font file"). 'what' names the kind of file. */
+const char *pp_require_file(pp_state *ps, const pp_token *at,
+                            const char *name, const char *const *exts,
+                            const char *what);
 
 /* ---- obj.c: objects ----------------------------------------------- */
 /* Parses an object if the current token starts one; NULL otherwise. */

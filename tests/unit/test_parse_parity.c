@@ -148,7 +148,7 @@ static void test_camera_zero_direction(void **state)
 ** ttf "name" without ".ttf": POV-Ray's FindFile tries name.ttf, name.TTF
 ** and then the name as written (backendscenedata.cpp). The font file
 ** and the scene live in a fresh temporary directory; the font is found
-** as dir/f.ttf with no warning. A missing font still warns, located.
+** as dir/f.ttf with no warning. A missing font is a located error.
 */
 static void test_font_extension(void **state)
 {
@@ -160,8 +160,7 @@ static void test_font_extension(void **state)
     snprintf(scene, sizeof scene, "%s/s.pov", dir);
     pt_put_file(font, "not a real font: only its name is resolved");
     pt_put_file(scene, "text { ttf \"f\" \"A\", 1, 0 }\n"
-                    "text { ttf \"f.ttf\" \"A\", 1, 0 }\n"
-                    "text { ttf \"nofont\" \"A\", 1, 0 }\n");
+                    "text { ttf \"f.ttf\" \"A\", 1, 0 }\n");
     iris_parse_options o;
     memset(&o, 0, sizeof o);
     o.no_system_includes = true;
@@ -171,11 +170,21 @@ static void test_font_extension(void **state)
     assert_int_equal(iris_parse_file(scene, &o, &sc, &d), IRIS_OK);
     assert_string_equal(sc->objects[0]->u.text.font, font);
     assert_string_equal(sc->objects[1]->u.text.font, font);
-    assert_int_equal(d.n_warnings, 1);
-    assert_int_equal(d.items[0].line, 3);
-    assert_non_null(strstr(d.items[0].message, "nofont"));
+    assert_int_equal(d.n_warnings, 0);
     iris_diag_list_fini(&d);
     iris_scene_destroy(sc);
+    /* a font found nowhere is fatal in POV-Ray: a located error here */
+    pt_put_file(scene, "\ntext { ttf \"nofont\" \"A\", 1, 0 }\n");
+    iris_diag_list_init(&d);
+    sc = NULL;
+    assert_int_equal(iris_parse_file(scene, &o, &sc, &d), IRIS_EPARSE);
+    assert_null(sc);
+    assert_true(d.n > 0);
+    assert_int_equal(d.items[0].sev, IRIS_SEV_ERROR);
+    assert_int_equal(d.items[0].line, 2);
+    assert_int_equal(d.items[0].col, 12);
+    assert_non_null(strstr(d.items[0].message, "nofont"));
+    iris_diag_list_fini(&d);
     unlink(font);
     unlink(scene);
     rmdir(dir);
