@@ -39,6 +39,8 @@ echo "| scene | iris shot | iris stored | B/photon | iris shoot s (1 / $threads 
 echo "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |"
 for scene in "$@"; do
     [ -f "$scene" ] || continue
+    # POV-Ray runs in $tmp: the scene's path must not be relative
+    case $scene in /*) ;; *) scene=$PWD/$scene ;; esac
     name=$(basename "$scene" .pov)
     one=$("$bench" -t 1 "$scene" 2>/dev/null | tail -1)
     many=$("$bench" -t "$threads" -q 0 "$scene" 2>/dev/null | tail -1)
