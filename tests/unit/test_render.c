@@ -165,6 +165,24 @@ static void world_fini(struct world *w)
     mat_ctx_destroy(w->mat);
 }
 
+/* The shadow scenes: the floor y = 0, a unit sphere at (0, 5, 0) and a
+** point light at (0, 10, 0), not yet built; *sphere and *light (either
+** may be NULL) get the sphere and the light. */
+static struct world *shadow_world(iris_object **sphere, iris_light **light)
+{
+    struct world *w = iris_calloc(1, sizeof *w);
+    assert_non_null(w);
+    world_init(w);
+    add_plane(w, v3(0, 1, 0), 0);
+    iris_object *s = add_sphere(w, v3(0, 5, 0), 1);
+    iris_light *l = add_light(w, v3(0, 10, 0));
+    if (sphere)
+        *sphere = s;
+    if (light)
+        *light = l;
+    return w;
+}
+
 /* Traces one ray from 'o' along 'd' (normalised here). */
 static void shoot(struct world *w, vec3 o, vec3 d, double rgb[3])
 {
@@ -425,11 +443,8 @@ static void test_diffuse(void **state)
 static void test_shadows(void **state)
 {
     (void)state;
-    struct world *w = iris_calloc(1, sizeof *w);
-    world_init(w);
-    add_plane(w, v3(0, 1, 0), 0);
-    iris_object *s = add_sphere(w, v3(0, 5, 0), 1);
-    add_light(w, v3(0, 10, 0));
+    iris_object *s;
+    struct world *w = shadow_world(&s, NULL);
     world_build(w, 9);
     double c[3];
     shoot(w, v3(0, 2, -3), v3(0, -2, 3), c); /* hits the plane at 0 */
@@ -459,11 +474,7 @@ static void test_shadows(void **state)
 static void test_projected_through(void **state)
 {
     (void)state;
-    struct world *w = iris_calloc(1, sizeof *w);
-    world_init(w);
-    add_plane(w, v3(0, 1, 0), 0);
-    add_sphere(w, v3(0, 5, 0), 1);
-    add_light(w, v3(0, 10, 0));
+    struct world *w = shadow_world(NULL, NULL);
     world_build(w, 9);
     double c[3];
     shoot(w, v3(0, 2, -3), v3(0, -2, 3), c);
@@ -489,11 +500,8 @@ static void test_projected_through(void **state)
 static void test_projected_through_area(void **state)
 {
     (void)state;
-    struct world *w = iris_calloc(1, sizeof *w);
-    world_init(w);
-    add_plane(w, v3(0, 1, 0), 0);
-    add_sphere(w, v3(0, 5, 0), 1);
-    iris_light *l = add_light(w, v3(0, 10, 0));
+    iris_light *l;
+    struct world *w = shadow_world(NULL, &l);
     l->area = true;
     l->axis1 = v3(2, 0, 0);
     l->axis2 = v3(0, 0, 2);
