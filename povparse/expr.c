@@ -17,7 +17,6 @@
 #include <string.h>
 #include <sys/stat.h>
 
-#include "material/noise.h"
 #include "math/vec3.h"
 #include "pp.h"
 
@@ -853,22 +852,20 @@ static pp_value factor(pp_state *ps)
         return vval(3, p.x, p.y, p.z, 0);
     }
     case T_VTURBULENCE: {
-        /* vturbulence(lambda, omega, octaves, <p>): POV-Ray's DTurbulence,
-        ** octaves clamped to 1..10 as POV-Ray does */
+        /* vturbulence(lambda, omega, octaves, <p>): the core's noise */
         lparen(ps);
-        struct noise_turb t;
-        t.lambda = pp_float(ps);
+        double lambda = pp_float(ps);
         comma(ps);
-        t.omega = pp_float(ps);
+        double omega = pp_float(ps);
         comma(ps);
         double oct = pp_float(ps);
-        t.octaves = !(oct >= 1) ? 1 : oct > 10 ? 10 : (int)oct;
         comma(ps);
         iris_vec3 p = pp_vector(ps);
         pp_accept(ps, T_COMMA);
         rparen(ps);
-        vec3 d = noise_dturbulence(p, &t);
-        return vval(3, d.x, d.y, d.z, 0);
+        double in[3] = { p.x, p.y, p.z }, d[3];
+        iris_fn_vturbulence(lambda, omega, oct, in, d);
+        return vval(3, d[0], d[1], d[2], 0);
     }
     case T_SEED: {
         double s = arg1(ps);

@@ -121,6 +121,12 @@ double iris_fn_eval(const iris_fn *fn, const double *args, int n_args);
 ** ...). Returns 0 for numbers it does not implement. */
 double iris_fn_internal(int n, const double *args, int n_args);
 
+/* SDL's vturbulence(lambda, omega, octaves, <p>): POV-Ray's DTurbulence
+** with its noise, octaves clamped to 1..10 as POV-Ray does; the parser
+** calls it through here, since the noise lives in the core. */
+void iris_fn_vturbulence(double lambda, double omega, double octaves,
+                         const double p[3], double out[3]);
+
 #ifdef __cplusplus
 }
 #endif

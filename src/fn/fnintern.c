@@ -632,3 +632,16 @@ double iris_fn_internal(int n, const double *args, int n_args)
     }
     return isfinite(r) ? r : 0;
 }
+
+void iris_fn_vturbulence(double lambda, double omega, double octaves,
+                         const double p[3], double out[3])
+{
+    struct noise_turb t;
+    t.lambda = lambda;
+    t.omega = omega;
+    t.octaves = !(octaves >= 1) ? 1 : octaves > 10 ? 10 : (int)octaves;
+    vec3 d = noise_dturbulence(v3(p[0], p[1], p[2]), &t);
+    out[0] = d.x;
+    out[1] = d.y;
+    out[2] = d.z;
+}

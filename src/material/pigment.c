@@ -17,9 +17,9 @@
 #include "material/mat_internal.h"
 
 static void image_to_working(const struct mat_ctx *ctx, iris_colour *c);
-static bool image_map_colour(const struct mat_ctx *ctx,
-                             const iris_image_ref *ref, vec3 q,
-                             iris_colour *out);
+static bool image_texel_colour(const struct mat_ctx *ctx,
+                               const iris_image_ref *ref, vec3 q,
+                               bool working, iris_colour *out);
 
 /* A colour-map entry of POV-Ray's built-in default maps. */
 struct def_entry {
@@ -177,7 +177,7 @@ bool mat_eval_pigment(const struct mat_ctx *ctx, const iris_pigment *pig,
         if (!pat->image)
             return true;
         vec3 q = pat_space(ctx, pat, pt->p);
-        if (!image_map_colour(ctx, pat->image, q, out)) {
+        if (!image_texel_colour(ctx, pat->image, q, true, out)) {
             iris_colour clear = { 1, 1, 1, 0, 1 };
             *out = clear;
             return false;
@@ -368,34 +368,28 @@ static void sample_at(const struct mat_ctx *working, const iris_image *img,
     out->t = c0.t * f0 + c1.t * f1 + c2.t * f2 + c3.t * f3;
 }
 
-bool mat_image_lookup(const struct mat_ctx *ctx, const iris_image_ref *ref,
-                      vec3 q, iris_colour *out)
+/* The colour of image 'ref' at q, black for a missing image (reported
+** once); texels converted into the working space when 'working' (an
+** image_map pigment), as stored otherwise. False off a `once` image. */
+static bool image_texel_colour(const struct mat_ctx *ctx,
+                               const iris_image_ref *ref, vec3 q,
+                               bool working, iris_colour *out)
 {
     memset(out, 0, sizeof *out);
     const iris_image *img = mat_find_image(ctx, ref);
     if (!img || img->width <= 0 || img->height <= 0)
-        return true; /* a missing image renders black (reported once) */
+        return true;
     double x, y;
     if (!map_pos(ref, img->width, img->height, q, &x, &y))
         return false;
-    sample_at(NULL, img, ref, x, y, out);
+    sample_at(working ? ctx : NULL, img, ref, x, y, out);
     return true;
 }
 
-/* mat_image_lookup() of an image_map pigment: in the working space. */
-static bool image_map_colour(const struct mat_ctx *ctx,
-                             const iris_image_ref *ref, vec3 q,
-                             iris_colour *out)
+bool mat_image_lookup(const struct mat_ctx *ctx, const iris_image_ref *ref,
+                      vec3 q, iris_colour *out)
 {
-    memset(out, 0, sizeof *out);
-    const iris_image *img = mat_find_image(ctx, ref);
-    if (!img || img->width <= 0 || img->height <= 0)
-        return true; /* a missing image renders black (reported once) */
-    double x, y;
-    if (!map_pos(ref, img->width, img->height, q, &x, &y))
-        return false;
-    sample_at(ctx, img, ref, x, y, out);
-    return true;
+    return image_texel_colour(ctx, ref, q, false, out);
 }
 
 /* Image colours come decoded to linear light (iris_image_read), but the

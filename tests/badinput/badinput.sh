@@ -64,20 +64,6 @@ TODOS='
 
 todo_reason() { printf '%s\n' "$TODOS" | sed -n "s/^$1: //p"; }
 
-todo_result() { # todo_result STATUS NAME TODO-REASON
-    tap_n=$((tap_n + 1))
-    if [ "$1" -eq 0 ]; then
-        echo "ok $tap_n - $2"
-        [ -n "$3" ] && echo "# note: passes now, drop the TODO: $3"
-    elif [ -n "$3" ]; then
-        echo "not ok $tap_n - $2 # TODO $3"
-    else
-        echo "not ok $tap_n - $2"
-        tap_failed=$((tap_failed + 1))
-    fi
-    return 0
-}
-
 # run FILE OUT [ARGS...]: renders FILE under the limits; sets rc, secs.
 # -k 2: iris ignores SIGTERM while it parses, so SIGKILL follows.
 run() {
@@ -136,7 +122,7 @@ for f in "$cases"/*.pov "$tmp/gen"/*.pov; do
         grep -q "$name\.pov:$line:[0-9]*: $sev:" "$tmp/out" ||
             why="$why no '$name.pov:$line:COL: $sev:' diagnostic;"
     fi
-    todo_result "$([ -z "$why" ]; echo $?)" \
+    tap_result_todo "$([ -z "$why" ]; echo $?)" \
         "$name: exit $want with a diagnostic at line $line (${secs}s)" \
         "$(todo_reason "$name")"
     if [ -n "$why" ]; then
@@ -165,7 +151,7 @@ io_case() { # io_case NAME TODO LINE SCENE-TEXT: must fail at LINE
     grep -q "$n\.pov:$l:[0-9]*: error:" "$tmp/out"
     st=$?
     [ "$rc" = 2 ] || st=1
-    todo_result $st "$n: refused by default (exit 2, error at line $l)" "$todo"
+    tap_result_todo $st "$n: refused by default (exit 2, error at line $l)" "$todo"
     [ $st = 0 ] || { echo "# exit $rc"; head -n 2 "$tmp/out" | sed 's/^/#   /'; }
 }
 io_case include_outside "" 2 '#include "../outside/secret.inc"'
@@ -180,7 +166,7 @@ if [ -f /usr/share/povray-3.7/include/colors.inc ]; then
     printf '#include "head.inc"\n#include "colors.inc"\nsphere { 0, 1 pigment { Red } }\n' \
         >"$S/library.pov"
     run "$S/library.pov" "$tmp/l.png"
-    todo_result "$rc" "#include \"colors.inc\" from the library path is allowed" ""
+    tap_result_todo "$rc" "#include \"colors.inc\" from the library path is allowed" ""
 else
     tap_n=$((tap_n + 1))
     echo "ok $tap_n - library include # SKIP povray-includes not installed"
@@ -188,7 +174,7 @@ fi
 
 # The same include is allowed with --unrestricted-io.
 run "$S/include_outside.pov" "$tmp/u.png" --unrestricted-io
-todo_result "$rc" "include_outside: renders with --unrestricted-io" ""
+tap_result_todo "$rc" "include_outside: renders with --unrestricted-io" ""
 
 # #fopen ... write is refused (a located warning, nothing written), in
 # the scene's own directory and outside it.
@@ -200,7 +186,7 @@ if [ "$rc" = 0 ] || [ "$rc" = 2 ]; then
     [ -e "$S/written.txt" ] || [ -e "$tmp/outside/written.txt" ] || st=0
 fi
 grep -q "fopen_write\.pov:2:[0-9]*: \(warning\|error\):" "$tmp/out" || st=1
-todo_result $st "#fopen write: refused with a diagnostic at line 2, no file written" ""
+tap_result_todo $st "#fopen write: refused with a diagnostic at line 2, no file written" ""
 
 # --allow-writes: #fopen ... write then creates files in the scene's
 # directory (and below it), and still nowhere else.
@@ -209,7 +195,7 @@ printf '#include "head.inc"\n#fopen F "written.txt" write\n#write (F, "x", 1+1, 
 run "$S/allowed_write.pov" "$tmp/aw.png" --allow-writes
 st=1
 [ "$rc" = 0 ] && [ "$(cat "$S/written.txt" 2>/dev/null)" = "x2" ] && st=0
-todo_result $st "--allow-writes: #write in the scene's directory writes 'x2' (exit $rc)" ""
+tap_result_todo $st "--allow-writes: #write in the scene's directory writes 'x2' (exit $rc)" ""
 rm -f "$S/written.txt"
 printf '#include "head.inc"\n#fopen G "../outside/written.txt" write\n#write (G, "x")\n#fclose G\n' \
     >"$S/allowed_outside.pov"
@@ -217,7 +203,7 @@ run "$S/allowed_outside.pov" "$tmp/ao.png" --allow-writes
 st=0
 [ -e "$tmp/outside/written.txt" ] && st=1
 grep -q "allowed_outside\.pov:2:[0-9]*: \(warning\|error\):" "$tmp/out" || st=1
-todo_result $st "--allow-writes: a write outside the scene's directory is still refused at line 2" ""
+tap_result_todo $st "--allow-writes: a write outside the scene's directory is still refused at line 2" ""
 [ $st = 0 ] || { echo "# exit $rc"; head -n 2 "$tmp/out" | sed 's/^/#   /'; }
 
 # The loop limit: 1000000 iterations by default (an endless loop stops in
@@ -228,9 +214,9 @@ printf '#include "head.inc"\n#declare I = 0;\n#while (I < 1000001)\n#declare I =
 run "$S/long_loop.pov" "$tmp/ll.png"
 st=1
 [ "$rc" = 2 ] && grep -q "long_loop\.pov:3:1: error:.*--max-loop-iterations" "$tmp/out" && st=0
-todo_result $st "a 1000001-iteration #while stops at long_loop.pov:3:1, naming the option (${secs}s)" ""
+tap_result_todo $st "a 1000001-iteration #while stops at long_loop.pov:3:1, naming the option (${secs}s)" ""
 run "$S/long_loop.pov" "$tmp/ll.png" --max-loop-iterations=2000000
-todo_result "$rc" "... and renders with --max-loop-iterations=2000000 (exit $rc, ${secs}s)" ""
+tap_result_todo "$rc" "... and renders with --max-loop-iterations=2000000 (exit $rc, ${secs}s)" ""
 
 # SIGINT while parsing: exit 130 within a second, with the place the
 # parse had reached (an endless loop, with the loop limit out of reach).
@@ -249,7 +235,7 @@ kill $killer 2>/dev/null
 st=1
 [ "$rc" = 130 ] && [ "$secs" -le 2 ] &&
     grep -q "while_forever\.pov:[0-9]*:[0-9]*: error: interrupted" "$tmp/out" && st=0
-todo_result $st "SIGINT while parsing: exit 130 (got $rc) within 2 s (${secs}s), located" ""
+tap_result_todo $st "SIGINT while parsing: exit 130 (got $rc) within 2 s (${secs}s), located" ""
 
 # The output never replaces the scene: not by its own name, not through
 # another spelling of its path, not through a symbolic link.
@@ -261,7 +247,7 @@ for o in "$S/keep.pov" "$S/../scene/./keep.pov" "$tmp/link.png"; do
     cmp -s "$S/keep.pov" "$tmp/keep.orig"
     st=$?
     [ "$rc" = 2 ] || st=1
-    todo_result $st "output $(echo "$o" | sed "s|$tmp/||") does not replace the scene (exit 2)" ""
+    tap_result_todo $st "output $(echo "$o" | sed "s|$tmp/||") does not replace the scene (exit 2)" ""
 done
 
 # A failing write leaves no file behind: a file size limit of 1 block
@@ -274,11 +260,11 @@ cp "$tmp/w/old.exr" "$tmp/old.orig"
     -o "$tmp/w/new.exr" ) >/dev/null 2>&1
 rc=$?
 left=$(ls -A "$tmp/w" | grep -v '^old.exr$' | tr '\n' ' ')
-todo_result "$([ "$rc" = 1 ] && [ -z "$left" ]; echo $?)" \
+tap_result_todo "$([ "$rc" = 1 ] && [ -z "$left" ]; echo $?)" \
     "a failed write exits 1 and leaves no file (left: '$left')" ""
 ( trap '' XFSZ; ulimit -f 1; exec "$IRIS" -q +W256 +H256 "$S/keep.pov" \
     -o "$tmp/w/old.exr" ) >/dev/null 2>&1
 cmp -s "$tmp/w/old.exr" "$tmp/old.orig"
-todo_result $? "a failed write leaves the older image of that name intact" ""
+tap_result_todo $? "a failed write leaves the older image of that name intact" ""
 
 echo "1..$tap_n"

@@ -53,20 +53,6 @@ LIMIT=30        # seconds per render; each takes well under 3 s here
 # the limit only has to catch a hang there.
 [ -n "${IRIS_SANITIZED:-}" ] && LIMIT=150
 
-todo_result() { # todo_result STATUS NAME TODO-REASON
-    tap_n=$((tap_n + 1))
-    if [ "$1" -eq 0 ]; then
-        echo "ok $tap_n - $2"
-        [ -n "$3" ] && echo "# note: passes now, drop the TODO: $3"
-    elif [ -n "$3" ]; then
-        echo "not ok $tap_n - $2 # TODO $3"
-    else
-        echo "not ok $tap_n - $2"
-        tap_failed=$((tap_failed + 1))
-    fi
-    return 0
-}
-
 # render NAME SIZE ARGS...: renders to $tmp/NAME.exr; sets $rc and $secs.
 render() {
     r_name=$1; r_size=$2; shift 2
@@ -119,12 +105,12 @@ run_case() {
               why="$why max Y $maxy or channel $maxc exceed the spectral bound for $b;" ;;
     zero) [ "$maxc" = 0 ] || why="$why a black light gives $maxc;" ;;
     esac
-    todo_result "$([ -z "$why" ]; echo $?)" \
+    tap_result_todo "$([ -z "$why" ]; echo $?)" \
         "$name: finite, bounded ($bound), exits 0 in ${s1}s" "$todo"
     [ -n "$why" ] && echo "# $scene $args:$why"
     [ $pair = yes ] || return 0
     out=$("$check" same "$tmp/$name.exr" "$tmp/$name-2.exr" 2>&1)
-    todo_result $? "$name: same pixels with 1 and 2 threads" "$todo"
+    tap_result_todo $? "$name: same pixels with 1 and 2 threads" "$todo"
     [ -n "$out" ] && echo "# $out"
 }
 
@@ -132,7 +118,7 @@ run_case() {
 mean_close() {
     a=$(eval echo "\$mean_$1") b=$(eval echo "\$mean_$2")
     awk -v a="$a" -v b="$b" -v t="$3" 'BEGIN { d = a / b - 1; exit !(d < t && d > -t) }'
-    todo_result $? "$1: mean Y $a within $3 of $2's $b" "$4"
+    tap_result_todo $? "$1: mean Y $a within $3 of $2's $b" "$4"
 }
 
 G=glass.pov
@@ -178,7 +164,7 @@ slab_case() { # slab_case CAM TOL SPREAD DISP DSAMP
     msg="slab CAM $1, dispersion $4, $5 wavelengths: mean rgb ${10} ${11} ${12}"
     msg="$msg within $2 of $6 $7 $8"
     [ "$3" = -1 ] || msg="$msg, pixel spread ${13} <= $3"
-    todo_result $rc "$msg" ""
+    tap_result_todo $rc "$msg" ""
 }
 slab_case 0 1e-3 1e-3 1.2 7
 slab_case 0 1e-3 1e-3 1.5 2
@@ -223,7 +209,7 @@ run_case shapes_endless "rgb 1" "" shapes.pov Declare=KIND=4
 render thin_nosky "+W$W +H$H" "$scenes/thin.pov" Declare=T=1e-4
 render thin_sky "+W$W +H$H" "$scenes/thin.pov" Declare=T=1e-4 Declare=SKY=1
 out=$("$check" same "$tmp/thin_nosky.exr" "$tmp/thin_sky.exr" 2>&1)
-todo_result $? "a 1e-4 shell renders the same inside a 1e6 sphere" ""
+tap_result_todo $? "a 1e-4 shell renders the same inside a 1e6 sphere" ""
 [ -n "$out" ] && echo "# $out"
 # ... and with photons: the hidden sphere only collects a few stray
 # photons, so the caustic under the shell must stay (30 dB allows photon
@@ -233,7 +219,7 @@ render thin_ph_sky "+W$W +H$H" "$scenes/thin.pov" Declare=T=1e-2 \
     Declare=PHOTONS=1 Declare=SKY=1
 p=$("$imgtool" psnr "$tmp/thin_ph.exr" "$tmp/thin_ph_sky.exr" 2>&1)
 awk -v p="$p" 'BEGIN { exit !(p + 0 >= 30) }'
-todo_result $? "the caustic stays when a hidden 1e6 sphere is added (PSNR $p dB >= 30)" ""
+tap_result_todo $? "the caustic stays when a hidden 1e6 sphere is added (PSNR $p dB >= 30)" ""
 
 # The same scene at scale 1e-6 and 1e6 (camera, light, checker and glass
 # all scaled): the same image. 40 dB on sRGB values is an RMS difference
@@ -243,7 +229,7 @@ for s in 1e-6 1e6; do
     render scale_$s "+W$W +H$H" "$scenes/$G" Declare=S=$s Declare=DISP=1.2
     p=$("$imgtool" psnr "$tmp/scale_1.exr" "$tmp/scale_$s.exr" 2>&1)
     awk -v p="$p" 'BEGIN { exit !(p + 0 >= 40) }'
-    todo_result $? "scale $s renders as scale 1 (PSNR $p dB >= 40)" ""
+    tap_result_todo $? "scale $s renders as scale 1 (PSNR $p dB >= 40)" ""
 done
 
 # scale 0: POV-Ray warns and uses 1. Line 9, column 5 of scale0.pov.
@@ -251,17 +237,17 @@ done
 timeout "$LIMIT" "$IRIS" +W$W +H$H --seed=7 "$scenes/scale0.pov" Declare=SC=0 \
     -o "$tmp/scale0.exr" 2>"$tmp/scale0.err"
 grep -q "scale0.pov:9:5: warning:" "$tmp/scale0.err"
-todo_result $? "scale 0 warns at scale0.pov:9:5" ""
+tap_result_todo $? "scale 0 warns at scale0.pov:9:5" ""
 render scale0_1 "+W$W +H$H" "$scenes/scale0.pov" Declare=SC=1
 "$check" same "$tmp/scale0.exr" "$tmp/scale0_1.exr"
-todo_result $? "scale 0 renders exactly as scale 1" ""
+tap_result_todo $? "scale 0 renders exactly as scale 1" ""
 
 # The files themselves, byte for byte (cmp), from two runs a second apart.
 render same_a "+W$W +H$H" "$scenes/$G" Declare=DISP=1.2
 sleep 1
 render same_b "+W$W +H$H" "$scenes/$G" Declare=DISP=1.2
 cmp -s "$tmp/same_a.exr" "$tmp/same_b.exr"
-todo_result $? "the same EXR file, byte for byte, from two runs" ""
+tap_result_todo $? "the same EXR file, byte for byte, from two runs" ""
 
 # Photons on: the caustic cases again, so the photon path sees them.
 PH=Declare=PHOTONS=1
@@ -288,7 +274,7 @@ for c in "1 0.02" "1.2 0.02" "1 0.005"; do
     set -- $1 $2 $("$check" "$tmp/caustic.exr" 2>/dev/null)
     awk -v m="${6:-x}" -v b="${3:-x}" \
         'BEGIN { exit !(b == 0 && m >= 0.95 && m <= 1.02) }'
-    todo_result $? "caustic, dispersion $1, spacing $2: floor mean Y ${6:-?} in [0.95, 1.02]" ""
+    tap_result_todo $? "caustic, dispersion $1, spacing $2: floor mean Y ${6:-?} in [0.95, 1.02]" ""
 done
 
 echo "1..$tap_n"
