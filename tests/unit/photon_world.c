@@ -46,13 +46,9 @@ static iris_object *new_object(struct tw_scene *t, enum iris_object_kind kind,
     o->photon_density = 1;
     o->split_union = true;
     iris_finish *f = &t->fin[k];
+    iris_finish_defaults(f);
+    f->ambient = (iris_colour){0, 0, 0, 0, 0};
     f->diffuse = diffuse;
-    f->brilliance = 1;
-    f->phong_size = 40;
-    f->roughness = 0.05;
-    f->reflection_falloff = 1;
-    f->reflection_exponent = 1;
-    f->legacy_refraction = 1;
     t->pig[k].colour = col;
     t->tex[k].pigment = &t->pig[k];
     t->tex[k].finish = f;

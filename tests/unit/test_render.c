@@ -69,20 +69,6 @@ static void world_init(struct world *w)
     s->camera.up = v3(0, 1, 0);
 }
 
-/* A finish with POV-Ray's defaults. */
-static void finish_defaults(iris_finish *f)
-{
-    memset(f, 0, sizeof *f);
-    f->ambient.r = f->ambient.g = f->ambient.b = 0.1;
-    f->diffuse = 0.6;
-    f->brilliance = 1;
-    f->phong_size = 40;
-    f->roughness = 0.05;
-    f->reflection_falloff = 1;
-    f->reflection_exponent = 1;
-    f->legacy_refraction = 1;
-}
-
 static iris_object *add_obj(struct world *w, enum iris_object_kind kind,
                             double r, double g, double b, double f, double t)
 {
@@ -90,7 +76,7 @@ static iris_object *add_obj(struct world *w, enum iris_object_kind kind,
     iris_object *o = &w->obj[i];
     o->kind = kind;
     w->pig[i].colour = (iris_colour){ r, g, b, f, t };
-    finish_defaults(&w->fin[i]);
+    iris_finish_defaults(&w->fin[i]);
     w->tex[i].pigment = &w->pig[i];
     w->tex[i].finish = &w->fin[i];
     o->texture = &w->tex[i];
