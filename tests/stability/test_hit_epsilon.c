@@ -23,54 +23,7 @@
 #include "util/arena.h"
 #include "util/rng.h"
 
-static iris_texture tex;
-
-static iris_scene *scene_new(void)
-{
-    iris_arena *ar = arena_create(0);
-    iris_scene *sc = arena_alloc(ar, sizeof *sc);
-    sc->arena = ar;
-    sc->objects = arena_array(ar, 64, sizeof *sc->objects);
-    return sc;
-}
-
-static iris_object *obj(iris_scene *sc, enum iris_object_kind k)
-{
-    iris_object *o = arena_alloc(sc->arena, sizeof *o);
-    o->kind = k;
-    o->texture = &tex;
-    iris_transform_identity(&o->transform);
-    return o;
-}
-
-static iris_object *add(iris_scene *sc, iris_object *o)
-{
-    sc->objects[sc->n_objects++] = o;
-    return o;
-}
-
-static iris_object *sphere(iris_scene *sc, vec3 c, double r)
-{
-    iris_object *o = obj(sc, IRIS_OBJ_SPHERE);
-    o->u.sphere.centre = c;
-    o->u.sphere.radius = r;
-    return o;
-}
-
-static void apply(iris_object *o, const xform *x)
-{
-    xf_compose(&o->transform, &o->transform, x);
-    o->has_transform = true;
-}
-
-static struct accel *build(const iris_scene *sc)
-{
-    struct accel *a = NULL;
-    char err[256];
-    assert_int_equal(accel_build(sc, &a, NULL, err, sizeof err), IRIS_OK);
-    assert_non_null(a);
-    return a;
-}
+#include "scene_builder.h"
 
 /* difference { sphere { 0, 1 } sphere { 0, 1 - 1e-7 } } inside a sphere of
 ** radius 1e6: the ray through the centre meets the outer wall at t = 4

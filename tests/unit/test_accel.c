@@ -19,45 +19,14 @@
 #include "util/rng.h"
 #include "util/thread.h"
 
-static iris_texture tex_a, tex_b;
-static iris_interior glass;
+#include "scene_builder.h"
 
-/* A scene with room for 64 top-level objects. */
-static iris_scene *scene_new(void)
-{
-    iris_arena *ar = arena_create(0);
-    iris_scene *sc = arena_alloc(ar, sizeof *sc);
-    sc->arena = ar;
-    sc->objects = arena_array(ar, 64, sizeof *sc->objects);
-    return sc;
-}
+static iris_texture tex_b;
+static iris_interior glass;
 
 static void scene_free(iris_scene *sc)
 {
     arena_destroy(sc->arena);
-}
-
-static iris_object *obj(iris_scene *sc, enum iris_object_kind k)
-{
-    iris_object *o = arena_alloc(sc->arena, sizeof *o);
-    o->kind = k;
-    o->texture = &tex_a;
-    iris_transform_identity(&o->transform);
-    return o;
-}
-
-static iris_object *add(iris_scene *sc, iris_object *o)
-{
-    sc->objects[sc->n_objects++] = o;
-    return o;
-}
-
-static iris_object *sphere(iris_scene *sc, vec3 c, double r)
-{
-    iris_object *o = obj(sc, IRIS_OBJ_SPHERE);
-    o->u.sphere.centre = c;
-    o->u.sphere.radius = r;
-    return o;
 }
 
 static iris_object *box(iris_scene *sc, vec3 lo, vec3 hi)
@@ -78,22 +47,6 @@ static iris_object *csg(iris_scene *sc, enum iris_object_kind k,
     o->u.csg.children[0] = a;
     o->u.csg.children[1] = b;
     return o;
-}
-
-/* Appends transform 'x' after the object's own (POV-Ray order). */
-static void apply(iris_object *o, const xform *x)
-{
-    xf_compose(&o->transform, &o->transform, x);
-    o->has_transform = true;
-}
-
-static struct accel *build(const iris_scene *sc)
-{
-    struct accel *a = NULL;
-    char err[256];
-    assert_int_equal(accel_build(sc, &a, NULL, err, sizeof err), IRIS_OK);
-    assert_non_null(a);
-    return a;
 }
 
 static bool shoot(const struct accel *a, vec3 o, vec3 d, struct hit *h)
@@ -127,7 +80,7 @@ static void test_sphere_hit(void **state)
     assert_vec(h.shading_n, v3(0, 0, -1), 1e-12);
     assert_ptr_equal(h.obj, s);
     assert_ptr_equal(h.top, s);
-    assert_ptr_equal(h.texture, &tex_a);
+    assert_ptr_equal(h.texture, &sb_texture);
     assert_ptr_equal(h.interior, &glass);
     /* From inside: the far wall, normal still outward */
     assert_true(shoot(a, v3(1, 2, 3), v3(1, 0, 0), &h));
@@ -796,7 +749,7 @@ static void test_blob_texture(void **state)
     struct accel *a = build(sc);
     struct hit h;
     assert_true(shoot(a, v3(-1, 0, -5), v3(0, 0, 1), &h));
-    assert_ptr_equal(h.texture, &tex_a); /* no own texture: the blob's */
+    assert_ptr_equal(h.texture, &sb_texture); /* no own texture: the blob's */
     assert_true(shoot(a, v3(1, 0, -5), v3(0, 0, 1), &h));
     assert_ptr_equal(h.texture, &tex_b);
     accel_destroy(a);
