@@ -1,6 +1,6 @@
 ## tests: cmocka unit tests (TAP) and data-driven shell tests (TAP).
 ## Each area keeps its own fragment so that parts grow independently.
-EXTRA_DIST += tests/testutil.h tests/tap.sh
+EXTRA_DIST += tests/testutil.h tests/scene_builder.h tests/tap.sh
 include $(srcdir)/tests/unit/util.mk
 include $(srcdir)/tests/unit/parse.mk
 include $(srcdir)/tests/unit/geometry.mk
