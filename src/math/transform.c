@@ -160,36 +160,40 @@ void xf_compose(xform *out, const xform *a, const xform *b)
     *out = r;
 }
 
-vec3 xf_point(const xform *t, vec3 p)
+/* The affine map of the 3x4 part of 'm' applied to a point (with the
+** translation) and to a direction (without it). */
+static inline vec3 affine_point(const double (*m)[4], vec3 p)
 {
-    const double (*m)[4] = t->m;
     return v3(m[0][0] * p.x + m[0][1] * p.y + m[0][2] * p.z + m[0][3],
               m[1][0] * p.x + m[1][1] * p.y + m[1][2] * p.z + m[1][3],
               m[2][0] * p.x + m[2][1] * p.y + m[2][2] * p.z + m[2][3]);
+}
+
+static inline vec3 affine_dir(const double (*m)[4], vec3 d)
+{
+    return v3(m[0][0] * d.x + m[0][1] * d.y + m[0][2] * d.z,
+              m[1][0] * d.x + m[1][1] * d.y + m[1][2] * d.z,
+              m[2][0] * d.x + m[2][1] * d.y + m[2][2] * d.z);
+}
+
+vec3 xf_point(const xform *t, vec3 p)
+{
+    return affine_point(t->m, p);
 }
 
 vec3 xf_dir(const xform *t, vec3 d)
 {
-    const double (*m)[4] = t->m;
-    return v3(m[0][0] * d.x + m[0][1] * d.y + m[0][2] * d.z,
-              m[1][0] * d.x + m[1][1] * d.y + m[1][2] * d.z,
-              m[2][0] * d.x + m[2][1] * d.y + m[2][2] * d.z);
+    return affine_dir(t->m, d);
 }
 
 vec3 xf_inv_point(const xform *t, vec3 p)
 {
-    const double (*m)[4] = t->inv;
-    return v3(m[0][0] * p.x + m[0][1] * p.y + m[0][2] * p.z + m[0][3],
-              m[1][0] * p.x + m[1][1] * p.y + m[1][2] * p.z + m[1][3],
-              m[2][0] * p.x + m[2][1] * p.y + m[2][2] * p.z + m[2][3]);
+    return affine_point(t->inv, p);
 }
 
 vec3 xf_inv_dir(const xform *t, vec3 d)
 {
-    const double (*m)[4] = t->inv;
-    return v3(m[0][0] * d.x + m[0][1] * d.y + m[0][2] * d.z,
-              m[1][0] * d.x + m[1][1] * d.y + m[1][2] * d.z,
-              m[2][0] * d.x + m[2][1] * d.y + m[2][2] * d.z);
+    return affine_dir(t->inv, d);
 }
 
 vec3 xf_normal(const xform *t, vec3 n)
