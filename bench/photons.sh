@@ -3,9 +3,12 @@
 # bench/photons.sh: the photon pass of iris against POV-Ray 3.7's on the
 # same scenes, in one run. For iris (tools/photon_bench: parse, Embree
 # build, then the photon pass alone): photons traced per second per thread
-# at 1 and T threads, bytes per stored photon, gather queries per second
-# (k = the scene's gather max, one thread). For POV-Ray: its own "Photon
-# Time" and photon counts from a +Q9 render at a small size (the photon
+# at 1 and T threads (shooting and transport only: the kd-tree build is
+# the "build s" column), the same per CPU second at 1 thread (what a
+# shared machine's load does not change), bytes per stored photon, gather
+# queries per second of wall and of CPU time (k = the scene's gather max,
+# one thread). For POV-Ray: its own "Photon Time" (shooting and its
+# build) and photon counts from a +Q9 render at a small size (the photon
 # pass does not depend on the image size).
 #
 #   build=/path/to/build sh bench/photons.sh [-t THREADS] [scene.pov ...]
@@ -29,14 +32,15 @@ POVRAY=${POVRAY:-povray}
 tmp=$(mktemp -d) || exit 1
 trap 'rm -rf "$tmp"' EXIT
 if [ $# -eq 0 ]; then
-    set -- "$here"/../scenes/glass_sphere.pov "$here"/../scenes/prism.pov \
+    set -- "$here"/caustic_ball.pov \
+        "$here"/../scenes/glass_sphere.pov "$here"/../scenes/prism.pov \
         "$here"/../scenes/lens.pov "$here"/../scenes/gem.pov \
         "$here"/../scenes/cornell_glass.pov
 fi
 # key=value from a photon_bench line
 field() { echo "$1" | tr ' ' '\n' | sed -n "s/^$2=//p"; }
-echo "| scene | iris shot | iris stored | B/photon | iris shoot s (1 / $threads thr) | photons/s/thread (1 / $threads thr) | gathers/s | POV-Ray shot | POV-Ray stored | POV-Ray photon s ($threads thr) |"
-echo "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |"
+echo "| scene | iris shot | iris stored | B/photon | iris shoot s (1 / $threads thr) | build s (1 / $threads thr) | photons/s/thread (1 / $threads thr) | photons/CPU-s | gathers/s | gathers/CPU-s | POV-Ray shot | POV-Ray stored | POV-Ray photon s ($threads thr) |"
+echo "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |"
 for scene in "$@"; do
     [ -f "$scene" ] || continue
     # POV-Ray runs in $tmp: the scene's path must not be relative
@@ -56,6 +60,9 @@ for scene in "$@"; do
     echo "| $name | $(field "$one" shot) | $(field "$one" stored) |" \
         "$(field "$one" bytes_per_photon) |" \
         "$(field "$one" shoot_s) / $(field "$many" shoot_s) |" \
+        "$(field "$one" build_s) / $(field "$many" build_s) |" \
         "$(field "$one" photons_per_s_per_thread) / $(field "$many" photons_per_s_per_thread) |" \
-        "$(field "$one" gathers_per_s) | ${pshot:--} | ${pstored:--} | ${ptime:--} |"
+        "$(field "$one" photons_per_cpu_s) |" \
+        "$(field "$one" gathers_per_s) | $(field "$one" gathers_per_cpu_s) |" \
+        "${pshot:--} | ${pstored:--} | ${ptime:--} |"
 done

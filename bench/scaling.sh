@@ -2,14 +2,18 @@
 # SPDX-License-Identifier: MIT
 # bench/scaling.sh: how progressive rendering scales (issue 8) on the
 # caustic scene bench/caustic_ball.pov: 1 vs 2 threads (one process) and
-# 1 vs 2 MPI ranks (one thread each), N passes, the median of 3 runs each,
-# and the speed-ups. Then the communication: MPI ranks exchange nothing
+# 1 vs 2 MPI ranks (one thread each, and with Open MPI yielding instead
+# of busy-polling), N passes, ROUNDS interleaved runs of each, medians,
+# the speed-ups and the CPU time of all processes; then one 2-rank run's
+# per-rank times (IRIS_RANK_TIMES: work, agreements, snapshots, the
+# final reduction). Then the communication: MPI ranks exchange nothing
 # while rendering; at the end (and at each write point) rank 0 reduces the
 # double sum buffer, width·height·4 channels·8 bytes. From the measured
 # time per pass and the measured fixed cost of a run, the script estimates
 # the speed-up at 100 ranks.
 #
 #   build=/path/to/build sh bench/scaling.sh [-n PASSES] [-s WxH] [-p PHOTONS]
+#                                             [-r ROUNDS]
 #
 # The MPI rows need a build configured with MPI (mpirun found).
 # The images are PNG: an EXR goes through the OpenImageIO module, whose
@@ -22,9 +26,11 @@ here=$(cd "$(dirname "$0")" && pwd)
 passes=8
 size=160x120
 photons=100000
-while getopts n:s:p: opt; do
+rounds=5
+while getopts n:s:p:r: opt; do
     case $opt in
     n) passes=$OPTARG ;;
+    r) rounds=$OPTARG ;;
     s) size=$OPTARG ;;
     p) photons=$OPTARG ;;
     *) exit 2 ;;
@@ -46,24 +52,58 @@ MPIRUN=$(sed -n 's/^MPIRUN = //p' "$build/Makefile")
 export OMPI_MCA_plm=isolated OMPI_MCA_btl=self,vader
 mpi() { n=$1; shift
     "$MPIRUN" --oversubscribe --allow-run-as-root -n "$n" "$IRIS" "$@"; }
+# the same for /usr/bin/time, which cannot run a shell function
+mpirun="$MPIRUN --oversubscribe --allow-run-as-root"
 
-echo "scene: caustic_ball.pov, ${w}x${h}, $photons photons a pass, $passes passes, median of 3 runs"
-# shellcheck disable=SC2086
-t1=$(time_median 3 "$IRIS" $args --threads 1 -o "$BENCH_TMP/a.png")
-# shellcheck disable=SC2086
-t2=$(time_median 3 "$IRIS" $args --threads 2 -o "$BENCH_TMP/b.png")
-echo "| run | wall s | speed-up |"
-echo "| --- | ---: | ---: |"
-echo "| 1 process, 1 thread | $t1 | 1.000 |"
-echo "| 1 process, 2 threads | $t2 | $(ratio "$t1" "$t2") |"
+# One run of each configuration per round, the rounds interleaved, so a
+# change in the machine's other load hits every configuration alike; the
+# medians over the rounds. Each line of $BENCH_TMP/runs: "label wall cpu"
+# (cpu = user + sys of the whole process tree: both ranks and mpirun).
+once() { label=$1; shift
+    /usr/bin/time -f "%e %U %S" -o "$BENCH_TMP/t" "$@" >/dev/null 2>&1 ||
+        { echo "scaling: $label failed" >&2; return 1; }
+    awk -v l="$label" '{ printf "%s %s %.3f\n", l, $1, $2 + $3 }' \
+        "$BENCH_TMP/t" >>"$BENCH_TMP/runs"
+}
+: >"$BENCH_TMP/runs"
+echo "scene: caustic_ball.pov, ${w}x${h}, $photons photons a pass, $passes passes, $rounds interleaved rounds, medians"
+echo "load before: $(cut -d' ' -f1-3 /proc/loadavg)"
+i=0
+while [ $i -lt "$rounds" ]; do
+    # shellcheck disable=SC2086
+    once t1 "$IRIS" $args --threads 1 -o "$BENCH_TMP/a.png"
+    # shellcheck disable=SC2086
+    once t2 "$IRIS" $args --threads 2 -o "$BENCH_TMP/b.png"
+    if [ -n "$MPIRUN" ]; then
+        # shellcheck disable=SC2086
+        once r1 $mpirun -n 1 "$IRIS" $args --threads 1 -o "$BENCH_TMP/c.png"
+        # shellcheck disable=SC2086
+        once r2 $mpirun -n 2 "$IRIS" $args --threads 1 -o "$BENCH_TMP/d.png"
+        # Open MPI busy-polls in blocking collectives; yielding instead
+        # shellcheck disable=SC2086
+        once r2y env OMPI_MCA_mpi_yield_when_idle=1 $mpirun -n 2 "$IRIS" \
+            $args --threads 1 -o "$BENCH_TMP/e.png"
+    fi
+    i=$((i + 1))
+done
+echo "load after: $(cut -d' ' -f1-3 /proc/loadavg)"
+med() { awk -v l="$1" -v c="$2" '$1 == l { print $c }' "$BENCH_TMP/runs" |
+    median_of; }
+t1=$(med t1 2); t2=$(med t2 2)
+echo "| run | wall s | speed-up | CPU s (all processes) |"
+echo "| --- | ---: | ---: | ---: |"
+echo "| 1 process, 1 thread | $t1 | 1.000 | $(med t1 3) |"
+echo "| 1 process, 2 threads | $t2 | $(ratio "$t1" "$t2") | $(med t2 3) |"
 r1=-; r2=-
 if [ -n "$MPIRUN" ]; then
+    r1=$(med r1 2); r2=$(med r2 2); r2y=$(med r2y 2)
+    echo "| mpirun -n 1, 1 thread | $r1 | $(ratio "$t1" "$r1") | $(med r1 3) |"
+    echo "| mpirun -n 2, 1 thread each | $r2 | $(ratio "$t1" "$r2") (vs -n 1: $(ratio "$r1" "$r2")) | $(med r2 3) |"
+    echo "| mpirun -n 2 --mca mpi_yield_when_idle 1 | $r2y | $(ratio "$t1" "$r2y") | $(med r2y 3) |"
+    # Where each rank's time goes (progressive.c, IRIS_RANK_TIMES)
     # shellcheck disable=SC2086
-    r1=$(time_median 3 mpi 1 $args --threads 1 -o "$BENCH_TMP/c.png")
-    # shellcheck disable=SC2086
-    r2=$(time_median 3 mpi 2 $args --threads 1 -o "$BENCH_TMP/d.png")
-    echo "| mpirun -n 1, 1 thread | $r1 | $(ratio "$t1" "$r1") |"
-    echo "| mpirun -n 2, 1 thread each | $r2 | $(ratio "$t1" "$r2") (vs -n 1: $(ratio "$r1" "$r2")) |"
+    IRIS_RANK_TIMES=1 mpi 2 $args --threads 1 -o "$BENCH_TMP/f.png" \
+        2>&1 >/dev/null | sed -n 's/^iris: /  /p'
 else
     echo "(no MPI in this build: the rank rows are skipped)"
 fi
@@ -108,4 +148,4 @@ if [ -x /usr/bin/time ]; then
     echo "CPU time (1 thread): 1 pass $c1 s, $passes passes $cn s," \
         "$(echo "$cn $c1 $passes" | awk '{ printf "%.4f", ($1 - $2) / ($3 - 1) }') s a pass"
 fi
-echo "(the reduction is negligible; the limit is the fixed per-run cost, which every rank pays, and whole rounds of R passes)"
+echo "(the reduction is negligible; the limits are the fixed per-run cost, which every rank pays (MPI_Init ~0.14 s of CPU), whole rounds of R passes, and the waits at the ranks' agreements: see the rank times above)"

@@ -89,6 +89,12 @@ static void do_declare(pp_state *ps, bool local)
     ** old_table_index): a macro called by the value may still be open
     ** when the value is complete */
     int scope = ps->n_scopes - 1;
+    /* #declare finds its name before the value is read (POV-Ray looks
+    ** the identifier up first): a macro whose last line declares a
+    ** by-reference parameter ends while the value is completed, and the
+    ** write must still reach the caller's variable */
+    pp_sym *before = slot || local
+                         ? NULL : sym_resolve(sym_lookup(ps, text, name.len));
     pp_value v = pp_rvalue(ps);
     pp_next_is_directive(ps); /* returns from macros that just ended */
     if (scope > ps->n_scopes - 1)
@@ -109,6 +115,9 @@ static void do_declare(pp_state *ps, bool local)
             ** macro's by-reference parameters return values), else in the
             ** global table. */
             target = sym_lookup(ps, text, name.len);
+            if (before && before != sym_resolve(target) &&
+                sym_is_live(ps, before))
+                target = before;
             if (!target)
                 target = sym_define(ps, 0, text, name.len);
         }

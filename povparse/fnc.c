@@ -455,6 +455,25 @@ static iris_fn *finish_fn(fnc *c, int n_results)
     return fn;
 }
 
+/*
+** src/fn evaluates a function's patterns without the scene, so patterns
+** left on the global noise_generator get the one set so far (POV-Ray
+** reads global_settings at render time; scenes set it before their
+** functions: incdemo/func_gradient.pov). The pigment's map entries are
+** stamped too; stamping a shared entry writes the same global value.
+*/
+static void stamp_noise_generator(pp_state *ps, iris_pigment *pg,
+                                  int depth)
+{
+    if (!pg || depth > 16)
+        return;
+    int g = ps->scene->settings.noise_generator;
+    if (pg->pattern.noise_generator == 0)
+        pg->pattern.noise_generator = g;
+    for (int i = 0; i < pg->n_entries; i++)
+        stamp_noise_generator(ps, pg->entries[i].pigment, depth + 1);
+}
+
 /* F(x,y,z) = the grey level of pigment 'pg' at (x,y,z), POV-Ray's
 ** Greyscale() (0.297 R + 0.589 G + 0.114 B; src/fn's component 5): the
 ** value of pigment_pattern { pg }. */
@@ -468,6 +487,7 @@ iris_fn *pp_pigment_grey_fn(pp_state *ps, iris_pigment *pg)
     c.params[0] = "x";
     c.params[1] = "y";
     c.params[2] = "z";
+    stamp_noise_generator(ps, pg, 0);
     emit(&c, IRIS_FN_PATTERN, 5, 0, 0, 1);
     c.code[0].pattern = &pg->pattern;
     c.code[0].pigment = pg;
@@ -516,6 +536,7 @@ iris_fn *pp_function(pp_state *ps)
         /* pattern and pigment functions: src/fn evaluates them with the
         ** pattern code of src/material */
         iris_pigment *pg = pp_pigment(ps, NULL);
+        stamp_noise_generator(ps, pg, 0);
         iris_pattern *pat = pp_alloc(ps, sizeof *pat);
         *pat = pg->pattern;
         emit(&c, IRIS_FN_PATTERN, 0, 0, 0, 1);

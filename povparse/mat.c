@@ -196,6 +196,28 @@ static void guard_block_turb(pp_state *ps, iris_pattern *p, bool had_classic)
         add_warp(ps, p, IRIS_WARP_TRANSFORM);
 }
 
+/* POV-Ray's Check_BH_Parameters, after a black hole's repeat or
+** turbulence: on each repeated axis the centre is at least the radius
+** from the block's edge and the block holds the hole and its jitter. */
+static void check_black_hole(pp_state *ps, const pp_token *at, iris_warp *w)
+{
+    double *c = &w->centre.x, *r = &w->repeat.x;
+    const double *u = &w->turbulence.x;
+    if (r[0] == 0 && r[1] == 0 && r[2] == 0)
+        return;
+    for (int i = 0; i < 3; i++) {
+        if (!(r[i] > 0))
+            continue;
+        if (c[i] < w->radius)
+            c[i] = w->radius;
+        if (r[i] < c[i] + w->radius + u[i]) {
+            r[i] = c[i] + w->radius + u[i];
+            pp_warning(ps, at, "black hole repeat vector %c too small; "
+                       "increased to %g", "XYZ"[i], r[i]);
+        }
+    }
+}
+
 /* warp { turbulence | repeat | black_hole | planar | spherical | ... } */
 static void warp_block(pp_state *ps, iris_pattern *p)
 {
@@ -210,10 +232,22 @@ static void warp_block(pp_state *ps, iris_pattern *p)
             guard_block_turb(ps, p, had_classic);
             return;
         case T_TURBULENCE:
+            /* after black_hole: the jitter of its repeated centres */
+            if (w && w->kind == IRIS_WARP_BLACK_HOLE) {
+                w->turbulence = pp_vector(ps);
+                check_black_hole(ps, &at, w);
+                break;
+            }
             w = block_warp(ps, p, IRIS_WARP_TURBULENCE);
             w->turbulence = pp_vector(ps);
             break;
         case T_REPEAT:
+            /* after black_hole: the spacing of its copies */
+            if (w && w->kind == IRIS_WARP_BLACK_HOLE) {
+                w->repeat = pp_vector(ps);
+                check_black_hole(ps, &at, w);
+                break;
+            }
             w = block_warp(ps, p, IRIS_WARP_REPEAT);
             w->repeat = pp_vector(ps);
             break;
@@ -476,6 +510,21 @@ static void fractal_defaults(iris_pattern *p)
     p->params[5] = 1;
 }
 
+/* [, [LO] [, [HI]]] after a slope or altitude vector (POV-Ray's
+** Parse_Comma and Allow_Float: each number may be left out): into r[0],
+** r[1], which stay 0 when absent. */
+static void slope_range(pp_state *ps, double *r)
+{
+    for (int i = 0; i < 2; i++) {
+        if (!pp_accept(ps, T_COMMA))
+            return;
+        pp_next(ps);
+        pp_unget(ps);
+        if (pp_starts_expr(ps))
+            r[i] = pp_float(ps);
+    }
+}
+
 /* Parses a pattern keyword and its own parameters into 'p'; false when
 ** the current token is no pattern. */
 static bool pattern_kind(pp_state *ps, iris_pattern *p)
@@ -545,26 +594,34 @@ static bool pattern_kind(pp_state *ps, iris_pattern *p)
     case T_TILING: p->kind = IRIS_PAT_TILING; p->params[0] = pp_float(ps); break;
     case T_PAVEMENT: p->kind = IRIS_PAT_PAVEMENT; p->params[0] = 3; p->params[1] = 1; break;
     case T_SLOPE: {
+        /* slope VECTOR
+        ** | slope { [point_at] VECTOR [, [LO] [, [HI]]]
+        **           [altitude VECTOR [, [LO] [, [HI]]]] }
+        ** params: slope lo, hi (0..1), altitude lo, hi, the altitude
+        ** vector (params[4..6]), point_at (params[7] != 0). */
         p->kind = IRIS_PAT_SLOPE;
         bool brace = pp_accept(ps, T_LBRACE);
+        if (brace && pp_accept(ps, T_POINT_AT))
+            p->params[7] = 1;
         p->vector = pp_vector(ps);
-        if (pp_accept(ps, T_COMMA)) {
-            p->params[0] = pp_float(ps);
-            pp_expect(ps, T_COMMA, "','");
-            p->params[1] = pp_float(ps);
-        }
         if (brace) {
+            slope_range(ps, &p->params[0]);
             if (pp_accept(ps, T_ALTITUDE)) {
-                p->params[2] = 1;
-                pp_vector(ps);
-                if (pp_accept(ps, T_COMMA)) {
-                    pp_float(ps);
-                    pp_expect(ps, T_COMMA, "','");
-                    pp_float(ps);
-                }
+                if (p->params[7] != 0)
+                    pp_error(ps, &ps->tok, "'altitude' cannot be used with "
+                             "'point_at' in a slope pattern");
+                iris_vec3 a = pp_vector(ps);
+                p->params[4] = a.x;
+                p->params[5] = a.y;
+                p->params[6] = a.z;
+                slope_range(ps, &p->params[2]);
             }
             pp_expect(ps, T_RBRACE, "'}'");
         }
+        if (p->params[7] == 0 && v3_len2(p->vector) == 0 &&
+            p->params[4] == 0 && p->params[5] == 0 && p->params[6] == 0)
+            pp_error(ps, &at, "slope: zero length for both slope and "
+                     "altitude vectors");
         break;
     }
     case T_FUNCTION:
@@ -722,6 +779,7 @@ static bool pattern_mod(pp_state *ps, iris_pattern *p)
     case T_ORIENTATION: p->vector = pp_vector(ps); return true;
     case T_DIST_EXP: p->params[6] = pp_float(ps); return true;
     case T_UV_MAPPING:
+        p->uv_mapping = true;
         return true;
     case T_MAGNET: case T_PRECOMPUTE:
         pp_warn_once(ps, &at, at.kind, lex_keyword_name(at.kind));
@@ -880,11 +938,67 @@ static void pattern_xf(iris_pattern *p, const iris_transform *xf)
     p->has_transform = true;
 }
 
-iris_pigment *pp_pig_transform(pp_state *ps, const iris_pigment *p,
-                               const iris_transform *xf)
+/*
+** POV-Ray evaluates a map's entries at the map pattern's transformed
+** point, so they see every transform of the map pattern, also those
+** written before the map ('gradient y scale 10 texture_map {...}'). The
+** entries here carry the map's transforms instead (those written after
+** the map reach them through pp_*_transform); this gives '*out' the
+** transforms the map pattern has so far, pattern to world, in the order
+** pat_warp_world undoes them. False when there are none.
+*/
+static bool map_xf_so_far(const iris_pattern *p, iris_transform *out)
 {
-    if (!p)
-        return NULL;
+    bool any = false;
+    xf_identity(out);
+    for (int i = 0; i < p->n_warps; i++)
+        if (p->warps[i].kind == IRIS_WARP_TRANSFORM) {
+            xf_compose(out, out, &p->warps[i].transform);
+            any = true;
+        }
+    if (p->has_transform) {
+        xf_compose(out, out, &p->transform);
+        any = true;
+    }
+    return any;
+}
+
+/* The map entries 'e' given the map pattern's transforms so far: a copy
+** when there are any ('e' may be a declared map's, shared). 'kind' is
+** the map's (V_PIGMENT_MAP, V_NORMAL_MAP, V_TEXTURE_MAP; others have
+** nothing to transform). */
+static iris_map_entry *entries_in_map_space(pp_state *ps,
+                                            const iris_pattern *p,
+                                            iris_map_entry *e, int n,
+                                            int kind)
+{
+    iris_transform xf;
+    if (n <= 0 || !map_xf_so_far(p, &xf) ||
+        (kind != V_PIGMENT_MAP && kind != V_NORMAL_MAP &&
+         kind != V_TEXTURE_MAP))
+        return e;
+    iris_map_entry *c = pp_alloc(ps, (size_t)n * sizeof *c);
+    memcpy(c, e, (size_t)n * sizeof *c);
+    for (int i = 0; i < n; i++) {
+        if (kind == V_PIGMENT_MAP)
+            c[i].pigment = pp_pig_transform(ps, c[i].pigment, &xf);
+        else if (kind == V_NORMAL_MAP)
+            c[i].normal = pp_nor_transform(ps, c[i].normal, &xf);
+        else
+            c[i].texture = pp_tex_transform(ps, c[i].texture, &xf);
+    }
+    return c;
+}
+
+/* A copy of pigment 'p' transformed by 'xf'. A uv-mapped pigment lives
+** in the surface's uv space, which no transform from outside it (the
+** texture's, the object's) moves: only its 'own' transforms, written in
+** its body, reach it (POV-Ray's UV_MAP_PATTERN ignores the others). */
+static iris_pigment *pig_xf(pp_state *ps, const iris_pigment *p,
+                            const iris_transform *xf, bool own)
+{
+    if (!p || (p->pattern.uv_mapping && !own))
+        return (iris_pigment *)p;
     iris_pigment *n = pp_alloc(ps, sizeof *n);
     *n = *p;
     pattern_xf(&n->pattern, xf);
@@ -892,16 +1006,23 @@ iris_pigment *pp_pig_transform(pp_state *ps, const iris_pigment *p,
         n->entries = pp_alloc(ps, (size_t)n->n_entries * sizeof *n->entries);
         memcpy(n->entries, p->entries, (size_t)n->n_entries * sizeof *n->entries);
         for (int i = 0; i < n->n_entries; i++)
-            n->entries[i].pigment = pp_pig_transform(ps, n->entries[i].pigment, xf);
+            n->entries[i].pigment = pig_xf(ps, n->entries[i].pigment, xf, own);
     }
     return n;
 }
 
-iris_normal *pp_nor_transform(pp_state *ps, const iris_normal *p,
-                              const iris_transform *xf)
+iris_pigment *pp_pig_transform(pp_state *ps, const iris_pigment *p,
+                               const iris_transform *xf)
 {
-    if (!p)
-        return NULL;
+    return pig_xf(ps, p, xf, false);
+}
+
+/* pig_xf for normals. */
+static iris_normal *nor_xf(pp_state *ps, const iris_normal *p,
+                           const iris_transform *xf, bool own)
+{
+    if (!p || (p->pattern.uv_mapping && !own))
+        return (iris_normal *)p;
     iris_normal *n = pp_alloc(ps, sizeof *n);
     *n = *p;
     pattern_xf(&n->pattern, xf);
@@ -909,9 +1030,15 @@ iris_normal *pp_nor_transform(pp_state *ps, const iris_normal *p,
         n->entries = pp_alloc(ps, (size_t)n->n_entries * sizeof *n->entries);
         memcpy(n->entries, p->entries, (size_t)n->n_entries * sizeof *n->entries);
         for (int i = 0; i < n->n_entries; i++)
-            n->entries[i].normal = pp_nor_transform(ps, n->entries[i].normal, xf);
+            n->entries[i].normal = nor_xf(ps, n->entries[i].normal, xf, own);
     }
     return n;
+}
+
+iris_normal *pp_nor_transform(pp_state *ps, const iris_normal *p,
+                              const iris_transform *xf)
+{
+    return nor_xf(ps, p, xf, false);
 }
 
 iris_texture *pp_tex_transform(pp_state *ps, const iris_texture *t,
@@ -923,6 +1050,10 @@ iris_texture *pp_tex_transform(pp_state *ps, const iris_texture *t,
     *n = *t;
     n->pigment = pp_pig_transform(ps, t->pigment, xf);
     n->normal = pp_nor_transform(ps, t->normal, xf);
+    /* a transform between the map's pattern and its texture_map applies
+    ** to the pattern (the entries, parsed later, do not get it) */
+    if (t->map_pattern.kind != IRIS_PAT_NONE && !t->n_entries)
+        pattern_xf(&n->map_pattern, xf);
     if (t->n_entries) {
         pattern_xf(&n->map_pattern, xf);
         n->entries = pp_alloc(ps, (size_t)n->n_entries * sizeof *n->entries);
@@ -952,7 +1083,7 @@ static void set_pigment_map(pp_state *ps, iris_pigment *p, const pp_map *m,
         pp_error(ps, at, "a pigment takes a colour_map or pigment_map, not "
                  "a %s", pp_kind_name(m->kind));
     p->n_entries = m->n;
-    p->entries = m->e;
+    p->entries = entries_in_map_space(ps, &p->pattern, m->e, m->n, m->kind);
     p->is_pigment_map = m->kind == V_PIGMENT_MAP;
 }
 
@@ -1036,16 +1167,20 @@ static iris_pigment *pigment_body(pp_state *ps, const iris_pigment *base,
         if (k == T_EOF)
             pp_error(ps, &open, "pigment without its closing '%s'",
                      end == T_RBRACE ? "}" : "]");
-        if (k == T_IDENT && at.val.kind == V_PIGMENT) {
+        if (k == T_IDENT && (at.val.kind == V_PIGMENT ||
+                             (ps->in_density && at.val.kind == V_DENSITY))) {
             *p = *at.val.u.pig;
             continue;
         }
         if (k == T_IDENT && (at.val.kind == V_COLOUR_MAP ||
-                             at.val.kind == V_PIGMENT_MAP)) {
+                             at.val.kind == V_PIGMENT_MAP ||
+                             (ps->in_density &&
+                              at.val.kind == V_DENSITY_MAP))) {
             set_pigment_map(ps, p, at.val.u.map, &at);
             continue;
         }
-        if (k == T_COLOR_MAP || k == T_PIGMENT_MAP) {
+        if (k == T_COLOR_MAP || k == T_PIGMENT_MAP ||
+            (k == T_DENSITY_MAP && ps->in_density)) {
             pp_map *m = pp_map_block(ps, k == T_COLOR_MAP ? V_COLOUR_MAP
                                                           : V_PIGMENT_MAP);
             set_pigment_map(ps, p, m, &at);
@@ -1072,7 +1207,7 @@ static iris_pigment *pigment_body(pp_state *ps, const iris_pigment *base,
             k == T_SCALE || k == T_MATRIX) {
             iris_transform x;
             pp_transform_item(ps, &x);
-            p = pp_pig_transform(ps, p, &x);
+            p = pig_xf(ps, p, &x, true);
             continue;
         }
         int old_kind = p->pattern.kind;
@@ -1187,6 +1322,19 @@ iris_pigment *pp_pigment(pp_state *ps, const iris_pigment *base)
     return p;
 }
 
+/* A media density is a pigment whose map may be a density_map (its
+** entries are densities as a pigment_map's are pigments); media.c. */
+iris_pigment *pp_density_block(pp_state *ps, const iris_pigment *base)
+{
+    pp_expect(ps, T_LBRACE, "'{' after density");
+    pp_enter(ps, &ps->tok);
+    ps->in_density++;
+    iris_pigment *p = pigment_body(ps, base, T_RBRACE);
+    ps->in_density--;
+    pp_leave(ps);
+    return p;
+}
+
 /* ---- normals ----------------------------------------------------- */
 
 static bool normal_pattern_takes_amount(int kind)
@@ -1230,7 +1378,9 @@ static iris_normal *normal_body(pp_state *ps, const iris_normal *base,
         if (k == T_IDENT && (at.val.kind == V_NORMAL_MAP ||
                              at.val.kind == V_SLOPE_MAP)) {
             n->n_entries = at.val.u.map->n;
-            n->entries = at.val.u.map->e;
+            n->entries = entries_in_map_space(ps, &n->pattern,
+                                              at.val.u.map->e,
+                                              at.val.u.map->n, at.val.kind);
             n->is_slope_map = at.val.kind == V_SLOPE_MAP;
             continue;
         }
@@ -1238,7 +1388,8 @@ static iris_normal *normal_body(pp_state *ps, const iris_normal *base,
             pp_map *m = pp_map_block(ps, k == T_NORMAL_MAP ? V_NORMAL_MAP
                                                            : V_SLOPE_MAP);
             n->n_entries = m->n;
-            n->entries = m->e;
+            n->entries = entries_in_map_space(ps, &n->pattern, m->e, m->n,
+                                              m->kind);
             n->is_slope_map = k == T_SLOPE_MAP;
             continue;
         }
@@ -1263,7 +1414,7 @@ static iris_normal *normal_body(pp_state *ps, const iris_normal *base,
             k == T_SCALE || k == T_MATRIX) {
             iris_transform x;
             pp_transform_item(ps, &x);
-            n = pp_nor_transform(ps, n, &x);
+            n = nor_xf(ps, n, &x, true);
             continue;
         }
         iris_pattern np = n->pattern;
@@ -1514,6 +1665,26 @@ iris_texture *pp_texture_new(pp_state *ps, const pp_token *at)
     return t;
 }
 
+/* texture { uv_mapping ... }: POV-Ray evaluates the whole texture at
+** the surface's <u, v, 0>; here its pigment and normal are marked so
+** (the layers of a texture_map are not). */
+static iris_texture *uv_texture(pp_state *ps, iris_texture *t)
+{
+    if (t->pigment) {
+        iris_pigment *p = pp_alloc(ps, sizeof *p);
+        *p = *t->pigment;
+        p->pattern.uv_mapping = true;
+        t->pigment = p;
+    }
+    if (t->normal) {
+        iris_normal *n = pp_alloc(ps, sizeof *n);
+        *n = *t->normal;
+        n->pattern.uv_mapping = true;
+        t->normal = n;
+    }
+    return t;
+}
+
 /* The items of a texture up to 'end'. */
 static iris_texture *texture_body(pp_state *ps, int end)
 {
@@ -1521,12 +1692,13 @@ static iris_texture *texture_body(pp_state *ps, int end)
     pp_token open = ps->tok;
     pp_unget(ps);
     iris_texture *t = pp_texture_new(ps, &open);
+    bool uv = false;
     for (;;) {
         pp_next(ps);
         pp_token at = ps->tok;
         int k = at.kind;
         if (k == end)
-            return t;
+            return uv ? uv_texture(ps, t) : t;
         switch (k) {
         case T_EOF:
             pp_error(ps, &open, "texture without its closing bracket");
@@ -1539,7 +1711,10 @@ static iris_texture *texture_body(pp_state *ps, int end)
             }
             if (at.val.kind == V_TEXTURE_MAP) {
                 t->n_entries = at.val.u.map->n;
-                t->entries = at.val.u.map->e;
+                t->entries = entries_in_map_space(ps, &t->map_pattern,
+                                                  at.val.u.map->e,
+                                                  at.val.u.map->n,
+                                                  V_TEXTURE_MAP);
                 continue;
             }
             break;
@@ -1555,7 +1730,8 @@ static iris_texture *texture_body(pp_state *ps, int end)
         case T_TEXTURE_MAP: {
             pp_map *m = pp_map_block(ps, V_TEXTURE_MAP);
             t->n_entries = m->n;
-            t->entries = m->e;
+            t->entries = entries_in_map_space(ps, &t->map_pattern, m->e,
+                                              m->n, V_TEXTURE_MAP);
             continue;
         }
         case T_TILES: {
@@ -1585,6 +1761,7 @@ static iris_texture *texture_body(pp_state *ps, int end)
             continue;
         }
         case T_UV_MAPPING:
+            uv = true;
             continue;
         case T_MATERIAL_MAP:
             pp_warn_once(ps, &at, T_MATERIAL_MAP, "material_map");
@@ -1779,10 +1956,7 @@ iris_interior *pp_interior(pp_state *ps, const iris_interior *base)
         case T_FADE_POWER: in->fade_power = pp_float(ps); break;
         case T_FADE_COLOR: in->fade_colour = pp_colour(ps); break;
         case T_MEDIA:
-            pp_warn_once(ps, &at, T_MEDIA, "media");
-            pp_expect(ps, T_LBRACE, "'{'");
-            pp_skip_block(ps);
-            in->has_media = true;
+            pp_interior_add_media(ps, in, pp_media(ps));
             break;
         default:
         bad: {

@@ -96,6 +96,8 @@ static void transform_rec(pp_state *ps, iris_object *o,
 {
     xf_compose(&o->transform, &o->transform, xf);
     o->has_transform = true;
+    if (o->interior && o->interior->n_media > 0)
+        o->interior = pp_interior_transform(ps, o->interior, xf);
     if (textures) {
         if (o->texture)
             o->texture = pp_tex_transform(ps, o->texture, xf);

@@ -292,6 +292,8 @@ struct pp_state {
     size_t stack_limit;    /* bytes of C stack the grammar may use */
     uint32_t outer_file, outer_off, outer_len; /* where depth 1 began */
     int lex_peek;          /* > 0: strings are not decoded (look-ahead) */
+    int in_density;        /* > 0: a media density{} is parsed (density_map
+                              and density identifiers are allowed) */
 
     /* Finished copies of declared objects handed to the geometry
     ** queries (pp_query_object), so that one object keeps one pointer */
@@ -389,6 +391,8 @@ void sym_free_all(pp_state *ps);
 pp_sym *sym_lookup(pp_state *ps, const char *name, size_t len);
 pp_sym *sym_define(pp_state *ps, int scope, const char *name, size_t len);
 pp_sym *sym_resolve(pp_sym *s);       /* follows by-reference aliases */
+/* Whether 's' is still a symbol of an open scope (not recycled). */
+bool sym_is_live(pp_state *ps, const pp_sym *s);
 bool sym_undef(pp_state *ps, const char *name, size_t len);
 /* The identifier text of token 't' (not NUL-terminated). */
 const char *pp_tok_text(pp_state *ps, const pp_token *t);
@@ -462,6 +466,17 @@ const char *pp_find_file(pp_state *ps, const pp_token *at, const char *name);
 const char *pp_require_file(pp_state *ps, const pp_token *at,
                             const char *name, const char *const *exts,
                             const char *what);
+
+/* density { [DENSITY_ID] pigment items, density_map } (mat.c) after
+** 'density': a pigment, as POV-Ray keeps densities. */
+iris_pigment *pp_density_block(pp_state *ps, const iris_pigment *base);
+
+/* ---- media.c: media{} --------------------------------------------- */
+iris_media *pp_media(pp_state *ps);               /* at 'media' */
+void pp_interior_add_media(pp_state *ps, iris_interior *in, iris_media *m);
+iris_interior *pp_interior_transform(pp_state *ps, const iris_interior *in,
+                                     const iris_transform *xf);
+void pp_add_atmosphere_media(pp_state *ps, iris_media *m);
 
 /* ---- obj.c: objects ----------------------------------------------- */
 /* Parses an object if the current token starts one; NULL otherwise. */

@@ -228,12 +228,19 @@ pp_value pp_rvalue(pp_state *ps)
     case T_TEXTURE_MAP:
         return make(V_TEXTURE_MAP, pp_map_block(ps, V_TEXTURE_MAP));
     case T_SLOPE_MAP: return make(V_SLOPE_MAP, pp_map_block(ps, V_SLOPE_MAP));
-    case T_RAINBOW: case T_MEDIA: case T_DENSITY: case T_DENSITY_MAP:
-    case T_PHOTONS: case T_RADIOSITY: {
+    case T_MEDIA: return make(V_MEDIA, pp_media(ps));
+    case T_DENSITY: return make(V_DENSITY, pp_density_block(ps, NULL));
+    case T_DENSITY_MAP: {
+        ps->in_density++;
+        pp_map *m = pp_map_block(ps, V_PIGMENT_MAP);
+        ps->in_density--;
+        return make(V_DENSITY_MAP, m);
+    }
+    case T_RAINBOW: case T_PHOTONS: case T_RADIOSITY: {
         pp_warn_once(ps, &at, at.kind, lex_keyword_name(at.kind));
         pp_expect(ps, T_LBRACE, "'{'");
         pp_skip_block(ps);
-        return make(at.kind == T_MEDIA ? V_MEDIA : V_UNSUPPORTED, NULL);
+        return make(V_UNSUPPORTED, NULL);
     }
     case T_IDENT: {
         int k = at.val.kind;

@@ -388,18 +388,111 @@ static void global_photons(pp_state *ps, iris_photon_settings *p)
                 p->media_factor = pp_float(ps);
             break;
         case T_SAVE_FILE: {
+            p->file_loc = pp_loc(ps, &at); /* photon_file.c's errors */
             const char *s = pp_string(ps);
             p->save_file = pp_strdup(ps, s, strlen(s));
+            if (p->load_file) /* as POV-Ray: one or the other */
+                pp_error(ps, &at, "photons: save_file and load_file together");
             break;
         }
         case T_LOAD_FILE: {
+            p->file_loc = pp_loc(ps, &at);
             const char *s = pp_string(ps);
             p->load_file = pp_strdup(ps, s, strlen(s));
+            if (p->save_file)
+                pp_error(ps, &at, "photons: save_file and load_file together");
             break;
         }
         default: {
             pp_unexpected(ps, &at, "global photons");
         }
+        }
+    }
+}
+
+/*
+** radiosity { count N [, POOL] | brightness F | recursion_limit N |
+**             error_bound F | low_error_factor F | minimum_reuse F |
+**             maximum_reuse F | nearest_count N [, M] | pretrace_start F |
+**             pretrace_end F | gray_threshold F | max_sample F |
+**             adc_bailout F | always_sample [BOOL] | normal [BOOL] |
+**             media [BOOL] | subsurface [BOOL] | importance F |
+**             save_file S | load_file S }
+** After 'radiosity'. POV-Ray 3.7's defaults apply to what is not given
+** (render/gather.c reads them); normal, subsurface, importance and the
+** files are accepted and ignored with a warning.
+*/
+static void global_radiosity(pp_state *ps, iris_global_settings *g)
+{
+    iris_radiosity_settings *r = &g->rad;
+    pp_expect(ps, T_LBRACE, "'{'");
+    *r = (iris_radiosity_settings){
+        .count = 35, .brightness = 1.0, .recursion_limit = 2,
+        .error_bound = 1.8, .low_error_factor = 0.5,
+        .minimum_reuse = 0.015, .maximum_reuse = 0.2, .nearest_count = 5,
+        .pretrace_start = 0.08, .pretrace_end = 0.04,
+        .gray_threshold = 0.0, .max_sample = -1.0, .adc_bailout = 0.01,
+        .always_sample = false };
+    for (;;) {
+        pp_next(ps);
+        pp_token at = ps->tok;
+        switch (at.kind) {
+        case T_RBRACE:
+            return;
+        case T_COUNT:
+            r->count = pp_int(ps);
+            if (r->count < 1 || r->count > 100000)
+                pp_error(ps, &at, "radiosity count must be 1 to 100000");
+            if (pp_accept(ps, T_COMMA))
+                pp_int(ps); /* the direction pool: iris's set is fixed */
+            break;
+        case T_BRIGHTNESS: r->brightness = pp_float(ps); break;
+        case T_RECURSION_LIMIT:
+            r->recursion_limit = pp_int(ps);
+            if (r->recursion_limit < 1)
+                pp_error(ps, &at, "recursion_limit must be >= 1");
+            break;
+        case T_ERROR_BOUND:
+            r->error_bound = pp_float(ps);
+            if (!(r->error_bound > 0.0))
+                pp_error(ps, &at, "error_bound must be > 0");
+            break;
+        case T_LOW_ERROR_FACTOR: r->low_error_factor = pp_float(ps); break;
+        case T_MINIMUM_REUSE: r->minimum_reuse = pp_float(ps); break;
+        case T_MAXIMUM_REUSE: r->maximum_reuse = pp_float(ps); break;
+        case T_NEAREST_COUNT:
+            r->nearest_count = pp_int(ps);
+            if (r->nearest_count < 1 || r->nearest_count > 20)
+                pp_error(ps, &at, "nearest_count must be 1 to 20");
+            if (pp_accept(ps, T_COMMA))
+                pp_int(ps); /* the pretrace's minimum: not used */
+            break;
+        case T_PRETRACE_START: r->pretrace_start = pp_float(ps); break;
+        case T_PRETRACE_END: r->pretrace_end = pp_float(ps); break;
+        case T_GRAY_THRESHOLD: r->gray_threshold = pp_float(ps); break;
+        case T_MAX_SAMPLE: r->max_sample = pp_float(ps); break;
+        case T_ADC_BAILOUT: r->adc_bailout = pp_float(ps); break;
+        case T_ALWAYS_SAMPLE: r->always_sample = pp_bool_opt(ps); break;
+        /* plain warnings: pp_warn_once's flag for 'media' would also
+        ** silence the one for atmospheric media */
+        case T_MEDIA: r->media = pp_bool_opt(ps); break;
+        case T_NORMAL: case T_SUBSURFACE:
+            pp_bool_opt(ps);
+            pp_warning(ps, &at, "radiosity %s is parsed but not rendered",
+                       at.kind == T_NORMAL ? "normal" : "subsurface");
+            break;
+        case T_IMPORTANCE:
+            pp_float(ps);
+            pp_warning(ps, &at, "radiosity importance is parsed but not "
+                       "rendered");
+            break;
+        case T_SAVE_FILE: case T_LOAD_FILE:
+            pp_string(ps);
+            pp_warning(ps, &at, "radiosity save_file/load_file are parsed "
+                       "but not used");
+            break;
+        default:
+            pp_unexpected(ps, &at, "radiosity");
         }
     }
 }
@@ -450,13 +543,7 @@ static void global_settings(pp_state *ps)
         case T_PHOTONS: global_photons(ps, &g->photons); break;
         case T_RADIOSITY:
             g->radiosity = true;
-            /* iris renders diffuse interreflection with a global photon
-            ** map (src/photon/global.c), not POV-Ray's irradiance cache */
-            pp_warning(ps, &at, "radiosity: iris renders diffuse "
-                       "interreflection with a global photon map; the "
-                       "block's parameters are ignored");
-            pp_expect(ps, T_LBRACE, "'{'");
-            pp_skip_block(ps);
+            global_radiosity(ps, g);
             break;
         case T_SUBSURFACE:
             pp_warn_once(ps, &at, T_SUBSURFACE, "subsurface");
@@ -505,9 +592,11 @@ void pp_scene_items(pp_state *ps)
         case T_FOG:
             add_fog(ps, pp_fog(ps));
             break;
-        case T_RAINBOW: case T_MEDIA:
-            pp_warn_once(ps, &at, at.kind, at.kind == T_RAINBOW ? "rainbow"
-                         : "atmospheric media");
+        case T_MEDIA:
+            pp_add_atmosphere_media(ps, pp_media(ps));
+            break;
+        case T_RAINBOW:
+            pp_warn_once(ps, &at, at.kind, "rainbow");
             pp_expect(ps, T_LBRACE, "'{'");
             pp_skip_block(ps);
             break;

@@ -99,6 +99,14 @@ pp_sym *sym_resolve(pp_sym *s)
     return s;
 }
 
+bool sym_is_live(pp_state *ps, const pp_sym *s)
+{
+    for (int i = ps->n_scopes - 1; s && i >= 0; i--)
+        if (find_in(&ps->scopes[i], s->name, s->name_len) == s)
+            return true;
+    return false;
+}
+
 /* Doubles the bucket count of 'sc' when it gets crowded. */
 static void grow(pp_state *ps, pp_scope *sc)
 {

@@ -2,8 +2,9 @@
 // cornell_glass.pov: a Cornell box (red and green walls, open at the
 // front) with a glass sphere that focuses the ceiling light into a
 // caustic on the floor. radiosity{} turns on diffuse interreflection
-// (in iris a global photon map; in POV-Ray its radiosity), as in the
-// seed paper's figure 9: the white walls pick up red and green.
+// (in iris a final gather whose rays read a global photon map; in
+// POV-Ray its radiosity), as in the seed paper's figure 9: the white
+// walls pick up red and green.
 #version 3.7;
 global_settings {
   assumed_gamma 1

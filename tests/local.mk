@@ -11,3 +11,4 @@ include $(srcdir)/tests/cli.mk
 include $(srcdir)/tests/robust.mk
 include $(srcdir)/tests/progressive.mk
 include $(srcdir)/tests/mpi.mk
+include $(srcdir)/tests/largerun.mk

@@ -4,8 +4,17 @@
 ** bench/photons.sh: photons traced per second per thread, bytes per stored
 ** photon, and gather (estimate) queries per second.
 **
-** Usage: photon_bench [-t THREADS] [-q QUERIES] scene.pov
-** Prints one line of key=value pairs. Textures are evaluated by the
+** Usage: photon_bench [-t THREADS] [-q QUERIES] [-a 1] scene.pov
+** (-a 1: query accel, not the photon fast path of sphere-and-plane
+** scenes, src/photon/fastpath.h)
+** Prints one line of key=value pairs: shoot_s is the wall time of the
+** shooting (emission, transport, concatenating the batches), build_s of
+** the kd-tree build and the automatic radius; photons_per_s_per_thread is
+** shot / shoot_s / threads (the build is not counted: it is reported on
+** its own). cpu_shoot_s, cpu_build_s and photons_per_cpu_s are the same in
+** CPU seconds of all threads, and gathers_per_cpu_s the gather rate per
+** CPU second: on a shared machine the wall clock also counts the others'
+** work. Textures are evaluated by the
 ** material module when IRIS_BENCH_MAT is set in the environment, else as
 ** solid pigments. Not installed; built by `make tools/photon_bench`.
 */
@@ -14,6 +23,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 #include "accel/accel.h"
 #include "iris/parse.h"
@@ -22,10 +32,22 @@
 #include "util/rng.h"
 #include "util/thread.h"
 
-/* Times 'n' estimates at stored photon positions (where gathers matter),
-** on one thread; returns queries per second. */
-static double gather_rate(const struct photon_map *m, int n)
+/* CPU seconds of the calling thread (a loaded machine stretches the wall
+** clock, not this). */
+static double thread_cpu(void)
 {
+    struct timespec ts;
+    if (clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts) != 0)
+        return 0.0;
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/* Times 'n' estimates at stored photon positions (where gathers matter),
+** on one thread; returns queries per second of wall time, *per_cpu_s per
+** CPU second. */
+static double gather_rate(const struct photon_map *m, int n, double *per_cpu_s)
+{
+    *per_cpu_s = 0.0;
     if (!m || m->store.n == 0 || n <= 0)
         return 0.0;
     static iris_finish fin;
@@ -33,7 +55,7 @@ static double gather_rate(const struct photon_map *m, int n)
     fin.brilliance = 1;
     rng r;
     rng_seed(&r, 1, 2, 3);
-    double sink = 0.0, t0 = par_now();
+    double sink = 0.0, t0 = par_now(), c0 = thread_cpu();
     for (int i = 0; i < n; i++) {
         size_t j = (size_t)(rng_uniform(&r) * (double)m->store.n);
         vec3 p = pstore_position(&m->store, j);
@@ -44,24 +66,28 @@ static double gather_rate(const struct photon_map *m, int n)
         photon_map_shade(m, &in, rgb);
         sink += rgb[1];
     }
-    double dt = par_now() - t0;
+    double dt = par_now() - t0, dc = thread_cpu() - c0;
     if (sink < 0)
         printf("#");
+    *per_cpu_s = dc > 0 ? n / dc : 0.0;
     return dt > 0 ? n / dt : 0.0;
 }
 
 int main(int argc, char **argv)
 {
-    int threads = 1, queries = 100000;
+    int threads = 1, queries = 100000, accel_only = 0;
     int i = 1;
     for (; i < argc - 1 && argv[i][0] == '-'; i += 2) {
         if (!strcmp(argv[i], "-t"))
             threads = atoi(argv[i + 1]);
         else if (!strcmp(argv[i], "-q"))
             queries = atoi(argv[i + 1]);
+        else if (!strcmp(argv[i], "-a"))
+            accel_only = atoi(argv[i + 1]);
     }
     if (i != argc - 1) {
-        fprintf(stderr, "usage: photon_bench [-t N] [-q N] scene.pov\n");
+        fprintf(stderr,
+                "usage: photon_bench [-t N] [-q N] [-a 1] scene.pov\n");
         return 2;
     }
     iris_parse_options po;
@@ -90,6 +116,7 @@ int main(int argc, char **argv)
     o.threads = threads;
     o.seed = 1;
     o.mat = mc;
+    o.no_fastpath = accel_only != 0;
     struct photon_map *m = NULL;
     struct photon_stats st;
     if (photon_map_build(scene, a, &o, &m, &st) != IRIS_OK) {
@@ -98,13 +125,16 @@ int main(int argc, char **argv)
     }
     double per_thread = st.seconds_shoot > 0
                             ? st.shot / st.seconds_shoot / threads : 0.0;
+    double g_cpu, g_wall = gather_rate(m, queries, &g_cpu);
     printf("threads=%d shot=%lld stored=%lld bytes_per_photon=%.2f "
            "shoot_s=%.3f build_s=%.3f photons_per_s_per_thread=%.0f "
-           "gather_radius=%.4g gathers_per_s=%.0f\n",
+           "cpu_shoot_s=%.3f cpu_build_s=%.3f photons_per_cpu_s=%.0f "
+           "gather_radius=%.4g gathers_per_s=%.0f gathers_per_cpu_s=%.0f\n",
            threads, (long long)st.shot, (long long)st.stored,
            st.stored ? (double)st.bytes / st.stored : 0.0, st.seconds_shoot,
-           st.seconds_build, per_thread, st.gather_radius,
-           gather_rate(m, queries));
+           st.seconds_build, per_thread, st.cpu_shoot, st.cpu_build,
+           st.cpu_shoot > 0 ? st.shot / st.cpu_shoot : 0.0, st.gather_radius,
+           g_wall, g_cpu);
     photon_map_destroy(m);
     mat_ctx_destroy(mc);
     accel_destroy(a);

@@ -77,6 +77,9 @@ typedef struct iris_render_options {
     FILE *plan_out;            /* where --plan/-v prints the plan, or NULL */
     bool plan_only;            /* --plan: print the plan, render nothing */
     FILE *log;                 /* warnings during building, NULL = stderr */
+    FILE *rank_times;          /* MPI: rank 0 prints each rank's times
+                                  here (progressive.c); NULL = not; the
+                                  same on every rank (a collective) */
 } iris_render_options;
 
 /* Fills 'o' with the defaults. */

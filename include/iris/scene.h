@@ -158,6 +158,7 @@ typedef struct iris_pattern {
     iris_image_ref *image;     /* IMAGE_MAP, IMAGE_PATTERN */
     struct iris_object *object; /* OBJECT */
     int n_average;             /* AVERAGE: entries come from the map */
+    bool uv_mapping;           /* evaluated at the surface's <u, v, 0> */
 } iris_pattern;
 
 struct iris_pigment;
@@ -237,6 +238,36 @@ typedef struct iris_ior_spec {
     iris_loc loc;
 } iris_ior_spec;
 
+/*
+** A media{} block (POV-Ray 3.7's Media, docs/media.md). Coefficients are
+** per unit length, scaled at each point by the product of the densities'
+** colours (no density: 1 everywhere). Extinction = absorption +
+** sc_ext * scattering.
+*/
+enum iris_scattering { IRIS_SCATTER_ISOTROPIC = 1, IRIS_SCATTER_MIE_HAZY,
+                       IRIS_SCATTER_MIE_MURKY, IRIS_SCATTER_RAYLEIGH,
+                       IRIS_SCATTER_HENYEY_GREENSTEIN };
+
+typedef struct iris_media {
+    iris_loc loc;
+    int method;                /* 1, 2 or 3 (3 from #version 3.5 on) */
+    int intervals;             /* 1 (10 before 3.5) */
+    int min_samples, max_samples; /* 10, 10 (1, 1 before 3.5) */
+    double jitter;             /* 0 */
+    double aa_threshold;       /* 0.1 */
+    int aa_level;              /* 3 */
+    double confidence;         /* 0.9 */
+    double variance;           /* 1/128 */
+    double ratio;              /* 0.9 */
+    bool ignore_photons;       /* collect off */
+    iris_colour absorption, emission, scattering; /* rgb used, 0 */
+    int scattering_type;       /* enum iris_scattering, 1 */
+    double eccentricity;       /* Henyey-Greenstein g, 0 */
+    double sc_ext;             /* scattering{ extinction }, 1 */
+    int n_densities;           /* multiplied together */
+    iris_pigment **densities;  /* each with its world-to-pattern transform */
+} iris_media;
+
 /* An interior{} block. */
 typedef struct iris_interior {
     iris_loc loc;
@@ -248,8 +279,10 @@ typedef struct iris_interior {
     double fade_distance;      /* 0 */
     double fade_power;         /* 0 */
     iris_colour fade_colour;   /* 0 */
-    bool has_media;            /* parsed, not rendered */
+    bool has_media;            /* n_media > 0 */
     iris_ior_spec *spectral_ior; /* iris extension, NULL = POV law */
+    int n_media;               /* media{} blocks in order */
+    iris_media **media;
 } iris_interior;
 
 /* One texture layer, or a texture_map/material_map. */
@@ -508,9 +541,30 @@ typedef struct iris_photon_settings {
     double expand_tol; int expand_min; /* 0.2, 35 */
     int media_max_steps; double media_factor;
     const char *save_file, *load_file;
+    iris_loc file_loc;         /* the save_file or load_file keyword */
     iris_loc loc;              /* the 'spacing' or 'count' keyword (else
                                   the photons block); line 0 = unknown */
 } iris_photon_settings;
+
+/* radiosity {} (POV-Ray 3.7's parameters and defaults, set when the block
+** is present); src/render/gather.c uses them for its final gather. */
+typedef struct iris_radiosity_settings {
+    int count;                 /* 35: gather rays per cached sample */
+    double brightness;         /* 1 */
+    int recursion_limit;       /* 2 (>= 2: gather hits see the global map) */
+    double error_bound;        /* 1.8 */
+    double low_error_factor;   /* 0.5: error_bound's factor in pretrace */
+    double minimum_reuse;      /* 0.015 (of the distance to the camera) */
+    double maximum_reuse;      /* 0.2 */
+    int nearest_count;         /* 5 */
+    double pretrace_start;     /* 0.08 (of the image size) */
+    double pretrace_end;       /* 0.04 */
+    double gray_threshold;     /* 0 */
+    double max_sample;         /* -1 = no cap */
+    double adc_bailout;        /* 0.01 */
+    bool always_sample;        /* false */
+    bool media;                /* false: gather rays ignore media */
+} iris_radiosity_settings;
 
 typedef struct iris_global_settings {
     double assumed_gamma;      /* 0 = not given */
@@ -521,7 +575,7 @@ typedef struct iris_global_settings {
     int number_of_waves;       /* 10 */
     int noise_generator;       /* 2 */
     bool radiosity;            /* a radiosity{} block was given */
-    int radiosity_count;
+    iris_radiosity_settings rad; /* valid when 'radiosity' */
     iris_photon_settings photons;
 } iris_global_settings;
 
@@ -555,6 +609,8 @@ typedef struct iris_scene {
     iris_sky_sphere *sky_sphere;
     int n_fogs;
     iris_fog **fogs;
+    int n_media;               /* atmospheric media{} blocks */
+    iris_media **media;
 
     iris_global_settings settings;
 
@@ -570,6 +626,10 @@ void iris_finish_defaults(iris_finish *f);
 
 /* Fills 'i' with POV-Ray's interior defaults. */
 void iris_interior_defaults(iris_interior *i);
+
+/* Fills 'm' with POV-Ray's media defaults for a scene of #version
+** 'version' (method 3, 1 interval, 10 samples from 3.5 on). */
+void iris_media_defaults(iris_media *m, double version);
 
 /* Fills 'g' with POV-Ray's global_settings defaults. */
 void iris_global_defaults(iris_global_settings *g);

@@ -766,9 +766,12 @@ void accel_destroy(struct accel *a)
     iris_free(a);
 }
 
+/* x·0 is 0 for finite x and NaN for an infinity or NaN, so the sum is 0
+** exactly when all three are finite: one test instead of three
+** branches, in a function called five times per query. */
 static bool finite_v(vec3 v)
 {
-    return isfinite(v.x) && isfinite(v.y) && isfinite(v.z);
+    return v.x * 0.0 + v.y * 0.0 + v.z * 0.0 == 0.0;
 }
 
 /*

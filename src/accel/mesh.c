@@ -21,6 +21,7 @@
 #include <string.h>
 
 #include "iris/fn.h"
+#include "image/heights.h"
 #include "iris/image.h"
 #include "math/transform.h"
 #include "util/mem.h"
@@ -228,16 +229,18 @@ static bool hf_height(const struct amesh *m, double x, double z, double *h)
     double h00 = H[j * m->hf_w + i], h10 = H[j * m->hf_w + i + 1];
     double h01 = H[(j + 1) * m->hf_w + i], h11 = H[(j + 1) * m->hf_w + i + 1];
     /* The same diagonal split as the triangles */
-    if (fx >= fz)
-        *h = h00 + fx * (h10 - h00) + fz * (h11 - h10);
+    if (fx + fz <= 1)
+        *h = h00 + fx * (h10 - h00) + fz * (h01 - h00);
     else
-        *h = h00 + fz * (h01 - h00) + fx * (h11 - h01);
+        *h = h11 + (1 - fx) * (h01 - h11) + (1 - fz) * (h10 - h11);
     return true;
 }
 
 bool amesh_inside(const struct anode *n, vec3 p)
 {
     const struct amesh *m = n->mesh;
+    if (!m)
+        return false; /* a mesh left without usable triangles */
     if (m->hf) {
         /* POV-Ray: inside is below the surface, over the unit square */
         vec3 lp = n->obj->has_transform
@@ -389,33 +392,27 @@ static const char *hf_grid(const iris_object *o, struct amesh *m)
                 m->hf[j * w + i] = isfinite(v) ? fmax(0, fmin(1, v)) : 0;
             }
     } else if (o->u.height_field.image && o->u.height_field.image->path) {
-        iris_image img;
+        double *px;
         char err[256];
-        if (iris_image_read(&img, o->u.height_field.image->path, err,
-                            sizeof err) != IRIS_OK)
+        /* POV-Ray's heights: palette indices, grey, or red and green as
+        ** the high and low byte (image/heights.h) */
+        if (iris_image_read_heights(o->u.height_field.image->path, &px, &w,
+                                    &h, err, sizeof err) != IRIS_OK)
             return "height_field image cannot be read";
-        w = img.width;
-        h = img.height;
         if (w < 2 || h < 2) {
-            iris_image_fini(&img);
+            iris_free(px);
             return "height_field image is smaller than 2x2";
         }
         m->hf = iris_malloc((size_t)w * h * sizeof *m->hf);
         if (!m->hf) {
-            iris_image_fini(&img);
+            iris_free(px);
             return "out of memory";
         }
-        /* The file's own values: undo the sRGB decoding of the reader,
-        ** then take the grey level. Row 0 (top of the image) is z = 1. */
+        /* Row 0 (top of the image) is z = 1. */
         for (int j = 0; j < h; j++)
-            for (int i = 0; i < w; i++) {
-                const float *px = img.pixels + 4 * ((size_t)(h - 1 - j) * w + i);
-                double g = 0.299 * iris_srgb_encode(px[0]) +
-                           0.587 * iris_srgb_encode(px[1]) +
-                           0.114 * iris_srgb_encode(px[2]);
-                m->hf[j * w + i] = isfinite(g) ? fmax(0, fmin(1, g)) : 0;
-            }
-        iris_image_fini(&img);
+            for (int i = 0; i < w; i++)
+                m->hf[j * w + i] = px[(size_t)(h - 1 - j) * w + i];
+        iris_free(px);
     } else {
         return "height_field has no image or function";
     }
@@ -450,7 +447,8 @@ static const char *src_height_field(const iris_object *o, struct amesh *m,
             if (wl > 0 && m->hf[a] <= wl && m->hf[b] <= wl &&
                 m->hf[c] <= wl && m->hf[d] <= wl)
                 continue;
-            int32_t t[6] = { a, b, d, a, d, c };
+            /* POV-Ray's split: the diagonal from (i+1, j) to (i, j+1) */
+            int32_t t[6] = { a, b, c, b, d, c };
             memcpy(s->ix + 3 * nt, t, sizeof t);
             nt += 2;
         }

@@ -154,6 +154,11 @@ static int iris_main(int argc, char **argv)
     }
     o.render.on_pass = passlog_on_pass;
     o.render.on_pass_user = &plog;
+    /* MPI: every rank's time in work, agreements and the reduction
+    ** (bench/scaling.sh); set on every rank, printed by rank 0 */
+    const char *rt_env = getenv("IRIS_RANK_TIMES");
+    if (rt_env && rt_env[0])
+        o.render.rank_times = stderr;
 
     struct run_times times = { 0, 0, 0 };
     iris_scene *scene = NULL;

@@ -123,12 +123,62 @@ static void sphere_part(const struct ovus_dims *d, vec3 c, double r,
     }
 }
 
+/*
+** Whether ray ro + t·rd, t in (t0, t1), surely keeps out of the part of
+** the spindle that geom_spindle_hits() reports: the points with
+** ylo < y < yhi on the inner surface, whose distance from the axis is
+** rho = sqrt(C² - (y - yc)²) - H <= C - H. The segment is cut to that
+** slab and its least rho² (a convex quadratic in t) compared with
+** (C - H)²; 'tol' widens both, so that a root the solver would find and
+** keep is never cut off by rounding. Then the quartic, whose roots there
+** would all be dropped, need not be solved: most rays through an ovus's
+** box miss the connection's slab or cylinder (the quartic always has
+** roots on the outer "apple" part, so the solve cannot prune itself).
+*/
+static bool spindle_missed(double H, double C, double ylo, double yhi,
+                           vec3 ro, vec3 rd, double t0, double t1,
+                           double tol)
+{
+    double a = t0, b = t1;
+    if (rd.y != 0) {
+        double ta = (ylo - tol - ro.y) / rd.y, tb = (yhi + tol - ro.y) / rd.y;
+        if (ta > tb) {
+            double tmp = ta;
+            ta = tb;
+            tb = tmp;
+        }
+        if (ta > a)
+            a = ta;
+        if (tb < b)
+            b = tb;
+        if (!(a <= b))
+            return true;
+    } else if (!(ro.y >= ylo - tol && ro.y <= yhi + tol)) {
+        return true;
+    }
+    if (!(C > H) || !isfinite(a) || !isfinite(b))
+        return false;
+    double dd = rd.x * rd.x + rd.z * rd.z;
+    double tm = dd > 0 ? -(ro.x * rd.x + ro.z * rd.z) / dd : a;
+    if (!(tm > a))
+        tm = a;
+    if (!(tm < b))
+        tm = b;
+    double x = ro.x + tm * rd.x, z = ro.z + tm * rd.z;
+    double rmax = C - H + tol;
+    return x * x + z * z > rmax * rmax;
+}
+
 void geom_spindle_hits(double H, double C, double yc, double ylo,
                        double yhi, vec3 ro, vec3 rd, double t0, double t1,
                        struct isect_list *out)
 {
     double dl = v3_len(rd);
     if (!(dl > 0))
+        return;
+    /* 1e-7 of the size: far beyond the rounding of the roots' points */
+    if (spindle_missed(H, C, ylo, yhi, ro, rd, t0, t1,
+                       1e-7 * (C + H)))
         return;
     vec3 dir = v3_scale(rd, 1 / dl);
     vec3 o = v3_sub(ro, v3(0, yc, 0));

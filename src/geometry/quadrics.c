@@ -68,8 +68,9 @@ void geom_sphere_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
 iris_vec2 geom_sphere_uv(const iris_object *o, vec3 p)
 {
     vec3 n = v3_scale(v3_sub(p, o->u.sphere.centre), 1.0 / o->u.sphere.radius);
-    /* POV-Ray's sphere uv: u around y from +x, v from the pole */
-    double u = atan2(-n.z, n.x) / (2 * M_PI);
+    /* POV-Ray's sphere uv: u around y from +x towards +z (acos(x), and
+    ** 2 pi minus it where z < 0), v from the pole */
+    double u = atan2(n.z, n.x) / (2 * M_PI);
     if (u < 0)
         u += 1;
     double v = 0.5 + asin(fmax(-1, fmin(1, n.y))) / M_PI;

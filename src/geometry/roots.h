@@ -14,6 +14,8 @@
 #ifndef IRIS_GEOMETRY_ROOTS_H
 #define IRIS_GEOMETRY_ROOTS_H
 
+#include <stdbool.h>
+
 #define ROOTS_MAX_DEGREE 35
 
 /*
@@ -25,6 +27,14 @@
 */
 int roots_in_interval(const double *c, int deg, double lo, double hi,
                       double *out);
+
+/*
+** Whether every value roots_eval(c, deg, t) can take for t in [lo, hi]
+** (finite) surely exceeds v, by a margin beyond rounding (roots.c, a
+** Bernstein bound). False means "not proved", not "no".
+*/
+bool roots_surely_above(const double *c, int deg, double lo, double hi,
+                        double v);
 
 /* Horner evaluation of the polynomial above. */
 double roots_eval(const double *c, int deg, double t);

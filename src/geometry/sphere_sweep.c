@@ -191,10 +191,14 @@ static void seg_box(const struct seg *s, vec3 *lo, vec3 *hi)
 }
 
 /*
-** min over u in [0, 1] of |p - c(u)|² - r(u)², the "depth" of p in the
-** segment's sweep (negative inside). Skips segments whose box excludes p.
+** Whether min over u in [0, 1] of |p - c(u)|² - r(u)², the "depth" of p
+** in the segment's sweep (negative inside), is below 'thr' (<= 0). The
+** minimum is that of the polynomial's values at u = 0, 1 and its
+** critical points (prange); where u = 0 or 1 already decides, or a
+** Bernstein bound proves every such value above thr, the critical points
+** are not needed: the answer is the same, at a fraction of the cost.
 */
-static double seg_depth(const struct seg *s, vec3 p)
+static bool seg_below(const struct seg *s, vec3 p, double thr)
 {
     int n = s->deg;
     double q[7] = { 0 };
@@ -206,9 +210,13 @@ static double seg_depth(const struct seg *s, vec3 p)
     for (int i = 0; i <= n; i++)
         for (int j = 0; j <= n; j++)
             q[i + j] += v3_dot(w[i], w[j]) - s->r[i] * s->r[j];
+    if (q[0] < thr || roots_eval(q, 2 * n, 1) < thr)
+        return true;
+    if (roots_surely_above(q, 2 * n, 0, 1, thr))
+        return false;
     double lo, hi;
     prange(q, 2 * n, &lo, &hi);
-    return lo;
+    return lo < thr;
 }
 
 struct sweep {
@@ -258,17 +266,18 @@ static void sweep_fini(struct sweep *w, int cap)
     }
 }
 
-/* min over every segment of seg_depth; +INFINITY when no box holds p. */
-static double sweep_depth(const struct sweep *w, vec3 p)
+/* Whether the depth of p in some segment whose box holds p is below thr
+** (<= 0): the minimum over the segments, compared with thr. */
+static bool sweep_below(const struct sweep *w, vec3 p, double thr)
 {
-    double best = INFINITY;
     for (int i = 0; i < w->n; i++) {
         if (p.x < w->lo[i].x || p.x > w->hi[i].x || p.y < w->lo[i].y ||
             p.y > w->hi[i].y || p.z < w->lo[i].z || p.z > w->hi[i].z)
             continue;
-        best = fmin(best, seg_depth(&w->s[i], p));
+        if (seg_below(&w->s[i], p, thr))
+            return true;
     }
-    return best;
+    return false;
 }
 
 #define CAP 16
@@ -428,7 +437,7 @@ void geom_sphere_sweep_hits(const iris_object *o, vec3 ro, vec3 rd,
         if (!(t > t0 && t < t1))
             continue;
         vec3 p = v3_madd(ro, rd, t);
-        if (sweep_depth(&w, p) < -tol)
+        if (sweep_below(&w, p, -tol))
             continue;
         bool enter = v3_dot(cand.v[i].n, d) < 0;
         if (kept > 0 && (v3_dot(cand.v[kept - 1].n, d) < 0) == enter) {
@@ -452,7 +461,7 @@ bool geom_sphere_sweep_inside(const iris_object *o, vec3 p)
     struct sweep w;
     if (!sweep_init(o, &w, sb, lb, hb, CAP))
         return false;
-    bool in = sweep_depth(&w, p) < 0;
+    bool in = sweep_below(&w, p, 0);
     sweep_fini(&w, CAP);
     return in;
 }

@@ -1,6 +1,7 @@
 ## src/image: images, and the OpenImageIO module loaded on first use.
 libiris_core_la_SOURCES += %reldir%/image.c %reldir%/image_io.c \
-	%reldir%/image_module.h %reldir%/png.c %reldir%/png.h
+	%reldir%/image_module.h %reldir%/png.c %reldir%/png.h \
+	%reldir%/heights.c %reldir%/heights.h
 pkglib_LTLIBRARIES = iris-oiio.la
 iris_oiio_la_SOURCES = %reldir%/oiio.cc %reldir%/image_module.h
 iris_oiio_la_CPPFLAGS = $(AM_CPPFLAGS) $(OIIO_CFLAGS)

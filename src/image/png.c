@@ -9,6 +9,7 @@
 #include <errno.h>
 #include <png.h>
 #include <setjmp.h>
+#include <stdbool.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -79,10 +80,10 @@ int png_write_rgb(const char *path, int width, int height, int bits, int nch,
     return 0;
 }
 
-int png_read_float(const char *path, int *width, int *height, int *channels,
-                   float **pixels, char *err, size_t errlen)
+int png_read_samples(const char *path, bool keep_indices,
+                     struct png_samples *out_s, char *err, size_t errlen)
 {
-    *pixels = NULL;
+    memset(out_s, 0, sizeof *out_s);
     FILE *f = fopen(path, "rb");
     if (!f) {
         snprintf(err, errlen, "%s: %s", path, strerror(errno));
@@ -97,7 +98,7 @@ int png_read_float(const char *path, int *width, int *height, int *channels,
     png_infop info = png ? png_create_info_struct(png) : NULL;
     png_bytep *volatile rows = NULL;
     unsigned char *volatile data = NULL;
-    float *volatile out = NULL;
+    unsigned short *volatile out = NULL;
     if (!png || !info || setjmp(png_jmpbuf(png))) {
         snprintf(err, errlen, "%s: not a readable PNG file", path);
         png_destroy_read_struct(&png, &info, NULL);
@@ -111,7 +112,14 @@ int png_read_float(const char *path, int *width, int *height, int *channels,
     png_set_sig_bytes(png, 8);
     png_set_user_limits(png, 1 << 16, 1 << 16);
     png_read_info(png, info);
-    png_set_expand(png);          /* palette, low bit depths, tRNS */
+    int type = png_get_color_type(png, info);
+    bool indexed = keep_indices && type == PNG_COLOR_TYPE_PALETTE;
+    if (indexed)
+        png_set_packing(png);     /* 1, 2, 4-bit indices to bytes */
+    else if (keep_indices && !(type & PNG_COLOR_MASK_COLOR))
+        png_set_expand_gray_1_2_4_to_8(png);
+    else if (!keep_indices)
+        png_set_expand(png);      /* palette, low bit depths, tRNS */
     png_set_swap(png);            /* 16-bit samples in native order */
     png_read_update_info(png, info);
     png_uint_32 w = png_get_image_width(png, info);
@@ -132,15 +140,43 @@ int png_read_float(const char *path, int *width, int *height, int *channels,
     png_read_end(png, NULL);
     size_t n = (size_t)w * h * (size_t)nch;
     for (size_t i = 0; i < n; i++)
-        out[i] = depth == 16 ? ((const unsigned short *)data)[i] / 65535.0f
-                             : data[i] / 255.0f;
+        out[i] = depth == 16 ? ((const unsigned short *)data)[i] : data[i];
     png_destroy_read_struct(&png, &info, NULL);
     free(rows);
     free(data);
     fclose(f);
-    *width = (int)w;
-    *height = (int)h;
-    *channels = nch;
+    out_s->width = (int)w;
+    out_s->height = (int)h;
+    out_s->channels = nch;
+    out_s->depth = depth;
+    out_s->indexed = indexed;
+    out_s->grey = !(type & PNG_COLOR_MASK_COLOR);
+    out_s->v = out;
+    return 0;
+}
+
+int png_read_float(const char *path, int *width, int *height, int *channels,
+                   float **pixels, char *err, size_t errlen)
+{
+    *pixels = NULL;
+    struct png_samples s;
+    int rc = png_read_samples(path, false, &s, err, errlen);
+    if (rc != 0)
+        return rc;
+    size_t n = (size_t)s.width * s.height * (size_t)s.channels;
+    float *out = malloc(sizeof *out * (n ? n : 1));
+    if (!out) {
+        snprintf(err, errlen, "%s: out of memory", path);
+        free(s.v);
+        return -1;
+    }
+    float scale = s.depth == 16 ? 1.0f / 65535.0f : 1.0f / 255.0f;
+    for (size_t i = 0; i < n; i++)
+        out[i] = s.v[i] * scale;
+    free(s.v);
+    *width = s.width;
+    *height = s.height;
+    *channels = s.channels;
     *pixels = out;
     return 0;
 }

@@ -45,13 +45,24 @@ double pat_eval_at(const struct mat_ctx *ctx, const iris_pattern *pat,
 vec3 pat_warp_world(const struct mat_ctx *ctx, const iris_pattern *pat,
                     vec3 p);
 
-/* pat_eval_at(pat_space(p)). */
+/* Where a pattern starts from: 'p', or under uv_mapping the surface's
+** <u, v, 0> (POV-Ray's UV_MAP_PATTERN: no warps or transforms of the
+** object reach it). */
+vec3 pat_input(const iris_pattern *pat, vec3 p, const struct mat_point *pt);
+
+/* pat_eval_at(pat_space(pat_input(p))). */
 double pat_value(const struct mat_ctx *ctx, const iris_pattern *pat,
                  vec3 p, const struct mat_point *pt);
 
 /* Whether the pattern's value is a map index (checker, hexagon, brick...)
 ** rather than a position in [0, 1]. */
 bool pat_is_list(enum iris_pattern_kind kind);
+
+/* The quilted pattern's displacement at pattern-space point 'p': the
+** offset from the unit cell's centre scaled by the control0/control1
+** cubic. The pattern value is its mean |component|; a quilted normal
+** adds it to the normal (POV-Ray's quilted() in normal.cpp). */
+vec3 pat_quilt_vector(const iris_pattern *pat, vec3 p);
 
 /* The noise generator the pattern uses. */
 int pat_noise_generator(const struct mat_ctx *ctx, const iris_pattern *pat);

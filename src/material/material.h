@@ -64,7 +64,8 @@ struct mat_point {
 struct mat_layer {
     iris_colour pigment;       /* rgb, filter, transmit */
     const iris_finish *finish; /* never NULL */
-    vec3 n;                    /* perturbed unit normal, facing the ray */
+    vec3 n;                    /* perturbed unit normal; may tip away
+                                  from the ray, as POV-Ray's may */
     bool valid;                /* false: no colour here (image_map once) */
 };
 

@@ -5,11 +5,11 @@
 ** The normal is taken into pattern space (the transpose of the pattern's
 ** local-to-world matrix), normalised, displaced there, and taken back with
 ** the inverse transpose, so bumps keep their look under any scale. The
-** dedicated normal patterns (bumps, dents, wrinkles, ripples, waves) add
-** their own displacement vectors; every other pattern is differentiated
-** numerically on POV-Ray's tetrahedron of four sample points at distance
-** 'accuracy', scaled by -5 * amount * 0.02 / accuracy, through the
-** slope_map when one is given.
+** dedicated normal patterns (bumps, dents, wrinkles, ripples, waves,
+** quilted) add their own displacement vectors; every other pattern is
+** differentiated numerically on POV-Ray's tetrahedron of four sample
+** points at distance 'accuracy', scaled by -5 * amount * 0.02 / accuracy,
+** through the slope_map when one is given.
 */
 #include "config.h"
 
@@ -173,7 +173,7 @@ vec3 mat_perturb_normal(const struct mat_ctx *ctx, const iris_normal *nrm,
         }
         /* the entries see the map pattern's warps (pat_warp_world) */
         struct mat_point wpt = *pt;
-        wpt.p = pat_warp_world(ctx, pat, pt->p);
+        wpt.p = pat_warp_world(ctx, pat, pat_input(pat, pt->p, pt));
         vec3 nc = mat_perturb_normal(ctx, nrm->entries[c].normal, &wpt, n);
         if (p == c)
             return v3_norm(nc);
@@ -186,7 +186,7 @@ vec3 mat_perturb_normal(const struct mat_ctx *ctx, const iris_normal *nrm,
         vec3 sum = v3(0, 0, 0);
         double total = 0;
         struct mat_point wpt = *pt;
-        wpt.p = pat_warp_world(ctx, pat, pt->p);
+        wpt.p = pat_warp_world(ctx, pat, pat_input(pat, pt->p, pt));
         for (int i = 0; i < nrm->n_entries; i++) {
             double w = nrm->entries[i].value != 0 ? nrm->entries[i].value : 1;
             sum = v3_madd(sum, mat_perturb_normal(ctx, nrm->entries[i].normal,
@@ -196,7 +196,7 @@ vec3 mat_perturb_normal(const struct mat_ctx *ctx, const iris_normal *nrm,
         return total > 0 ? v3_norm(sum) : n;
     }
     vec3 np = warp_normal(pat, n);
-    vec3 q = pat_space(ctx, pat, pt->p);
+    vec3 q = pat_space(ctx, pat, pat_input(pat, pt->p, pt));
     switch (pat->kind) {
     case IRIS_PAT_IMAGE_MAP:
         if (nrm->bump_map) {
@@ -221,6 +221,11 @@ vec3 mat_perturb_normal(const struct mat_ctx *ctx, const iris_normal *nrm,
         break;
     case IRIS_PAT_WAVES:
         np = waves_normal(ctx, nrm, q, np, false);
+        break;
+    case IRIS_PAT_QUILTED:
+        /* a normal-only pattern in POV-Ray: the cell vector, not the
+        ** slope of the pattern value */
+        np = v3_madd(np, pat_quilt_vector(pat, q), nrm->amount);
         break;
     default:
         np = pattern_normal(ctx, nrm, q, np, pt);

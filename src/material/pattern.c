@@ -146,9 +146,30 @@ static vec3 warp_repeat(const iris_warp *w, vec3 p)
     return v3_madd(r, w->offset, blk);
 }
 
+/*
+** black_hole, with POV-Ray's repeat (a copy of the hole in every block of
+** the repeat vector's size; a component below 1e-10 does not repeat) and
+** its turbulence (each copy's centre moved by up to that vector, by
+** PatternRands of the block's Hash3d, as POV-Ray's WarpRands).
+*/
 static vec3 warp_black_hole(const iris_warp *w, vec3 p)
 {
-    vec3 delta = v3_sub(p, w->centre);
+    vec3 c = w->centre;
+    vec3 r = w->repeat;
+    if (r.x != 0 || r.y != 0 || r.z != 0) {
+        int bx = r.x >= 1e-10 ? (int)floor(p.x / r.x) : 0;
+        int by = r.y >= 1e-10 ? (int)floor(p.y / r.y) : 0;
+        int bz = r.z >= 1e-10 ? (int)floor(p.z / r.z) : 0;
+        vec3 u = w->turbulence;
+        if (u.x != 0 || u.y != 0 || u.z != 0) {
+            unsigned long seed = (unsigned long)noise_hash3d(bx, by, bz);
+            c.x += pat_rand(seed) * u.x;
+            c.y += pat_rand(seed + 1) * u.y;
+            c.z += pat_rand(seed + 2) * u.z;
+        }
+        c = v3_add(c, v3(r.x * bx, r.y * by, r.z * bz));
+    }
+    vec3 delta = v3_sub(p, c);
     double len = v3_len(delta);
     if (w->radius <= 0 || len >= w->radius)
         return p;
@@ -498,16 +519,73 @@ static double quilt_cubic(double t, double p1, double p2)
     return v * 1.154700538; /* POV-Ray: 1/sqrt(3/4) */
 }
 
-static double quilted(const iris_pattern *pat, vec3 p)
+vec3 pat_quilt_vector(const iris_pattern *pat, vec3 p)
 {
     double c0 = pat->params[0], c1 = pat->params[1];
     if (c0 == 0 && c1 == 0)
         c0 = c1 = 1.0;
     vec3 v = v3(p.x - floor(p.x) - 0.5, p.y - floor(p.y) - 0.5,
                 p.z - floor(p.z) - 0.5);
-    double t = quilt_cubic(v3_len(v), c0, c1);
-    v = v3_scale(v, t);
+    return v3_scale(v, quilt_cubic(v3_len(v), c0, c1));
+}
+
+static double quilted(const iris_pattern *pat, vec3 p)
+{
+    vec3 v = pat_quilt_vector(pat, p);
     return (fabs(v.x) + fabs(v.y) + fabs(v.z)) / 3.0;
+}
+
+/* POV-Ray's wrap of a slope value into [0, 1): 1 itself, a very common
+** value, stays at the top of the map (1 - EPSILON) instead of wrapping. */
+static double slope_wrap(double v)
+{
+    if (v >= 1.0 && v - 1.0 < 1e-10)
+        return v - 1e-10;
+    return v < 0.0 ? 1.0 + fmod(v, 1.0) : fmod(v, 1.0);
+}
+
+/* A lo, hi range as POV-Ray keeps it: hi == lo != 0 means no range. */
+static double slope_rescale(double v, double lo, double hi)
+{
+    if (hi == lo)
+        return v;
+    return (v - lo) / (hi - lo);
+}
+
+/*
+** slope (layout in the parser: params[0..1] the slope range, [2..3] the
+** altitude range, [4..6] the altitude vector, [7] point_at): the angle
+** of the surface normal (the one facing the ray) to the slope vector,
+** asin(n . v) mapped from [-90, 90] degrees to [0, 1], mixed with the
+** point's height along the altitude vector in proportion to the two
+** vectors' lengths. POV-Ray 3.7's slope_pattern.
+*/
+static double slope(const iris_pattern *pat, vec3 p,
+                    const struct mat_point *pt)
+{
+    if (!pt)
+        return 0.0;
+    const double *k = pat->params;
+    vec3 alt = v3(k[4], k[5], k[6]);
+    double slen = 1.0, alen = 0.0, c;
+    if (k[7] != 0) {
+        c = v3_dot(pt->n, v3_norm(v3_sub(pat->vector, pt->p)));
+    } else {
+        slen = v3_len(pat->vector);
+        alen = v3_len(alt);
+        if (slen + alen == 0)
+            return 0.0;
+        c = slen > 0 ? v3_dot(pt->n, v3_scale(pat->vector, 1 / slen)) : 0;
+        slen /= slen + alen;
+        alen = 1.0 - slen;
+    }
+    c = fmax(-1.0, fmin(1.0, c));
+    double v1 = slope_rescale((asin(c) / M_PI * 2 + 1.0) * 0.5, k[0], k[1]);
+    if (alen == 0)
+        return slope_wrap(v1);
+    double v2 = slope_rescale(v3_dot(p, v3_scale(alt, 1 / v3_len(alt))),
+                              k[2], k[3]);
+    return slope_wrap(slen * v1 + alen * v2);
 }
 
 static double waves_sum(const struct mat_ctx *ctx, const iris_pattern *pat,
@@ -821,13 +899,7 @@ static double raw_value(const struct mat_ctx *ctx, const iris_pattern *pat,
             return 1.0 - c.t;
         return 0.297 * c.r + 0.589 * c.g + 0.114 * c.b;
     }
-    case IRIS_PAT_SLOPE:
-        /* slope: the angle of the surface normal to 'vector' */
-        if (pt) {
-            vec3 v = v3_norm(pat->vector);
-            return 0.5 + 0.5 * v3_dot(pt->n, v);
-        }
-        return 0.0;
+    case IRIS_PAT_SLOPE: return slope(pat, p, pt);
     default:
         return 0.0;
     }
@@ -856,8 +928,16 @@ double pat_eval_at(const struct mat_ctx *ctx, const iris_pattern *pat,
     return isfinite(v) ? v : 0.0;
 }
 
+vec3 pat_input(const iris_pattern *pat, vec3 p, const struct mat_point *pt)
+{
+    if (pat->uv_mapping && pt)
+        return v3(pt->uv.u, pt->uv.v, 0.0);
+    return p;
+}
+
 double pat_value(const struct mat_ctx *ctx, const iris_pattern *pat, vec3 p,
                  const struct mat_point *pt)
 {
-    return pat_eval_at(ctx, pat, pat_space(ctx, pat, p), pt);
+    return pat_eval_at(ctx, pat, pat_space(ctx, pat, pat_input(pat, p, pt)),
+                       pt);
 }

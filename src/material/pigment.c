@@ -176,7 +176,7 @@ bool mat_eval_pigment(const struct mat_ctx *ctx, const iris_pigment *pig,
     if (pat->kind == IRIS_PAT_IMAGE_MAP) {
         if (!pat->image)
             return true;
-        vec3 q = pat_space(ctx, pat, pt->p);
+        vec3 q = pat_space(ctx, pat, pat_input(pat, pt->p, pt));
         if (!image_texel_colour(ctx, pat->image, q, true, out)) {
             iris_colour clear = { 1, 1, 1, 0, 1 };
             *out = clear;
@@ -191,7 +191,7 @@ bool mat_eval_pigment(const struct mat_ctx *ctx, const iris_pigment *pig,
                                pig->entries[0].pigment) &&
         pat->n_warps > 0) {
         wpt = *pt;
-        wpt.p = pat_warp_world(ctx, pat, pt->p);
+        wpt.p = pat_warp_world(ctx, pat, pat_input(pat, pt->p, pt));
         ept = &wpt;
     }
     if (pat->kind == IRIS_PAT_AVERAGE)
@@ -292,6 +292,24 @@ static bool map_pos(const iris_image_ref *ref, int w, int h, vec3 q,
         if (lxz == 0.0)
             return false;
         *u = angle_xz(x, z, lxz) * w;
+        break;
+    }
+    case 5: { /* torus of major radius 1 around y (POV-Ray's
+               ** torus_image_map): u the angle around y, v the angle
+               ** around the tube from its inside */
+        double len = sqrt(q.x * q.x + q.z * q.z);
+        if (len == 0.0)
+            return false;
+        double theta = angle_xz(q.x, q.z, len);
+        double x = len - 1.0;
+        double lxy = sqrt(x * x + q.y * q.y);
+        if (lxy == 0.0)
+            return false;
+        double phi = acos(fmin(fmax(-x / lxy, -1.0), 1.0));
+        if (q.y > 0.0)
+            phi = 2 * M_PI - phi;
+        *u = theta * w; /* POV-Ray negates it twice */
+        *v = phi / (2 * M_PI) * h;
         break;
     }
     default: /* planar: x runs along the width, y along the height */

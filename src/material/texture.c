@@ -218,11 +218,9 @@ static void eval_layer(const struct mat_ctx *ctx, const iris_texture *t,
     l->finish = t->finish ? t->finish : default_finish();
     l->n = pt->n;
     if (t->normal && !pt->skip_normals) {
-        vec3 n = mat_perturb_normal(ctx, t->normal, pt, pt->n);
-        /* A perturbed normal stays on the side the ray came from. */
-        if (v3_dot(n, pt->n) < 0)
-            n = v3_norm(v3_madd(n, pt->n, -2.0 * v3_dot(n, pt->n)));
-        l->n = n;
+        /* POV-Ray keeps a perturbed normal as it comes, even where it
+        ** tips below the surface (the light then falls on its back). */
+        l->n = mat_perturb_normal(ctx, t->normal, pt, pt->n);
     }
 }
 

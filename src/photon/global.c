@@ -32,13 +32,12 @@
 ** light -> specular+ -> diffuse is the caustic map's (shoot.c), so the
 ** global estimate adds only what neither has: no double counting.
 **
-** The estimate is read at eye-ray hits from irradiance precomputed at a
-** quarter of the photons (PMAP_GLOBAL_GATHER neighbours each; see
-** precompute_irradiance below); no final gather. Why: a one-bounce final
-** gather costs tens of rays per eye hit (several times the whole render of
-** the Cornell box at its default size), while progressive passes already
-** average independent global maps with a shrinking radius, which removes
-** both the blotches and the bias of the direct estimate as passes grow.
+** The estimate is read from irradiance precomputed at a quarter of the
+** photons (PMAP_GLOBAL_GATHER neighbours each; see precompute_irradiance
+** below) at the hits of the final gather's rays (src/render/gather.c):
+** eye hits gather instead of reading it, because read directly the map's
+** low-frequency noise shows as colour blotches, while the mean over
+** 'count' gather rays averages it out.
 */
 #include "config.h"
 
@@ -89,6 +88,11 @@ struct gshoot {
 bool pmap_wants_global(const iris_scene *scene)
 {
     if (!scene->settings.radiosity)
+        return false;
+    /* recursion_limit 1: one bounce, all of it the final gather's
+    ** (render/gather.c), which then reads no global map; 0 = not set */
+    int rl = scene->settings.rad.recursion_limit;
+    if (rl == 1)
         return false;
     for (int i = 0; i < scene->n_lights; i++)
         if (!scene->lights[i]->shadowless)

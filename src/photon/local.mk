@@ -2,4 +2,7 @@
 ## global.c).
 libiris_core_la_SOURCES += %reldir%/photon.h %reldir%/photon.c \
 	%reldir%/pmap.h %reldir%/shoot.c %reldir%/trace.c %reldir%/trace.h \
-	%reldir%/global.c %reldir%/estimate.c %reldir%/pstore.c %reldir%/pstore.h
+	%reldir%/global.c %reldir%/estimate.c %reldir%/pstore.c %reldir%/pstore.h \
+	%reldir%/photon_file.c %reldir%/photon_file.h \
+	%reldir%/membudget.c %reldir%/membudget.h \
+	%reldir%/fastpath.c %reldir%/fastpath.h

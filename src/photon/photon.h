@@ -54,11 +54,13 @@ struct photon_options {
                                   solid top-layer pigments only */
     int64_t max_photons;       /* > 0: clamp the photons shot to this many,
                                   with a warning; 0: fail with a located
-                                  error past what half the memory holds
-                                  (shoot.c) */
+                                  error past what the memory available
+                                  holds (shoot.c, membudget.h) */
     FILE *log;                 /* warnings (NULL: stderr) */
     int64_t global_photons;    /* global map (radiosity{}): photons per
                                   pass, 0 = PMAP_GLOBAL_PHOTONS (pmap.h) */
+    bool no_fastpath;          /* query accel even where the photon fast
+                                  path applies (fastpath.h; benchmarks) */
 };
 
 /* What a build did, for -v and the benchmarks. */
@@ -73,6 +75,9 @@ struct photon_stats {
                                   the photon cap) */
     double gather_radius;      /* initial gather radius (auto or given) */
     double seconds_shoot, seconds_build;
+    double cpu_shoot, cpu_build;   /* the same in CPU seconds of all the
+                                      process's threads (a shared, loaded
+                                      machine inflates wall time, not these) */
 };
 
 /*

@@ -85,6 +85,12 @@ enum iris_status pmap_from_raw(const iris_scene *scene,
                                struct pstore_raw *all, size_t n, int threads,
                                struct photon_map **out);
 
+/* The estimate's parameters of a caustic map whose store is built: gather
+** counts, expansion, the (automatic or given) radius (shoot.c; also for
+** a map read by photon_file.c). */
+void pmap_caustic_setup(struct photon_map *m, const iris_photon_settings *ps,
+                        const struct photon_options *opts);
+
 /* The shooting rule of semantics §2.2b for one light and target. */
 bool pmap_shoots(const iris_light *l, const iris_object *target);
 

@@ -59,10 +59,13 @@
 #include "photon/pmap.h"
 
 #include <math.h>
+#include <stdatomic.h>
 #include <stdio.h>
 #include <string.h>
+#include <time.h>
 #include <unistd.h>
 
+#include "photon/membudget.h"
 #include "photon/trace.h"
 #include "spectrum/spectrum.h"
 #include "util/mem.h"
@@ -87,6 +90,9 @@ struct combo {
     double dtheta, theta_max;
     int n1, n2;                /* area-light photon grid (1x1 if none) */
     vec3 axis1, axis2;
+    vec3 beam;                 /* unit light->point_at, for the spot and
+                                  cylinder attenuation (once, not per
+                                  photon) */
 };
 
 /* One ring of photons. */
@@ -110,6 +116,15 @@ struct shoot {
     double jitter;
     double u0;                 /* random offset of the wavelength lattice */
     struct ptrace_out *outs;   /* one per batch */
+    /* The memory budget (membudget.h) for the photons STORED: a photon
+    ** can deposit many times (a diffuse mirror between two plates), which
+    ** the count checked before shooting does not know. Batches add what
+    ** they stored; once past 'store_cap' the rest are skipped and the
+    ** build fails with a located error instead of running out. */
+    double store_cap;
+    struct membudget budget;
+    _Atomic int64_t n_stored;
+    atomic_bool over_budget;
 };
 
 bool pmap_shoots(const iris_light *l, const iris_object *t)
@@ -203,6 +218,7 @@ static enum iris_status find_combos(struct shoot *s)
                                                        5.0 * k) - e0) >
                     1e-12 * fabs(e0))
                     c->tc.chromatic = true;
+            c->beam = v3_norm(v3_sub(l->point_at, l->location));
             c->ctr = v3_scale(v3_add(lo, hi), 0.5);
             c->rad = 0.5 * v3_len(v3_sub(hi, lo));
             c->est_rad = c->rad;
@@ -281,29 +297,35 @@ static double spacing_for(const struct shoot *s)
 /*
 ** The photon cap. A spacing of 1e-9 (or count 1e12) asks for ~1e19
 ** photons; shooting them would run out of memory or time with no hint
-** why. The cap is what half the physical memory holds at PMAP_PEAK_BYTES
-** a photon (a raw photon in its batch buffer, again in the concatenated
-** array, then packed: 32 + 32 + 16, with slack for photons that deposit
-** more than once): about 1.25e8 photons on a 24 GB machine, so a pass of
-** 1e8 photons still runs (issue 8). Past it the build fails with a
+** why. The cap is what the memory this process may still allocate
+** (membudget.h: MemAvailable, ulimit -v/-d, the cgroup's memory.max,
+** whichever is least) holds at MEMBUDGET_PHOTON_BYTES a photon, after
+** the global map's share: about 3.8e8 photons on an idle 24 GB machine,
+** so a pass of 1e8 photons runs (issue 8). Past it the build fails with a
 ** located error before anything is allocated ("a clear error before a
-** run would exceed the memory available"), rather than silently shooting
-** fewer photons than the scene asks for. A caller that sets max_photons
-** chooses clamping instead: the spacing is raised to fit, with a warning.
+** run would exceed the memory available"), rather than being killed or
+** silently shooting fewer photons than the scene asks for. A caller that
+** sets max_photons chooses clamping instead: the spacing is raised to
+** fit, with a warning.
 */
 #define PMAP_MAX_PHOTONS 1e12 /* no cap but memory's */
-#define PMAP_PEAK_BYTES 96.0
 
-static double photon_cap(const struct photon_options *o)
+static double photon_cap(const struct shoot *s, struct membudget *b,
+                         double *global)
 {
+    const struct photon_options *o = s->opts;
+    membudget_available(b);
+    *global = 0.0;
     if (o->max_photons > 0)
         return (double)o->max_photons;
-    double cap = PMAP_MAX_PHOTONS;
-#if defined(_SC_PHYS_PAGES) && defined(_SC_PAGESIZE)
-    long pages = sysconf(_SC_PHYS_PAGES), psz = sysconf(_SC_PAGESIZE);
-    if (pages > 0 && psz > 0)
-        cap = fmin(cap, 0.5 * (double)pages * (double)psz / PMAP_PEAK_BYTES);
-#endif
+    *global = !pmap_wants_global(s->scene) ? 0.0
+              : o->global_photons > 0      ? (double)o->global_photons
+                                           : PMAP_GLOBAL_PHOTONS;
+    double room = b->bytes - membudget_photon_peak(0.0, *global);
+    double cap = fmin(PMAP_MAX_PHOTONS, room / MEMBUDGET_PHOTON_BYTES);
+    /* pstore_knn's indices are uint32_t: a 512 GB machine is the first
+    ** that could store more photons */
+    cap = fmin(cap, 4.0e9);
     return fmax(cap, 1000.0);
 }
 
@@ -371,7 +393,12 @@ static void photon_loc(const struct shoot *s, const char **file, iris_loc *loc)
 */
 static double cap_spacing(struct shoot *s, double spacing)
 {
-    double cap = photon_cap(s->opts);
+    struct membudget b;
+    double global;
+    double cap = photon_cap(s, &b, &global);
+    /* clamping (max_photons) bounds what is shot, not what is stored */
+    s->store_cap = s->opts->max_photons > 0 ? INFINITY : cap;
+    s->budget = b;
     double est = estimate_photons(s, spacing);
     if (!(est > cap) || s->n_combos == 0)
         return spacing;
@@ -380,11 +407,17 @@ static double cap_spacing(struct shoot *s, double spacing)
     iris_loc loc;
     photon_loc(s, &file, &loc);
     if (s->opts->max_photons <= 0) {
+        char need[32], have[32];
         if (s->opts->pass == 0)
             fprintf(log, "%s:%u:%u: error: photons: spacing %g would shoot "
-                    "%.3g photons, more than half the memory holds (%.3g); "
-                    "raise 'spacing' or lower 'count'\n", file,
-                    (unsigned)loc.line, (unsigned)loc.col, spacing, est, cap);
+                    "%.3g photons, about %s at the photon pass's peak, more "
+                    "than the %s %s leaves (%.3g photons); raise 'spacing' "
+                    "or lower 'count'\n", file,
+                    (unsigned)loc.line, (unsigned)loc.col, spacing, est,
+                    membudget_format(membudget_photon_peak(est, global),
+                                     need, sizeof need),
+                    membudget_format(b.bytes, have, sizeof have), b.what,
+                    cap);
         return -1.0;
     }
     double sp = spacing;
@@ -544,9 +577,7 @@ static void shoot_one(const struct shoot *s, const struct ring *rg, int64_t j,
         o = v3_madd(o, c->axis1, (double)u / (c->n1 - 1) - 0.5);
         o = v3_madd(o, c->axis2, (double)v / (c->n2 - 1) - 0.5);
     }
-    const iris_light *cl = c->tc.light;
-    double a = pmap_light_atten(cl, v3_norm(v3_sub(cl->point_at, cl->location)),
-                                o, d);
+    double a = pmap_light_atten(c->tc.light, c->beam, o, d);
     if (a < 1e-5)
         return;
     double u = s->u0 + lambda_lattice(rg - s->rings, k_phi, k_area);
@@ -564,6 +595,8 @@ static void shoot_batch(void *ctx, int64_t item, int thread)
     int64_t lo = item * PHOTON_BATCH;
     int64_t hi = lo + PHOTON_BATCH < s->n_photons ? lo + PHOTON_BATCH
                                                   : s->n_photons;
+    if (atomic_load(&s->over_budget))
+        return;
     /* one search per batch, then the rings in order */
     const struct ring *rg = ring_of(s, lo);
     const struct ring *last = s->rings + s->n_rings - 1;
@@ -572,6 +605,10 @@ static void shoot_batch(void *ctx, int64_t item, int thread)
             rg++;
         shoot_one(s, rg, j, &s->outs[item]);
     }
+    int64_t n = atomic_fetch_add(&s->n_stored, (int64_t)s->outs[item].n) +
+                (int64_t)s->outs[item].n;
+    if ((double)n > s->store_cap)
+        atomic_store(&s->over_budget, true);
 }
 
 static void shoot_fini(struct shoot *s, int64_t n_batches)
@@ -613,6 +650,17 @@ enum iris_status pmap_concat(struct ptrace_out *outs, int64_t n,
     return rc;
 }
 
+/* CPU seconds of the whole process (all threads), for the stats. */
+static double cpu_now(void)
+{
+#ifdef CLOCK_PROCESS_CPUTIME_ID
+    struct timespec ts;
+    if (clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts) == 0)
+        return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+#endif
+    return 0.0;
+}
+
 /* The caustic map (see the DESIGN note at the top). */
 static enum iris_status build_caustic(const iris_scene *scene,
                                       const struct pmap_world *w,
@@ -629,9 +677,12 @@ static enum iris_status build_caustic(const iris_scene *scene,
             *stats = st;
         return IRIS_OK;
     }
-    double t0 = par_now();
+    double t0 = par_now(), c0 = cpu_now();
     struct shoot s;
     memset(&s, 0, sizeof s);
+    atomic_init(&s.n_stored, 0);
+    atomic_init(&s.over_budget, false);
+    s.store_cap = INFINITY;
     s.scene = scene;
     s.w = w;
     s.opts = opts;
@@ -659,6 +710,22 @@ static enum iris_status build_caustic(const iris_scene *scene,
     }
     if (rc == IRIS_OK)
         par_for(opts->threads, n_batches, shoot_batch, &s);
+    if (rc == IRIS_OK && atomic_load(&s.over_budget)) {
+        const char *file;
+        iris_loc loc;
+        photon_loc(&s, &file, &loc);
+        char have[32];
+        fprintf(opts->log ? opts->log : stderr,
+                "%s:%u:%u: error: photons: %.3g photons would store more "
+                "than %.3g (they deposit more than once each), what the %s "
+                "%s leaves holds; shooting stopped; raise 'spacing' or "
+                "lower 'count'\n",
+                file, (unsigned)loc.line, (unsigned)loc.col,
+                (double)s.n_photons, s.store_cap,
+                membudget_format(s.budget.bytes, have, sizeof have),
+                s.budget.what);
+        rc = IRIS_EINVAL; /* reported */
+    }
 
     /* Concatenate the batches in order */
     size_t total = 0;
@@ -668,7 +735,7 @@ static enum iris_status build_caustic(const iris_scene *scene,
     st.shot = s.n_photons;
     st.n_combos = s.n_combos;
     shoot_fini(&s, n_batches);
-    double t1 = par_now();
+    double t1 = par_now(), c1 = cpu_now();
 
     struct photon_map *m = NULL;
     if (rc == IRIS_OK)
@@ -677,6 +744,23 @@ static enum iris_status build_caustic(const iris_scene *scene,
         iris_free(all);
     if (rc != IRIS_OK)
         return rc;
+    pmap_caustic_setup(m, ps, opts);
+    st.stored = (int64_t)m->store.n;
+    st.bytes = (int64_t)(m->store.n * sizeof(struct pstore_photon));
+    st.gather_radius = m->radius;
+    st.seconds_shoot = t1 - t0;
+    st.seconds_build = par_now() - t1;
+    st.cpu_shoot = c1 - c0;
+    st.cpu_build = cpu_now() - c1;
+    if (stats)
+        *stats = st;
+    *out = m;
+    return IRIS_OK;
+}
+
+void pmap_caustic_setup(struct photon_map *m, const iris_photon_settings *ps,
+                        const struct photon_options *opts)
+{
     m->gather_min = ps->gather_min > 0 ? ps->gather_min : 0;
     m->gather_max = ps->gather_max > PSTORE_MAX_K ? PSTORE_MAX_K
                                                   : ps->gather_max;
@@ -693,15 +777,6 @@ static enum iris_status build_caustic(const iris_scene *scene,
     /* The progressive schedule shrinks the estimate radius, not the
     ** search radius (estimate.c) */
     m->estimate_scale = opts->radius_scale > 0.0 ? opts->radius_scale : 1.0;
-    st.stored = (int64_t)m->store.n;
-    st.bytes = (int64_t)(m->store.n * sizeof(struct pstore_photon));
-    st.gather_radius = m->radius;
-    st.seconds_shoot = t1 - t0;
-    st.seconds_build = par_now() - t1;
-    if (stats)
-        *stats = st;
-    *out = m;
-    return IRIS_OK;
 }
 
 /*

@@ -23,6 +23,7 @@
 #include "render/eyepass.h"
 #include "render/eyespectrum.h"
 #include "render/focalblur.h"
+#include "render/gather.h"
 #include "render/jitter.h"
 #include "util/mem.h"
 #include "util/thread.h"
@@ -59,11 +60,26 @@ struct job {
     atomic_int alloc_failed;
 };
 
+/* llround() for the finite, small values below, without its library
+** call (once per sample): v - trunc(v) is exact, so halves round away
+** from zero exactly as llround() does. */
+static int64_t round_half_away(double v)
+{
+    int64_t i = (int64_t)v;
+    double f = v - (double)i;
+    if (f >= 0.5)
+        i++;
+    else if (f <= -0.5)
+        i--;
+    return i;
+}
+
 /* A stream key from an image position, so that a sample gets the same
 ** random numbers whichever tile or thread traces it. */
 static uint64_t pos_key(double x, double y)
 {
-    int64_t ix = (int64_t)llround(x * 4096.0), iy = (int64_t)llround(y * 4096.0);
+    int64_t ix = round_half_away(x * 4096.0);
+    int64_t iy = round_half_away(y * 4096.0);
     return ((uint64_t)ix << 32) ^ (uint64_t)iy ^ ((uint64_t)iy << 17);
 }
 
@@ -487,6 +503,7 @@ static void run_tile(void *ctx, int64_t item, int thread)
     int x0 = j->x0 + tx * TILE, y0 = j->y0 + ty * TILE;
     int x1 = x0 + TILE - 1 < j->x1 ? x0 + TILE - 1 : j->x1;
     int y1 = y0 + TILE - 1 < j->y1 ? y0 + TILE - 1 : j->y1;
+    gather_tile_begin(c); /* radiosity records stay in their tile */
     switch (j->aa) {
     case IRIS_AA_POV1:
         tile_method1(j, c, x0, y0, x1, y1);
@@ -548,6 +565,10 @@ enum iris_status eyepass_run(const struct tracer *tr,
     if (threads < 1)
         threads = 1;
     trace_containing(tr, scene->camera.location, &j.cam_stack);
+    /* radiosity{}: a copy of the tracer carries the pass's gather cache
+    ** (gather_begin below, once the contexts point at the copy) */
+    struct tracer gt = *tr;
+    tr = j.tracer = &gt;
     j.blur = focal_blur_wanted(&scene->camera);
     if (j.blur && !focal_blur_init(&j.fb, &scene->camera))
         return IRIS_ENOMEM;
@@ -565,6 +586,8 @@ enum iris_status eyepass_run(const struct tracer *tr,
             st = IRIS_ENOMEM;
             break;
         }
+    if (st == IRIS_OK)
+        st = gather_begin(&gt, opts, threads, &j.cam_stack);
     if (st == IRIS_OK) {
         atomic_init(&j.nan_count, 0);
         atomic_init(&j.tiles_done, 0);
@@ -588,6 +611,7 @@ enum iris_status eyepass_run(const struct tracer *tr,
     for (int i = 0; i < n_ctx; i++)
         trace_ctx_fini(&j.ctx[i]);
     iris_free(j.ctx);
+    gather_end(&gt);
     if (j.blur)
         focal_blur_fini(&j.fb);
     return st;

@@ -85,20 +85,34 @@ void mpi_passes_bcast_int(int *v, int n)
         MPI_Bcast(v, n, MPI_INT, 0, MPI_COMM_WORLD);
 }
 
-int mpi_passes_agree(int go_root, int failed_local, int *flag)
+int mpi_passes_agree(int go_root, int failed_local, int *vals, int n)
 {
     if (mpi_passes_size() <= 1)
         return go_root && !failed_local;
     /* one collective: the largest of "rank 0 says stop", "failed" and
-    ** rank 0's flag (the others contribute 0) */
+    ** rank 0's values (>= 0; the others contribute 0) */
+    enum { MAX_VALS = 4 };
     int root = mpi_passes_rank() == 0;
-    int mine[3] = { root ? !go_root : 0, !!failed_local,
-                    root && flag ? !!*flag : 0 };
-    int all[3] = { 0, 0, 0 };
-    MPI_Allreduce(mine, all, 3, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
-    if (flag)
-        *flag = all[2];
+    int mine[2 + MAX_VALS] = { root ? !go_root : 0, !!failed_local };
+    int all[2 + MAX_VALS] = { 0 };
+    if (n > MAX_VALS)
+        n = MAX_VALS;
+    for (int i = 0; i < n; i++)
+        mine[2 + i] = root ? vals[i] : 0;
+    MPI_Allreduce(mine, all, 2 + n, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+    for (int i = 0; i < n; i++)
+        vals[i] = all[2 + i];
     return !all[0] && !all[1];
+}
+
+void mpi_passes_gather(const double *mine, int n, double *all)
+{
+    if (mpi_passes_size() <= 1) {
+        for (int i = 0; i < n; i++)
+            all[i] = mine[i];
+        return;
+    }
+    MPI_Gather(mine, n, MPI_DOUBLE, all, n, MPI_DOUBLE, 0, MPI_COMM_WORLD);
 }
 
 void mpi_passes_reduce(double *sum, size_t n, int *passes,
@@ -172,10 +186,17 @@ void mpi_passes_bcast_int(int *v, int n)
     (void)n;
 }
 
-int mpi_passes_agree(int go_root, int failed_local, int *flag)
+int mpi_passes_agree(int go_root, int failed_local, int *vals, int n)
 {
-    (void)flag; /* rank 0's value stays */
+    (void)vals; /* rank 0's values stay */
+    (void)n;
     return go_root && !failed_local;
+}
+
+void mpi_passes_gather(const double *mine, int n, double *all)
+{
+    for (int i = 0; i < n; i++)
+        all[i] = mine[i];
 }
 
 void mpi_passes_snapshot(const double *sum, double *total, size_t n,

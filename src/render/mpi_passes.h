@@ -33,12 +33,16 @@ int mpi_passes_size(void);
 void mpi_passes_bcast_int(int *v, int n);
 
 /*
-** One round's decision, the same on every rank: true when rank 0's
-** 'go_root' is true and no rank has 'failed_local' set. *flag (may be
-** NULL) is rank 0's value on entry and, on return, rank 0's value on
-** every rank (a second decision in the same collective).
+** One decision, the same on every rank: true when rank 0's 'go_root' is
+** true and no rank has 'failed_local' set. vals[0..n-1] (n <= 4, values
+** >= 0) are rank 0's on entry and, on return, rank 0's on every rank
+** (more decisions in the same collective).
 */
-int mpi_passes_agree(int go_root, int failed_local, int *flag);
+int mpi_passes_agree(int go_root, int failed_local, int *vals, int n);
+
+/* Rank 0 gets every rank's mine[0..n-1], rank r's at all[r·n] ('all'
+** has room for size·n; ignored on the other ranks). */
+void mpi_passes_gather(const double *mine, int n, double *all);
 
 /*
 ** Sums 'sum[0..n-1]', *passes and *photons over all ranks onto rank 0

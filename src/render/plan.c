@@ -7,7 +7,9 @@
 ** interreflection, src/photon/global.c) when global_settings has
 ** radiosity{}, quality 9 and a light that is not shadowless. Spectral
 ** splitting is planned when some interior's index varies with the
-** wavelength.
+** wavelength. Media (docs/media.md) are rendered at quality 9, as POV-Ray
+** renders them; the plan only reports them (the tracer asks the ray's
+** interiors, so a scene without media pays nothing).
 */
 #include "config.h"
 
@@ -30,6 +32,7 @@ struct walk {
     int n_objects;
     const iris_scene *scene;
     bool photon_ok;
+    int n_media;               /* primitives whose interior has media */
 };
 
 static void walk_object(struct walk *w, const iris_object *o, int depth)
@@ -37,6 +40,9 @@ static void walk_object(struct walk *w, const iris_object *o, int depth)
     if (!o || depth > 64)
         return;
     w->n_objects++;
+    if (o->interior && o->interior->n_media > 0 &&
+        o->kind < IRIS_OBJ_UNION)
+        w->n_media++;
     if (o->interior && ior_is_dispersive(o->interior)) {
         w->spectral = true;
         int n = o->interior->dispersion_samples > 0
@@ -118,10 +124,16 @@ void plan_compute(const iris_scene *scene, const iris_render_options *opts,
         p->global_reason = "quality below 9";
     else if (!lit)
         p->global_reason = "no light that casts shadows";
+    else if (scene->settings.rad.recursion_limit == 1)
+        p->global_reason = "recursion_limit 1: the final gather's bounce "
+                           "only";
     else
         p->global_photons = true;
     p->photons = p->caustic_photons || p->global_photons;
     p->fog = scene->n_fogs > 0;
+    p->n_media_objects = w.n_media;
+    p->n_media_atmosphere = scene->n_media;
+    p->media = (q & TQ_VOLUME) && (w.n_media > 0 || scene->n_media > 0);
     p->sky_sphere = scene->sky_sphere && scene->sky_sphere->n_pigments > 0;
     p->max_trace_level = scene->settings.max_trace_level > 0
                              ? scene->settings.max_trace_level : 5;
@@ -164,8 +176,8 @@ void plan_print(const struct render_plan *p, FILE *out)
         fprintf(out, "  photon pass: no (%s)\n", p->photon_reason);
     if (p->global_photons)
         fprintf(out, "  global photon map (radiosity): yes, %d photons a "
-                "pass, %d-nearest estimate at diffuse hits, no final "
-                "gather\n", PMAP_GLOBAL_PHOTONS, PMAP_GLOBAL_GATHER);
+                "pass, %d-nearest estimate at the final gather's "
+                "hits\n", PMAP_GLOBAL_PHOTONS, PMAP_GLOBAL_GATHER);
     else
         fprintf(out, "  global photon map (radiosity): no (%s)\n",
                 p->global_reason);
@@ -176,6 +188,13 @@ void plan_print(const struct render_plan *p, FILE *out)
         fprintf(out, "  spectral splitting: no (no dispersive interior)\n");
     fprintf(out, "  atmosphere: fog %s, sky_sphere %s\n", p->fog ? "yes" : "no",
             p->sky_sphere ? "yes" : "no");
+    if (p->n_media_objects + p->n_media_atmosphere == 0)
+        fprintf(out, "  media: none\n");
+    else
+        fprintf(out, "  media: %s, %d objects with interior media, %d "
+                "atmospheric media%s\n", p->media ? "yes" : "no",
+                p->n_media_objects, p->n_media_atmosphere,
+                p->media ? "" : " (quality below 9: left out)");
     fprintf(out, "  antialiasing: %s", aa_name(p->aa));
     if (p->aa != IRIS_AA_NONE)
         fprintf(out, ", depth %d, threshold %g", p->aa_depth, p->aa_threshold);

@@ -32,6 +32,11 @@ struct render_plan {
     bool spectral;             /* camera rays split at dispersive interiors */
     int spectral_samples;      /* the largest split */
     bool fog, sky_sphere;
+    /* media (docs/media.md): objects whose interior has media, the
+    ** atmosphere's media blocks; 'media' = some of them are rendered
+    ** (quality 9) */
+    int n_media_objects, n_media_atmosphere;
+    bool media;
     int max_trace_level;
     double adc_bailout;
 };

@@ -36,13 +36,15 @@
 **
 ** MPI (issue 8; mpi_passes.h). Under mpirun with R ranks, pass i runs on
 ** rank i mod R, each rank adding its passes into its own sum buffer.
-** Passes go in rounds of R; before each round rank 0 decides (passes
+** Passes go in rounds of R; at an agreement rank 0 decides (passes
 ** left, time limit, interrupt) and every rank learns the decision, plus
-** whether any rank failed, in one collective. At the end the sums, pass
-** and photon counts are reduced onto rank 0, which averages, reports the
-** pass callback and writes the checkpoint. During the run rank 0 also
-** gets a snapshot (the same reduction into a separate buffer) at the start
-** of a round when that costs at most 1/SNAPSHOT_COST_RATIO of the time,
+** whether any rank failed, in one collective. With a time limit that is
+** every round; with a fixed pass count after 1, 2, 4, ... rounds, at
+** most about AGREE_EVERY_S apart (next_gap() says why). At the end the
+** sums, pass and photon counts are reduced onto rank 0, which averages,
+** reports the pass callback and writes the checkpoint. During the run rank 0 also
+** gets a snapshot (the same reduction into a separate buffer) at an
+** agreement when that costs at most 1/SNAPSHOT_COST_RATIO of the time,
 ** and reports it to the pass callback (error-log lines, intermediate
 ** images), so a long MPI run logs as it goes, from rank 0 only. Ranks
 ** other than 0 do not build pass 0's map (render.c). The image equals the
@@ -287,6 +289,70 @@ static bool another_pass(const iris_render_options *opts, int pass,
     return true;
 }
 
+/*
+** MPI: the rounds rank 0 grants until the next agreement. Every
+** agreement is a barrier: all ranks wait there for the slowest, and a
+** pass's time varies (the photon count, the machine's other load), so
+** one agreement a round cost each round the spread of its passes. With a
+** fixed pass count the ranks need to agree only to stop early (interrupt,
+** failure) and for snapshots: the gap doubles from 1 up to about
+** AGREE_EVERY_S of rounds ('round_s' is the last gap's time per round),
+** and ends at the last round. With a time limit rank 0 decides every
+** round, as before.
+*/
+#define AGREE_EVERY_S 5.0
+
+static int next_gap(const iris_render_options *opts, int gap, int base,
+                    int nranks, double round_s)
+{
+    if (opts->passes <= 0 || opts->time_limit > 0.0 || nranks <= 1)
+        return 1;
+    int left = (opts->passes - base + nranks - 1) / nranks;
+    int g = gap <= 0 ? 1 : 2 * gap;
+    if (round_s > 0.0 && g > 1 && g * round_s > AGREE_EVERY_S)
+        g = (int)fmax(1.0, AGREE_EVERY_S / round_s);
+    return left < 1 ? 1 : g > left ? left : g;
+}
+
+/* MPI: where a rank's time went (opts->rank_times, bench/scaling.sh). */
+struct rank_times {
+    double work_s;             /* its passes: maps and eye passes */
+    double agree_s;            /* the agreements, waiting included */
+    double snapshot_s;         /* rank 0's snapshots, the others' share */
+    double reduce_s;           /* the final reduction, waiting included */
+    int agreements;            /* how many */
+};
+
+/*
+** With opts->rank_times set (the iris command: IRIS_RANK_TIMES in the
+** environment), rank 0 prints every rank's times there: "iris: rank R: P
+** passes, work W s, N agreements A s, snapshots S s, final reduce F s,
+** total T s". A rank that waits long at the final reduction finished
+** early: the load was uneven.
+*/
+static void report_rank_times(FILE *to, const struct rank_times *rt,
+                              int passes, double total_s)
+{
+    if (!to)
+        return;
+    enum { MAX_RANKS = 256 }; /* a table, not a cluster's log */
+    int n = mpi_passes_size();
+    if (n > MAX_RANKS)
+        return;
+    enum { K = 7 };
+    double mine[K] = { passes, rt->work_s, rt->agreements, rt->agree_s,
+                       rt->snapshot_s, rt->reduce_s, total_s };
+    double all[K * MAX_RANKS];
+    mpi_passes_gather(mine, K, all);
+    for (int r = 0; mpi_passes_rank() == 0 && r < n; r++) {
+        const double *v = all + K * r;
+        fprintf(to, "iris: rank %d: %.0f passes, work %.3f s, %.0f "
+                "agreements %.3f s, snapshots %.3f s, final reduce %.3f s, "
+                "total %.3f s\n", r, v[0], v[1], v[2], v[3], v[4], v[5],
+                v[6]);
+    }
+}
+
 enum iris_status progressive_run(struct tracer *tr, const struct accel *acc,
                                  const struct mat_ctx *mat, int threads,
                                  const iris_render_options *opts,
@@ -350,22 +416,43 @@ enum iris_status progressive_run(struct tracer *tr, const struct accel *acc,
     if (rank == 0 && nranks > 1 && opts->on_pass)
         snap = iris_malloc(accum_len(&a) * sizeof *snap);
     double last_snap = par_now(), snap_cost = 0.0;
+    struct rank_times rt = { 0, 0, 0, 0, 0 };
+    int gap = 0, rounds_left = 0; /* rounds until the next agreement */
+    double last_agree = par_now();
     for (int base = first;; base += nranks) {
-        /* The round of passes base..base+R-1, decided by rank 0, and
-        ** whether to report a snapshot of the rounds before it */
-        int go = rank == 0 &&
-                 another_pass(opts, base, first, par_now() - t_start,
-                              last_dt);
-        int do_snap = snap && base > first &&
-                      par_now() - last_snap >= SNAPSHOT_COST_RATIO * snap_cost;
-        if (!mpi_passes_agree(go, failed, &do_snap))
-            break;
-        if (do_snap)
-            report_snapshot(&a, snap, opts, out, t_start, &snap_cost,
-                            &last_snap);
+        if (rounds_left == 0) {
+            /* The rounds of passes base.. up to the next agreement,
+            ** decided by rank 0, and whether to report a snapshot of
+            ** the rounds before them */
+            double ta = par_now();
+            int go = rank == 0 &&
+                     another_pass(opts, base, first, ta - t_start, last_dt);
+            int vals[2] = {
+                snap && base > first &&
+                    ta - last_snap >= SNAPSHOT_COST_RATIO * snap_cost,
+                rank == 0 ? next_gap(opts, gap, base, nranks,
+                                     (ta - last_agree) / (gap > 0 ? gap : 1))
+                          : 0 };
+            int stop_here = failed || (opts->interrupt && *opts->interrupt);
+            bool more = mpi_passes_agree(go, stop_here, vals, 2);
+            last_agree = par_now();
+            rt.agree_s += last_agree - ta;
+            rt.agreements++;
+            if (!more)
+                break;
+            if (vals[0]) {
+                report_snapshot(&a, snap, opts, out, t_start, &snap_cost,
+                                &last_snap);
+                rt.snapshot_s += par_now() - last_agree;
+            }
+            gap = rounds_left = vals[1] > 0 ? vals[1] : 1;
+        }
+        rounds_left--;
         int p = base + ((rank - base) % nranks + nranks) % nranks;
         if (nranks > 1 && !another_pass(opts, p, first, 0.0, 0.0))
             continue; /* past --passes (or --resume's one pass) */
+        if (failed) /* this rank waits for the next agreement to stop */
+            continue;
         double tp = par_now();
         if (photons && (p > 0 || *map == NULL)) {
             struct photon_stats ps;
@@ -409,6 +496,7 @@ enum iris_status progressive_run(struct tracer *tr, const struct accel *acc,
         accum_average(&a, out);
         double now = par_now();
         last_dt = now - tp;
+        rt.work_s += last_dt;
         if (opts->on_pass && nranks == 1) { /* MPI: once, at the end */
             iris_pass_info info = { a.passes, a.seconds + (now - t_start),
                                     a.photons,
@@ -441,7 +529,12 @@ enum iris_status progressive_run(struct tracer *tr, const struct accel *acc,
     iris_free(snap);
     if (nranks > 1) {
         /* rank 0 gets the sum of every rank's passes */
+        double tr0 = par_now();
+        int my_passes = a.passes;
         mpi_passes_reduce(a.sum, accum_len(&a), &a.passes, &a.photons);
+        rt.reduce_s = par_now() - tr0;
+        report_rank_times(opts->rank_times, &rt, my_passes,
+                          par_now() - t_start);
         if (rank == 0) {
             accum_average(&a, out);
             if (opts->on_pass && a.passes > 0) {

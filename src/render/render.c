@@ -10,12 +10,14 @@
 #include "config.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "accel/accel.h"
 #include "iris/render.h"
 #include "material/material.h"
 #include "photon/photon.h"
+#include "photon/photon_file.h"
 #include "render/check_ior.h"
 #include "render/eyepass.h"
 #include "render/mpi_passes.h"
@@ -80,6 +82,49 @@ static bool photon_shadow(const void *map, const iris_object *blocker,
     return photon_blocks_shadow(map, blocker, light, lit);
 }
 
+/* err = "file:line:col: " of 'loc' in 'scene' followed by 'msg'. */
+static void located(const iris_scene *scene, iris_loc loc, const char *msg,
+                    char *err, size_t errlen)
+{
+    const char *file = "<unknown>";
+    if (loc.file > 0 && (int)loc.file < scene->n_files && scene->files &&
+        scene->files[loc.file])
+        file = scene->files[loc.file];
+    if (err && errlen)
+        snprintf(err, errlen, "%s:%u:%u: error: %s", file, (unsigned)loc.line,
+                 (unsigned)loc.col, msg);
+}
+
+/*
+** The map of the photon pass: shot, or read from photons { load_file }
+** (POV-Ray: loading skips shooting); with save_file written once built,
+** by rank 0 alone under MPI. File errors are IRIS_EIO with the
+** keyword's location in 'err'.
+*/
+static enum iris_status build_or_load(const iris_scene *scene,
+                                      const struct accel *acc,
+                                      const struct photon_options *po,
+                                      struct photon_map **map,
+                                      struct photon_stats *ps, char *err,
+                                      size_t errlen)
+{
+    const iris_photon_settings *set = &scene->settings.photons;
+    char msg[400] = "";
+    enum iris_status st;
+    if (set->enabled && set->load_file && set->load_file[0])
+        st = photon_file_load(scene, acc, po, set->load_file, map, ps, msg,
+                              sizeof msg);
+    else
+        st = photon_map_build(scene, acc, po, map, ps);
+    if (st == IRIS_OK && set->enabled && set->save_file &&
+        set->save_file[0] && mpi_passes_rank() == 0)
+        st = photon_file_save(*map, (long long)ps->shot, set->save_file, msg,
+                              sizeof msg);
+    if (st != IRIS_OK && msg[0])
+        located(scene, set->file_loc, msg, err, errlen);
+    return st;
+}
+
 /* The photon pass, when the plan has one: the caustic map the tracer reads
 ** at every texture layer and in shadows. */
 static enum iris_status photon_pass(const struct render_plan *plan,
@@ -87,7 +132,8 @@ static enum iris_status photon_pass(const struct render_plan *plan,
                                     const struct mat_ctx *mat, int threads,
                                     const iris_render_options *opts,
                                     struct photon_map **map,
-                                    iris_render_stats *stats)
+                                    iris_render_stats *stats, char *err,
+                                    size_t errlen)
 {
     *map = NULL;
     t->photon_shade = NULL;
@@ -110,7 +156,8 @@ static enum iris_status photon_pass(const struct render_plan *plan,
     po.log = opts->log; /* the spacing-cap warning goes with the others */
     struct photon_stats ps;
     memset(&ps, 0, sizeof ps);
-    enum iris_status st = photon_map_build(t->scene, acc, &po, map, &ps);
+    enum iris_status st = build_or_load(t->scene, acc, &po, map, &ps, err,
+                                        errlen);
     if (st != IRIS_OK)
         return st;
     if (stats) {
@@ -305,7 +352,8 @@ enum iris_status iris_render(const iris_scene *scene,
     tr.alpha = opts->alpha;
     double t1 = par_now();
     struct photon_map *pmap = NULL;
-    st = photon_pass(&plan, &tr, acc, mat, threads, opts, &pmap, stats);
+    st = photon_pass(&plan, &tr, acc, mat, threads, opts, &pmap, stats, err,
+                     errlen);
     if (st == IRIS_EINVAL) /* the located error went to the log */
         set_err(err, errlen, "the photon settings ask for more than memory holds");
     double t2 = par_now();

@@ -13,6 +13,8 @@
 
 #include "render/trace.h"
 #include "render/eyespectrum.h"
+#include "render/media.h"
+#include "render/gather.h"
 #include "material/noise.h"
 #include "math/transform.h"
 #include "spectrum/ior.h"
@@ -100,6 +102,7 @@ bool trace_ctx_init(struct trace_ctx *c, const struct tracer *t)
 
 void trace_ctx_fini(struct trace_ctx *c)
 {
+    gather_ctx_fini(c);
     iris_free(c->grid);
     iris_free(c->grid_set);
     c->grid = NULL;
@@ -162,19 +165,53 @@ static bool is_hollow_ray(const struct interior_stack *st)
     return true;
 }
 
+/* POV-Ray's InitRayContainerState over one scene object. Every object
+** has an interior there (a default one when none was given): a camera
+** inside a plane that is not hollow sees no fog and no media. Unions are
+** split into their children, as POV-Ray links them to the scene (not a
+** merge, nor one clipped, bounded or with split_union off). An object
+** without an interior{} is keyed by itself, as interior_key does. */
+static void containing_rec(const struct tracer *t, const iris_object *o,
+                           vec3 p, struct interior_stack *st, int depth)
+{
+    if (!o || depth > 64)
+        return;
+    bool split = (o->kind == IRIS_OBJ_UNION ||
+                  o->kind == IRIS_OBJ_LIGHT_GROUP) &&
+                 o->split_union && o->n_clipped_by == 0 && !o->bounded_by;
+    if (split) {
+        for (int i = 0; i < o->u.csg.n_children; i++)
+            containing_rec(t, o->u.csg.children[i], p, st, depth + 1);
+        return;
+    }
+    if (t->q.inside(t->q.impl, o, p))
+        stack_push(st, o->interior ? (const void *)o->interior
+                                   : (const void *)o,
+                   o->interior, o->hollow);
+}
+
 void trace_containing(const struct tracer *t, vec3 p,
                       struct interior_stack *st)
 {
     st->n = 0;
     if (!t->q.inside)
         return;
-    for (int i = 0; i < t->scene->n_objects; i++) {
-        const iris_object *o = t->scene->objects[i];
-        if (!o->interior)
-            continue;
-        if (t->q.inside(t->q.impl, o, p))
-            stack_push(st, o->interior, o->interior, o->hollow);
+    for (int i = 0; i < t->scene->n_objects; i++)
+        containing_rec(t, t->scene->objects[i], p, st, 0);
+}
+
+/* The quality flags of the rays 'c' traces: a radiosity gather ray
+** (gather.c) samples no area light (its centre instead) and no media
+** unless radiosity{} has media on, as POV-Ray's radiosity rays. */
+static unsigned ray_quality(const struct trace_ctx *c)
+{
+    unsigned q = c->t->quality;
+    if (c->gi_depth > 0) {
+        q &= ~(unsigned)TQ_AREA_LIGHT;
+        if (!c->t->scene->settings.rad.media)
+            q &= ~(unsigned)TQ_VOLUME;
     }
+    return q;
 }
 
 /* The tmin of a ray leaving a hit with offset 'eps' (struct hit's eps,
@@ -270,6 +307,55 @@ static void shadow_colour(struct trace_ctx *c, const struct interior_stack *st,
         lc[k] *= acc[k];
 }
 
+static void apply_fog(struct trace_ctx *c, const ray *r, double depth,
+                      bool shadow, double col[3]);
+
+/* Media on a shadow ray's stretch of length 'len' from 'o' along 'L'
+** (extinction only): at a surface ('at_surface'), the media of the
+** interiors 'st' when no non-hollow one is among them (POV-Ray's
+** ComputeShadowColour); on every stretch, the atmosphere's media and
+** (on hollow rays) fog when the light has media_interaction and
+** media_attenuation (ComputeShadowMedia; the last stretch, to the
+** light, only when the ray is in hollow interiors and longer than
+** POV-Ray's SHADOW_TOLERANCE). */
+static void shadow_media(struct trace_ctx *c, const struct interior_stack *st,
+                         const iris_light *light, vec3 o, vec3 L, double len,
+                         bool at_surface, double lc[3])
+{
+    const struct tracer *t = c->t;
+    const iris_scene *sc = t->scene;
+    /* the common case first: nothing in the air, no interior to ask */
+    bool air = sc->n_media > 0 || sc->n_fogs > 0;
+    if (!(ray_quality(c) & TQ_VOLUME) || (!air && (!at_surface || st->n == 0)) ||
+        rgb_zero(lc))
+        return;
+    bool hollow = is_hollow_ray(st);
+    bool stretch = light->media_interaction && light->media_attenuation &&
+                   (at_surface || (hollow && len > 1e-3));
+    bool atmos = stretch && t->scene->n_media > 0;
+    bool fog = stretch && hollow && t->scene->n_fogs > 0;
+    bool inner = at_surface && hollow && st->n > 0 && media_in_stack(st);
+    if (!atmos && !inner && !fog)
+        return;
+    struct tray r;
+    r.r.o = o;
+    r.r.d = L;
+    r.st.n = 0;                /* shadow media need no light tests */
+    r.reflected = false;
+    r.lambda = 0.0;
+    r.tmin = 0.0;
+    if (inner) {
+        const iris_media *m[MEDIA_MAX_PER_RAY];
+        int n = media_of_stack(st, m, MEDIA_MAX_PER_RAY);
+        media_segment(c, m, n, &r, len, true, lc, NULL);
+    }
+    if (atmos)
+        media_segment(c, (const iris_media *const *)t->scene->media,
+                      t->scene->n_media, &r, len, true, lc, NULL);
+    if (fog)
+        apply_fog(c, &r.r, len, true, lc);
+}
+
 /* POV-Ray's TracePointLightShadowRay: walks the segment to the light,
 ** filtering 'lc' by every object met, until it is black. The shadow ray
 ** starts with the eye ray's interiors and, as POV-Ray's ComputeShadowMedia
@@ -292,10 +378,11 @@ static void point_shadow(struct trace_ctx *c, const struct interior_stack *eye_s
         struct hit h;
         c->rays++;
         if (!t->q.intersect(t->q.impl, &r, eps, depth - eps,
-                            ACCEL_SKIP_NO_SHADOW, &h))
+                            ACCEL_SKIP_NO_SHADOW, &h) ||
+            !(h.t > eps) || !(h.t < depth - eps)) {
+            shadow_media(c, st, light, origin, L, depth, false, lc);
             return;
-        if (!(h.t > eps) || !(h.t < depth - eps))
-            return;
+        }
         if (t->photon_shadow && t->photon_map &&
             t->photon_shadow(t->photon_map, h.obj, light, lit)) {
             lc[0] = lc[1] = lc[2] = 0.0;
@@ -306,6 +393,7 @@ static void point_shadow(struct trace_ctx *c, const struct interior_stack *eye_s
             lc[0] = lc[1] = lc[2] = 0.0;
             return;
         }
+        shadow_media(c, st, light, origin, L, h.t, true, lc);
         if (st != &stack) {
             stack.n = eye_st->n;
             for (int i = 0; i < eye_st->n; i++)
@@ -427,7 +515,7 @@ static void trace_shadow(struct trace_ctx *c, const struct interior_stack *st,
     /* projected_through (light.h): an area light's samples test their
     ** own rays (area_sample), any other light the ray to its centre; a
     ** shadowless light stops after the test */
-    bool area = l->area && (t->quality & TQ_AREA_LIGHT) && !l->fill;
+    bool area = l->area && (ray_quality(c) & TQ_AREA_LIGHT) && !l->fill;
     if (!area && !light_through(l, p, leave_eps(t, eps), L, &depth)) {
         lc[0] = lc[1] = lc[2] = 0.0;
         return;
@@ -446,6 +534,28 @@ static void trace_shadow(struct trace_ctx *c, const struct interior_stack *st,
         point_shadow(c, st, l->src, lit, p, eps, L, depth, lc);
     }
     c->level--;
+}
+
+/* POV-Ray's TestShadow for a media sample (media.h). */
+bool trace_media_light(struct trace_ctx *c, const struct interior_stack *st,
+                       int i, vec3 p, vec3 *L, double lc[3])
+{
+    const struct tracer *t = c->t;
+    const struct rlight *l = &t->lights[i];
+    double depth;
+    light_ray(l, p, v3(0, 0, 0), L, &depth);
+    double a = light_attenuation(l, p, *L, depth);
+    lc[0] = l->src->colour.r * a;
+    lc[1] = l->src->colour.g * a;
+    lc[2] = l->src->colour.b * a;
+    if (rgb_zero(lc))
+        return false;
+    if ((t->quality & TQ_SHADOW) && (!l->fill || l->through)) {
+        trace_shadow(c, st, l, NULL, p, 0.0, *L, depth, lc);
+        if (rgb_zero(lc))
+            return false;
+    }
+    return true;
 }
 
 /* ------------------------------------------------------------------ */
@@ -499,7 +609,7 @@ static void light_terms(struct trace_ctx *c, const struct layer_shade *s,
         out[1] += in * P->g * lc[1];
         out[2] += in * P->b * lc[2];
     }
-    if (fill || backside)
+    if (fill || backside || c->gi_depth > 0) /* radiosity rays: none */
         return;
     double tint[3] = { 1, 1, 1 };
     if (f->metallic > 0.0 && (f->phong > 0.0 || f->specular > 0.0))
@@ -591,7 +701,7 @@ static void diffuse_light(struct trace_ctx *c, const struct layer_shade *s,
     for (int i = 0; i < t->n_lights; i++) {
         const struct rlight *l = &t->lights[i];
         bool full_area = l->area && l->src->area_illumination &&
-                         (t->quality & TQ_AREA_LIGHT);
+                         (ray_quality(c) & TQ_AREA_LIGHT);
         vec3 L;
         double depth;
         light_ray(l, p, v3(0, 0, 0), &L, &depth);
@@ -852,6 +962,15 @@ static void lighted_texture(struct trace_ctx *c, const struct tray *eye,
                                   sc->settings.ambient_light.b };
     bool use_ambient = !sc->settings.radiosity || t->legacy;
     double fres_n = relative_ior(eye, h);
+    /* radiosity{}: an eye hit gathers (once for all layers) and reads
+    ** the photon map without its global part; gather rays' hits read the
+    ** global map only when recursion_limit allows a further bounce */
+    bool gi_eye = t->gather && c->gi_depth == 0, gi_done = false;
+    double gi_e[3] = { 0, 0, 0 };
+    const void *pmap = !t->gather ? t->photon_map
+                       : gi_eye ? t->photon_map_local : t->photon_map_gather;
+    /* the pretrace's own eye hits only place samples (as in POV-Ray) */
+    bool lit = !(gi_eye && gather_pretracing(t->gather));
 
     for (int i = 0; i < sk->n && trans > t->adc; i++, n_done++) {
         const struct mat_layer *l = &ev->layers[sk->first + i];
@@ -888,15 +1007,28 @@ static void lighted_texture(struct trace_ctx *c, const struct tray *eye,
                     tmp[k] += col[k] * amb[k] * amb_light[k] * att;
                 tmp[k] += col[k] * emi[k] * att;
             }
+            if (gi_eye && f->diffuse > 0.0) {
+                /* POV-Ray's radiosity term: pigment x it x diffuse x att,
+                ** gathered once the layer could show it above adc */
+                const double fc[3] = { filcol[0] * col[0], filcol[1] * col[1],
+                                       filcol[2] * col[2] };
+                double mx = mat_greyscale(fc) * att * f->diffuse;
+                if (!gi_done && mx > t->adc) {
+                    gather_irradiance(c, eye, h, raw, weight * mx, gi_e);
+                    gi_done = true;
+                }
+                for (int k = 0; k < 3; k++)
+                    tmp[k] += col[k] * gi_e[k] * f->diffuse * att;
+            }
             struct layer_shade s = { l, eye, h, att };
-            if (f->diffuse != 0.0 || f->diffuse_back != 0.0 ||
-                f->specular != 0.0 || f->phong != 0.0)
+            if (lit && (f->diffuse != 0.0 || f->diffuse_back != 0.0 ||
+                        f->specular != 0.0 || f->phong != 0.0))
                 diffuse_light(c, &s, cache, tmp);
-            if (t->photon_shade && t->photon_map &&
+            if (lit && t->photon_shade && pmap &&
                 !(h->obj && !h->obj->photon_collect)) {
                 struct trace_photon_input pi = { h->p, l->n, raw, eye->r.d,
                                                  f, *P, att, h->obj };
-                t->photon_shade(t->photon_map, &pi, tmp);
+                t->photon_shade(pmap, &pi, tmp);
             }
             for (int k = 0; k < 3; k++)
                 out[k] += tmp[k] * filcol[k];
@@ -1075,9 +1207,10 @@ static double fog_turbulence(const struct tracer *t, const iris_fog *fog,
     return width * (1.0 - k * fmin(1.0, n * depth));
 }
 
-/* POV-Ray's ComputeFog over every fog of the scene. */
+/* POV-Ray's ComputeFog over every fog of the scene; a 'shadow' ray is
+** only attenuated (the fog adds no colour to light). */
 static void apply_fog(struct trace_ctx *c, const ray *r, double depth,
-                      double col[3])
+                      bool shadow, double col[3])
 {
     const struct tracer *t = c->t;
     const iris_scene *sc = t->scene;
@@ -1117,7 +1250,8 @@ static void apply_fog(struct trace_ctx *c, const ray *r, double depth,
         const double rgb[3] = { fc->r, fc->g, fc->b };
         for (int k = 0; k < 3; k++) {
             sum_att[k] *= att * ((1.0 - fc->f) + fc->f * rgb[k]);
-            sum_col[k] += (1.0 - att) * rgb[k];
+            if (!shadow)
+                sum_col[k] += (1.0 - att) * rgb[k];
         }
     }
     for (int k = 0; k < 3; k++)
@@ -1127,6 +1261,25 @@ static void apply_fog(struct trace_ctx *c, const ray *r, double depth,
 /* ------------------------------------------------------------------ */
 /* TraceRay                                                             */
 /* ------------------------------------------------------------------ */
+
+/* POV-Ray's media of a ray not inside a non-hollow object: its
+** interiors' media up to the hit (ComputeTextureColour), then the
+** atmosphere's (TraceRay: up to the hit, or BOUND_HUGE on a miss). */
+static void ray_media(struct trace_ctx *c, const struct tray *r, bool found,
+                      double depth, double rgb[3])
+{
+    const iris_scene *sc = c->t->scene;
+    if (!is_hollow_ray(&r->st))
+        return;
+    if (found && r->st.n > 0 && media_in_stack(&r->st)) {
+        const iris_media *m[MEDIA_MAX_PER_RAY];
+        int n = media_of_stack(&r->st, m, MEDIA_MAX_PER_RAY);
+        media_segment(c, m, n, r, depth, false, rgb, &c->transm);
+    }
+    if (sc->n_media > 0)
+        media_segment(c, (const iris_media *const *)sc->media, sc->n_media,
+                      r, depth, false, rgb, &c->transm);
+}
 
 double trace_ray(struct trace_ctx *c, const struct tray *r, double weight,
                  bool continued, double rgb[3])
@@ -1148,8 +1301,10 @@ double trace_ray(struct trace_ctx *c, const struct tray *r, double weight,
         texture_colour(c, r, &h, weight, rgb);
     else
         sky_colour(c, r->r.d, rgb);
+    if (ray_quality(c) & TQ_VOLUME)
+        ray_media(c, r, found, found ? h.t : HUGE_DEPTH, rgb);
     if (t->scene->n_fogs > 0 && is_hollow_ray(&r->st))
-        apply_fog(c, &r->r, found ? h.t : HUGE_DEPTH, rgb);
+        apply_fog(c, &r->r, found ? h.t : HUGE_DEPTH, false, rgb);
     if (!continued)
         c->level--;
     return found ? h.t : HUGE_VAL;

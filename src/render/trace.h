@@ -5,8 +5,9 @@
 ** emission, diffuse, phong, specular, iridescence, reflection with
 ** fresnel and metallic, refraction through an interior stack with total
 ** internal reflection and fade, shadows through filtering objects with
-** fake caustics, area lights sampled as POV-Ray samples them, fog, sky
-** sphere and background, max_trace_level and adc_bailout.
+** fake caustics, area lights sampled as POV-Ray samples them, fog,
+** participating media (media.h), sky sphere and background,
+** max_trace_level and adc_bailout.
 **
 ** A 'tracer' is built once per render and shared read-only by all
 ** threads; a 'trace_ctx' is one thread's scratch space (area-light grid,
@@ -88,6 +89,11 @@ struct tracer {
     trace_photon_fn photon_shade;
     trace_photon_shadow_fn photon_shadow;
     const void *photon_map;
+    /* radiosity{}: the final gather (gather.h); the photon map without
+    ** its global map, which eye hits read when they gather; the one the
+    ** gather rays' hits read (gather.c). NULL without */
+    struct gather *gather;
+    const void *photon_map_local, *photon_map_gather;
 };
 
 /* The interiors a ray is inside, innermost last (semantics §1.2). */
@@ -142,6 +148,8 @@ struct trace_ctx {
     uint64_t rays;
     double (*grid)[3];         /* area-light samples, max_area_grid */
     bool *grid_set;
+    int gi_depth;              /* > 0 inside a radiosity gather ray */
+    struct gather_local *gl;   /* the gather's tile-local records */
 };
 
 /* Prepares 't' (lights) for 'scene'; 'q', 'mat' borrowed. Returns false

@@ -41,6 +41,23 @@ void iris_interior_defaults(iris_interior *i)
     i->dispersion_samples = 7;
 }
 
+void iris_media_defaults(iris_media *m, double version)
+{
+    memset(m, 0, sizeof *m);
+    /* POV-Ray's Media constructor, and Parse_Media's 3.5 defaults */
+    bool v35 = !(version > 0) || version >= 3.5;
+    m->method = v35 ? 3 : 1;
+    m->intervals = v35 ? 1 : 10;
+    m->min_samples = m->max_samples = v35 ? 10 : 1;
+    m->aa_threshold = 0.1;
+    m->aa_level = 3;
+    m->confidence = 0.9;
+    m->variance = 1.0 / 128.0;
+    m->ratio = 0.9;
+    m->scattering_type = IRIS_SCATTER_ISOTROPIC;
+    m->sc_ext = 1.0;
+}
+
 void iris_global_defaults(iris_global_settings *g)
 {
     memset(g, 0, sizeof *g);

@@ -9,7 +9,7 @@
 # (imgdiff: largest absolute difference; imgtool stats: the largest value).
 . "$top_srcdir/tests/tap.sh"
 [ -n "$MPIRUN" ] || tap_skip_all "iris was built without MPI"
-tap_plan 10
+tap_plan 12
 scene="$top_srcdir/tests/progressive/ball.pov"
 imgdiff="$top_builddir/tests/progressive/imgdiff"
 imgtool="$top_builddir/tests/cli/imgtool"
@@ -69,6 +69,20 @@ mpi 2 -q "$scene" +W24 +H24 --threads 1 -o "$tmp/c5.exr" --passes 5 \
     --seed 3 --resume "$tmp/run.ckpt"
 tap_ok "2 + 3 passes resumed on 2 ranks = 5 passes" \
     near "$tmp/p5.exr" "$tmp/c5.exr"
+
+# Where the time goes (IRIS_RANK_TIMES): one line per rank from rank 0;
+# with a fixed pass count the ranks agree at rounds 0, 1, 3, 7 and at
+# the end (the gap doubles: progressive.c next_gap), 5 agreements for 8
+# rounds instead of 9, one a round
+IRIS_RANK_TIMES=1 mpi 2 -q "$scene" +W24 +H24 --threads 1 --passes 16 \
+    --seed 3 -o "$tmp/g.exr" 2>"$tmp/times" >/dev/null
+sed 's/^/# /' "$tmp/times"
+tap_ok "rank times: both ranks, 8 passes each, <= 5 agreements" \
+    awk '/^iris: rank [01]: 8 passes/ { n++; if ($9 > 5) bad = 1 }
+         END { exit !(n == 2 && !bad) }' "$tmp/times"
+r -o "$tmp/p16.exr" --passes 16 --seed 3
+tap_ok "... and the image of 16 passes on 1 rank" \
+    near "$tmp/p16.exr" "$tmp/g.exr"
 
 # The time limit: ranks agree on when to stop
 t0=$(date +%s)

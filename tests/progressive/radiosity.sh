@@ -2,11 +2,12 @@
 # SPDX-License-Identifier: MIT
 # tests/progressive/radiosity.sh: the global photon map (radiosity{},
 # src/photon/global.c) through the whole pipeline: plan, photon pass,
-# the tracer's shading call, progressive passes. The furnace scene has an
+# the final gather whose rays read it (src/render/gather.c), progressive
+# passes. The furnace scene has an
 # analytic answer: total = a/(1 - a) = 0.6667 for albedo a = 0.4, of
 # which the direct light is a = 0.4.
 . "$top_srcdir/tests/tap.sh"
-tap_plan 6
+tap_plan 7
 scene="$top_srcdir/tests/progressive/furnace.pov"
 imgstat="$top_builddir/tests/progressive/imgstat"
 tmp=$(mktemp -d)
@@ -19,9 +20,18 @@ within() { awk -v v="$1" -v e="$2" -v t="$3" \
 "$IRIS" --plan "$scene" >"$tmp/plan" 2>/dev/null
 tap_ok "--plan keeps the global map" grep -q "global photon map (radiosity): yes" "$tmp/plan"
 
-r -o "$tmp/direct.exr" --no-photons
+# +Q8 has no radiosity (POV-Ray's rule), and ambient is off under it
+r -o "$tmp/direct.exr" +Q8
 set -- $("$imgstat" "$tmp/direct.exr")
 tap_ok "direct light alone is a = 0.4 (got $1)" within "$1" 0.4 0.001
+
+# Without photons the final gather (src/render/gather.c) adds exactly one
+# bounce: its rays see the direct light a everywhere, so a + a^2 = 0.56
+# (uniform radiance: no quadrature error; 0.1% for float rounding).
+r -o "$tmp/bounce1.exr" --no-photons
+set -- $("$imgstat" "$tmp/bounce1.exr")
+tap_ok "gather without photons: one bounce a + a^2 = 0.56 (got $1)" \
+    within "$1" 0.56 0.001
 
 # One pass: 4e5 photons; the image mean averages 768 pixels over the
 # whole sphere, each a blend of 400-photon estimates (5% noise, strongly

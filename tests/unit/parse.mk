@@ -28,3 +28,11 @@ tests_unit_test_parse_parity_SOURCES = tests/unit/test_parse_parity.c \
 tests_unit_test_parse_parity_CPPFLAGS = $(AM_CPPFLAGS) -I$(top_srcdir)
 tests_unit_test_parse_parity_CFLAGS = $(TEST_CFLAGS)
 tests_unit_test_parse_parity_LDADD = $(TEST_LDADD)
+# The media{} grammar (povparse/media.c, docs/media.md).
+check_PROGRAMS += tests/unit/test_parse_media
+TESTS += tests/unit/test_parse_media
+tests_unit_test_parse_media_SOURCES = tests/unit/test_parse_media.c \
+	tests/testutil.h tests/unit/parse_util.h
+tests_unit_test_parse_media_CPPFLAGS = $(AM_CPPFLAGS) -I$(top_srcdir)
+tests_unit_test_parse_media_CFLAGS = $(TEST_CFLAGS)
+tests_unit_test_parse_media_LDADD = $(TEST_LDADD)

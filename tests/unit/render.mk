@@ -13,12 +13,22 @@ tests_unit_test_render_SOURCES = tests/unit/test_render.c \
 tests_unit_test_render_CFLAGS = $(TEST_CFLAGS)
 tests_unit_test_render_LDADD = $(TEST_LDADD)
 
+check_PROGRAMS += tests/unit/test_media
+TESTS += tests/unit/test_media
+tests_unit_test_media_SOURCES = tests/unit/test_media.c \
+	tests/unit/render_double.c tests/unit/render_double.h tests/testutil.h
+tests_unit_test_media_CFLAGS = $(TEST_CFLAGS)
+tests_unit_test_media_LDADD = $(TEST_LDADD)
+
 # The POV-Ray parity suite: iris against POV-Ray, scene by scene.
 check_PROGRAMS += tests/render/psnr
 tests_render_psnr_SOURCES = tests/render/psnr.c
 tests_render_psnr_LDADD = libiris_core.la $(IRIS_LIBS)
 TESTS += tests/render/parity.sh
 EXTRA_DIST += tests/render/parity.sh tests/render/scenes
+# radiosity's final gather against analytic values (tests/render/gather.sh)
+TESTS += tests/render/gather.sh
+EXTRA_DIST += tests/render/gather.sh tests/render/gather
 # +UA output against POV-Ray's (tests/render/alpha.sh)
 TESTS += tests/render/alpha.sh
 EXTRA_DIST += tests/render/alpha.sh tests/render/alpha

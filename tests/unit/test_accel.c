@@ -694,8 +694,9 @@ static void test_isosurface(void **state)
     scene_free(sc);
 }
 
-/* A 3x3 grey image, white in the middle, is a height field pyramid of
-** height 1 in the unit square; its inside is below the surface. */
+/* A 3x3 grey image, white in the middle, is a height field pyramid in
+** the unit square, of POV-Ray's height 65535/65536 (heights are 16-bit
+** values over 65536 units); its inside is below the surface. */
 static void test_height_field(void **state)
 {
     (void)state;
@@ -719,10 +720,11 @@ static void test_height_field(void **state)
     struct hit h;
     /* Straight down onto the peak, and halfway down its slope (the
     ** triangles are planar: height 0.5 at x = 0.25 on the z = 0.5 line) */
+    const double top = 65535.0 / 65536.0;
     assert_true(shoot(a, v3(0.5, 5, 0.5), v3(0, -1, 0), &h));
-    assert_near(h.t, 4, 1e-6);
+    assert_near(h.t, 5 - top, 1e-6);
     assert_true(shoot(a, v3(0.25, 5, 0.5), v3(0, -1, 0), &h));
-    assert_near(h.p.y, 0.5, 1e-6);
+    assert_near(h.p.y, 0.5 * top, 1e-6);
     assert_true(accel_inside(a, hf, v3(0.5, 0.8, 0.5)));
     assert_false(accel_inside(a, hf, v3(0.25, 0.6, 0.5)));
     assert_false(accel_inside(a, hf, v3(1.5, 0.1, 0.5)));

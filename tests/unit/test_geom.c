@@ -76,6 +76,133 @@ static void test_roots_known(void **state)
     assert_int_equal(roots_in_interval(bad, 2, -10, 10, out), 0);
 }
 
+/* Multiplies c (degree n, ascending) by t² - 2·alpha·t + alpha² + beta2:
+** a pair of complex roots alpha ± i·sqrt(beta2) when beta2 > 0. */
+static void times_pair(double *c, int n, double alpha, double beta2)
+{
+    double q[3] = { alpha * alpha + beta2, -2 * alpha, 1 }, o[40] = { 0 };
+    for (int i = 0; i <= n; i++)
+        for (int j = 0; j < 3; j++)
+            o[i + j] += c[i] * q[j];
+    for (int i = 0; i <= n + 2; i++)
+        c[i] = o[i];
+}
+
+/* A deterministic generator for the randomised cases (xorshift). */
+static double unit_rand(uint64_t *s)
+{
+    *s ^= *s << 13;
+    *s ^= *s >> 7;
+    *s ^= *s << 17;
+    return (double)(*s >> 11) / 9007199254740992.0;
+}
+
+/*
+** roots.c skips the whole solve when a Bernstein bound proves that the
+** polynomial keeps one sign on the interval. The risk is a false proof
+** that loses real roots; the hardest cases are polynomials that dip
+** close to zero without crossing (complex pairs alpha ± i·beta near the
+** interval) next to ones that barely cross. Each case is built from
+** known roots, so the expected count and values are exact.
+*/
+static void test_roots_near_tangent(void **state)
+{
+    (void)state;
+    double c[40], out[40];
+    /* A real pair 0.3 ± 1e-7 between two far roots: same sign at both
+    ** ends of [0, 1], so only the full solve can find it. The pair's
+    ** roots are conditioned by their separation: |p'| ~ 2e-7·(2.3·3.3)
+    ** against a Horner error ~1e-16·sum|c| ~ 2e-15 gives ~1e-9; 1e-8
+    ** is a tenth of the separation. */
+    double r2[2] = { -2, -3 };
+    from_roots(r2, 2, c);
+    times_pair(c, 2, 0.3, -1e-14);
+    int n = roots_in_interval(c, 4, 0, 1, out);
+    assert_int_equal(n, 2);
+    assert_near(out[0], 0.3 - 1e-7, 1e-8);
+    assert_near(out[1], 0.3 + 1e-7, 1e-8);
+    /* The same dip not reaching zero: no root */
+    from_roots(r2, 2, c);
+    times_pair(c, 2, 0.3, 1e-14);
+    assert_int_equal(roots_in_interval(c, 4, 0, 1, out), 0);
+
+    /* Random degree 2..10 on [0, 1] and on a shifted interval: simple
+    ** real roots (0.01 apart or more), roots outside, and complex pairs
+    ** whose real part lies inside and imaginary part is 1e-4..1e-1 (a
+    ** dip towards zero). Every real root inside must come back, as
+    ** accurately as its conditioning allows. */
+    uint64_t seed = 0x9e3779b97f4a7c15u;
+    for (int trial = 0; trial < 3000; trial++) {
+        double lo = trial % 2 ? 0.0 : -3.0, hi = trial % 2 ? 1.0 : 5.0;
+        double w = hi - lo;
+        int nreal = (int)(unit_rand(&seed) * 4);
+        double r[12];
+        int nr = 0;
+        for (int i = 0; i < nreal; i++) {
+            double x = lo + w * (0.02 + 0.96 * unit_rand(&seed));
+            bool close = false;
+            for (int k = 0; k < nr; k++)
+                if (fabs(r[k] - x) < 0.01 * w)
+                    close = true;
+            if (!close)
+                r[nr++] = x;
+        }
+        int inside = nr;
+        int nout = (int)(unit_rand(&seed) * 3);
+        for (int i = 0; i < nout; i++)
+            r[nr++] = unit_rand(&seed) < 0.5 ? lo - 0.5 * w * unit_rand(&seed) - 1e-3
+                                             : hi + 0.5 * w * unit_rand(&seed) + 1e-3;
+        from_roots(r, nr, c);
+        int deg = nr;
+        int npairs = 1 + (int)(unit_rand(&seed) * 3);
+        for (int i = 0; i < npairs && deg + 2 <= 10; i++) {
+            double alpha = lo + w * unit_rand(&seed);
+            double beta = w * pow(10, -4 + 3 * unit_rand(&seed));
+            times_pair(c, deg, alpha, beta * beta);
+            deg += 2;
+        }
+        n = roots_in_interval(c, deg, lo, hi, out);
+        assert_int_equal(n, inside);
+        /* sort the expected roots */
+        for (int i = 0; i < inside; i++)
+            for (int k = i + 1; k < inside; k++)
+                if (r[k] < r[i]) {
+                    double t = r[i];
+                    r[i] = r[k];
+                    r[k] = t;
+                }
+        /* each to its condition: a Horner error of a few ulps of
+        ** sum |c_k|·|t|^k moves a simple root by that over |p'| */
+        for (int i = 0; i < inside; i++) {
+            double S = 0, d = 0, tk = 1;
+            for (int k = 0; k <= deg; k++) {
+                S += fabs(c[k]) * tk;
+                tk *= fabs(r[i]);
+            }
+            for (int k = deg; k >= 1; k--)
+                d = d * r[i] + k * c[k];
+            assert_near(out[i], r[i], 1e-12 * w + 64 * 2.2e-16 * S / fabs(d));
+        }
+
+        /* roots_surely_above: a yes must hold at every point of a dense
+        ** grid; a level just below the grid's minimum (so truly below
+        ** the polynomial there) may be "not proved", never the reverse */
+        double vmin = INFINITY;
+        for (int k = 0; k <= 4000; k++)
+            vmin = fmin(vmin, roots_eval(c, deg, lo + w * k / 4000.0));
+        double v = vmin - 0.5 * fabs(vmin) * unit_rand(&seed);
+        if (roots_surely_above(c, deg, lo, hi, v))
+            assert_true(vmin > v);
+        assert_false(roots_surely_above(c, deg, lo, hi, vmin));
+    }
+    /* A clear case is proved: (t - 0.5)² + 0.3 > 0.005 on [0, 1] (its
+    ** Bernstein coefficients less 0.005 are 0.545, 0.045, 0.545); its
+    ** minimum 0.3 itself is not exceeded */
+    double pos[3] = { 0.55, -1, 1 };
+    assert_true(roots_surely_above(pos, 2, 0, 1, 0.005));
+    assert_false(roots_surely_above(pos, 2, 0, 1, 0.3));
+}
+
 static iris_object mk(enum iris_object_kind k)
 {
     iris_object o;
@@ -320,8 +447,9 @@ static void test_quadric_fast(void **state)
 
 /*
 ** POV-Ray's sphere uv (geom_sphere_uv): u is the angle about y measured
-** from +x towards -z over 2 pi, v = 1/2 + latitude / pi. Points: +x on
-** the equator (0, 1/2), -z (1/4, 1/2), -x (1/2, 1/2), +z (3/4, 1/2), the
+** from +x towards +z over 2 pi (Sphere::UVCoord: acos(x), 2 pi minus it
+** where z < 0), v = 1/2 + latitude / pi. Points: +x on the equator
+** (0, 1/2), +z (1/4, 1/2), -x (1/2, 1/2), -z (3/4, 1/2), the
 ** north pole v = 1 and 45 degrees south v = 1/4, for a sphere off the
 ** origin (the centre is subtracted). Exact up to rounding of atan2/asin.
 */
@@ -332,8 +460,8 @@ static void test_sphere_uv(void **state)
     s.u.sphere.centre = v3(1, 2, 3);
     s.u.sphere.radius = 2;
     struct { vec3 p; double u, v; } pts[] = {
-        { { 3, 2, 3 }, 0, 0.5 },     { { 1, 2, 1 }, 0.25, 0.5 },
-        { { -1, 2, 3 }, 0.5, 0.5 },  { { 1, 2, 5 }, 0.75, 0.5 },
+        { { 3, 2, 3 }, 0, 0.5 },     { { 1, 2, 5 }, 0.25, 0.5 },
+        { { -1, 2, 3 }, 0.5, 0.5 },  { { 1, 2, 1 }, 0.75, 0.5 },
         { { 1, 4, 3 }, 0.0, 1.0 },
         { { 1 + sqrt(2.0), 2 - sqrt(2.0), 3 }, 0, 0.25 },
     };
@@ -676,6 +804,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_roots_known),
+        cmocka_unit_test(test_roots_near_tangent),
         cmocka_unit_test(test_sphere),
         cmocka_unit_test(test_box),
         cmocka_unit_test(test_cylinder),

@@ -134,6 +134,81 @@ static double ovus_rho(const iris_object *o, double y)
     return k == 2 ? 10 - t[0] : NAN;
 }
 
+/*
+** Every surface crossing of an ovus along a ray is reported, the ones on
+** the connection too: ovus.c skips the quartic for rays that miss the
+** connection's slab or cylinder, and a wrong skip would lose exactly
+** those. The reference is independent of the solver: geom_inside() on a
+** dense grid along the ray (its changes of state are the crossings).
+** Rays run from random points around the egg through random points in
+** its box, many of them through the slab's edges, where the skip test
+** is decided. Rays where two crossings (or a crossing and a grid
+** sample's ambiguity) come within a few grid steps are tangent or
+** nearly so, where a grid cannot count, and are left out.
+*/
+static void test_ovus_crossings(void **state)
+{
+    (void)state;
+    const double radii[][2] = { { 1, 0.6 }, { 0.6, 0.9 }, { 0.4, 0.79 } };
+    uint64_t seed = 88172645463325252u;
+    int compared = 0;
+    for (size_t c = 0; c < sizeof radii / sizeof radii[0]; c++) {
+        iris_object o = mk(IRIS_OBJ_OVUS);
+        o.u.ovus.r1 = radii[c][0];
+        o.u.ovus.r2 = radii[c][1];
+        vec3 lo, hi;
+        assert_true(geom_bounds(&o, NULL, &lo, &hi));
+        for (int k = 0; k < 400; k++) {
+            double u[6];
+            for (int i = 0; i < 6; i++) {
+                seed ^= seed << 13;
+                seed ^= seed >> 7;
+                seed ^= seed << 17;
+                u[i] = (double)(seed >> 11) / 9007199254740992.0;
+            }
+            /* from a sphere of radius 4 around the box's centre */
+            vec3 mid = v3_scale(v3_add(lo, hi), 0.5);
+            double th = 2 * M_PI * u[0], z = 2 * u[1] - 1;
+            double rr = sqrt(1 - z * z);
+            vec3 ro = v3_add(mid, v3_scale(v3(rr * cos(th), z, rr * sin(th)), 4));
+            vec3 to = v3(lo.x + (hi.x - lo.x) * u[2],
+                         lo.y + (hi.y - lo.y) * u[3],
+                         lo.z + (hi.z - lo.z) * u[4]);
+            vec3 rd = v3_norm(v3_sub(to, ro));
+            double t[16];
+            int n = hits(&o, ro, rd, 0, 8, t, NULL, 16);
+            assert_true(n <= 16);
+            /* the grid: 8 units in 40000 steps */
+            const int N = 40000;
+            double step = 8.0 / N, tr[16];
+            int nt = 0;
+            bool prev = geom_inside(&o, NULL, ro);
+            for (int i = 1; i <= N && nt < 16; i++) {
+                bool in = geom_inside(&o, NULL, v3_madd(ro, rd, i * step));
+                if (in != prev)
+                    tr[nt++] = (i - 0.5) * step;
+                prev = in;
+            }
+            bool clear = true;
+            for (int i = 1; i < n; i++)
+                if (t[i] - t[i - 1] < 4 * step)
+                    clear = false;
+            for (int i = 1; i < nt; i++)
+                if (tr[i] - tr[i - 1] < 4 * step)
+                    clear = false;
+            if (!clear)
+                continue;
+            compared++;
+            assert_int_equal(n, nt);
+            /* each crossing within the grid step that holds it */
+            for (int i = 0; i < n; i++)
+                assert_true(fabs(t[i] - tr[i]) <= step);
+        }
+    }
+    /* nearly every ray is a clear case: the comparison is not vacuous */
+    assert_true(compared > 1000);
+}
+
 static void test_ovus_shapes(void **state)
 {
     (void)state;
@@ -813,6 +888,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_ovus_equal_radii),
         cmocka_unit_test(test_ovus_shapes),
+        cmocka_unit_test(test_ovus_crossings),
         cmocka_unit_test(test_sweep_capsules),
         cmocka_unit_test(test_sweep_splines),
         cmocka_unit_test(test_parametric_sphere),

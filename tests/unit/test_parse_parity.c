@@ -510,6 +510,73 @@ static void test_shape_with_identifier(void **state)
     iris_scene_destroy(sc);
 }
 
+/*
+** A macro parameter given a lone identifier is that variable (POV-Ray
+** passes it by reference), also when the #declare writing it is the
+** macro's last line, so the macro ends while the value is read
+** (language/macros/macro2.pov: Turn_Me(Thing, -90, x)). Both writes must
+** reach the caller's variables: A = 1 + 2 = 3, and T moved by 5 in x.
+** Exact: 0.
+*/
+static void test_macro_reference_last_line(void **state)
+{
+    (void)state;
+    iris_scene *sc = scene_of(
+        "#macro Add(V, D) #declare V = V + D; #end\n"
+        "#macro Move(S) #declare S = object { S translate 5*x } #end\n"
+        "#declare A = 1;\n"
+        "Add(A, 2)\n"
+        "#declare T = sphere { 0, 1 }\n"
+        "Move(T)\n"
+        "sphere { <A, 0, 0>, 1 }\n"
+        "object { T }\n");
+    assert_near(centre(sc, 0).x, 3, 0);
+    assert_near(sc->objects[1]->transform.m[0][3], 5, 0);
+    iris_scene_destroy(sc);
+}
+
+/*
+** A transform between a map's pattern and its map ('gradient y scale 10
+** texture_map/pigment_map') moves the map entries too: POV-Ray evaluates
+** the entries at the map pattern's transformed point. Here the entry is
+** 'gradient x' with a black-to-white map under the map pattern's
+** 'scale 4': at x = 1 the entry gives 1/4 (it gave 1 -> wrapped 0 when
+** the entries missed the scale). Exact in binary: 1e-15.
+*/
+static void test_transform_before_map(void **state)
+{
+    (void)state;
+    iris_scene *sc = scene_of(
+        "sphere { 0, 1 pigment { gradient y scale 4 pigment_map {\n"
+        "  [0 gradient x color_map { [0 rgb 0] [1 rgb 1] }]\n"
+        "  [1 gradient x color_map { [0 rgb 0] [1 rgb 1] }] } } }\n");
+    assert_near(red_at(sc, 0, 1, 0.5, 0), 0.25, 1e-15);
+    iris_scene_destroy(sc);
+}
+
+/*
+** A pattern function follows global_settings { noise_generator }, as
+** POV-Ray's GetNoiseGen does for every pattern without its own: F (the
+** global 1) must equal G (an explicit 1) and differ from H (2)
+** (incdemo/func_gradient.pov, 10 dB when functions always used 2). The
+** same evaluation twice: exact; generators 1 and 2 differ by far more
+** than 1e-6 at this point.
+*/
+static void test_function_noise_generator(void **state)
+{
+    (void)state;
+    iris_scene *sc = scene_of(
+        "global_settings { noise_generator 1 }\n"
+        "#declare F = function { pattern { bozo } }\n"
+        "#declare G = function { pattern { bozo noise_generator 1 } }\n"
+        "#declare H = function { pattern { bozo noise_generator 2 } }\n"
+        "sphere { <F(0.3, 0.7, 0.2), G(0.3, 0.7, 0.2), H(0.3, 0.7, 0.2)>,"
+        " 1 }\n");
+    iris_vec3 c = centre(sc, 0);
+    assert_near(c.x, c.y, 0);
+    assert_true(fabs(c.x - c.z) > 1e-6);
+    iris_scene_destroy(sc);
+}
 
 /*
 ** Focal blur settings as POV-Ray 3.7's Parse_Camera keeps them:
@@ -591,6 +658,9 @@ int main(void)
         cmocka_unit_test(test_rand_streams),
         cmocka_unit_test(test_expression_across_if),
         cmocka_unit_test(test_shape_with_identifier),
+        cmocka_unit_test(test_macro_reference_last_line),
+        cmocka_unit_test(test_transform_before_map),
+        cmocka_unit_test(test_function_noise_generator),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

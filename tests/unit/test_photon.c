@@ -385,7 +385,8 @@ static struct tw_scene tw;
 static struct photon_map *build(struct tw_scene *t, int threads)
 {
     struct pmap_world w = tw_world(t);
-    struct photon_options o = { threads, 12345, 0, 0, NULL, 0, NULL, 0 };
+    struct photon_options o = { threads, 12345, 0,    0,
+                                NULL,    0,     NULL, 0, false };
     struct photon_map *m = NULL;
     struct photon_stats st;
     assert_int_equal(pmap_build(&t->scene, &w, &o, &m, &st), IRIS_OK);
@@ -489,7 +490,7 @@ static void test_slab_flux_accel(void **state)
         fail_msg("accel_build: %s", err);
     struct mat_ctx *mc = NULL;
     assert_int_equal(mat_ctx_create(&tw.scene, stderr, &mc), IRIS_OK);
-    struct photon_options o = { 2, 12345, 0, 0, mc, 0, NULL, 0 };
+    struct photon_options o = { 2, 12345, 0, 0, mc, 0, NULL, 0, false };
     struct photon_map *m = NULL;
     struct photon_stats st;
     assert_int_equal(photon_map_build(&tw.scene, a, &o, &m, &st), IRIS_OK);
@@ -702,7 +703,8 @@ static void test_progressive_ball(void **state)
         for (int fixed = 0; fixed < 2; fixed++) {
             if (fixed && p >= 16)
                 continue; /* 16 fixed-radius passes already plateau */
-            struct photon_options o = { 2, 777, p, 0, NULL, 0, NULL, 0 };
+            struct photon_options o = { 2,    777, p, 0,
+                                        NULL, 0,   NULL, 0, false };
             o.radius_scale = fixed ? 1.0 : progressive_radius_scale(p);
             struct photon_map *m = NULL;
             assert_int_equal(pmap_build(&tw.scene, &w, &o, &m, NULL),
@@ -906,7 +908,7 @@ static void test_rules(void **state)
     ball->photon_target = true;
     iris_object *floor = tw_plane(&tw, v3(0, 1, 0), 0, WHITE, 1);
     struct pmap_world w = tw_world(&tw);
-    struct photon_options o = { 1, 1, 0, 0, NULL, 0, NULL, 0 };
+    struct photon_options o = { 1, 1, 0, 0, NULL, 0, NULL, 0, false };
     struct photon_map *m = (struct photon_map *)1;
     tw.scene.settings.photons.enabled = false;
     assert_int_equal(pmap_build(&tw.scene, &w, &o, &m, NULL), IRIS_OK);

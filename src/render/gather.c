@@ -1,0 +1,702 @@
+/* SPDX-License-Identifier: MIT */
+/*
+** gather.c: the final gather of radiosity{} and its irradiance cache
+** (see gather.h), after what POV-Ray 3.7's radiosity computes
+** (source/core/lighting/radiosity.cpp; semantics §3 step 4).
+**
+** WHY a final gather: reading the global photon map directly at eye hits
+** shows its low-frequency noise as colour blotches, and a photon map
+** cannot carry light that does not start at a light source (the sky seen
+** by an outdoor scene, objects glowing by ambient or emission), which
+** POV-Ray's radiosity gathers. Here the eye hit gathers; the hits of the
+** gather rays read the global map (one bounce later, where its noise
+** averages out over 'count' rays) and see sky, emission and ambient as
+** POV-Ray's sample rays see them.
+**
+** What a sample is (POV-Ray's GatherLight): 'count' rays from the hit in
+** fixed cosine-distributed directions about the normal (a golden-angle
+** spiral over the projected disc: stratified, and the same set at every
+** sample, so neighbouring samples err alike and the image shows no
+** blotches, as with POV-Ray's fixed direction pool); each is traced as an
+** ordinary ray (gi_depth 1: no highlights, no further gather, the global
+** map instead when recursion_limit >= 2). The sample is the mean of what
+** they return (no cosine factor: the directions carry it), its validity
+** radius the harmonic mean of their hit distances clamped to
+** [minimum_reuse, maximum_reuse] x the distance to the camera.
+**
+** Reuse (POV-Ray's AverageNearBlock): a record at distance d with radius
+** r (shrunk towards its nearest hit in that direction) and normal n' has
+** error d/r + 2 sqrt(1 - n·n'); it is used when that is below
+** error_bound (plus 0.25 - weight for faint rays), and when it does not
+** lie in front of the point; weight 1 - e/eb in the pretrace and
+** POV-Ray's smooth "pseudo-sigmoid" of e/eb in the final pass.
+**
+** Determinism (images must not depend on the thread count): the cache is
+** filled by a pretrace over the image at pixel steps pretrace_start x
+** size, halving down to pretrace_end (at least to 4 pixels). During one
+** step the shared cache is read-only; each 32x32 tile keeps the records
+** it makes in its own list (tile-local, traced in a fixed order), and
+** after the step the tiles' lists are appended in tile order and the
+** grid is rebuilt. The eye pass reads the shared cache and, like
+** POV-Ray's tiles under +HR, stores what it must add in a list local to
+** the tile (gather_tile_begin() clears it). So every record depends only
+** on the image position, never on which thread traced what first.
+**
+** The shared cache is a multi-level hash grid: a record of influence
+** radius R sits at the level whose cells are >= 2R wide, in the (at most
+** 8) cells its sphere touches, so a lookup visits one cell per level.
+*/
+#include "config.h"
+
+#include "render/gather.h"
+
+#include <math.h>
+#include <stdatomic.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "photon/pmap.h"
+#include "render/camera.h"
+#include "util/mem.h"
+#include "util/thread.h"
+
+#define TILE 32
+#define IN_FRONT_LIMIT (-0.05)   /* POV-Ray's: points just in front stay */
+#define NEAR_EPS 1e-6            /* POV-Ray's AVG_NEAR_EPSILON */
+#define MAX_LEVELS 128          /* rec_level() spans -40..60 */
+#define LOCAL_MAX 8192           /* records one tile keeps (then: no more) */
+#define FILL_STEP 4               /* pixels: the pretrace's finest step */
+#define GI_CAUSTIC_K 20          /* caustic photons a gather hit reads */
+#define GOLDEN_ANGLE 2.399963229728653 /* pi (3 - sqrt 5) */
+
+struct grec {
+    vec3 p, n;                 /* point, unit normal facing the eye */
+    vec3 to_near;              /* unit direction of the nearest hit */
+    double ri;                 /* harmonic mean distance, clamped */
+    double near;               /* distance of the nearest hit */
+    float e[3];                /* mean radiance (before brightness) */
+};
+
+struct grec_list {
+    struct grec *r;
+    size_t n, cap;
+};
+
+struct gather_local {
+    struct grec_list l;
+};
+
+struct gcell {
+    int32_t lvl;
+    int64_t ix, iy, iz;
+    uint32_t first, count;     /* in gather.idx; count 0 = empty slot */
+};
+
+struct gather {
+    const iris_scene *scene;
+    iris_radiosity_settings rs;
+    vec3 eye;                  /* camera location: reuse radii scale */
+    int count;
+    vec3 *dirs;                /* count directions, z = the normal */
+    bool pretrace;             /* the pretrace is running */
+    bool strict;               /* its POV-Ray steps (pretrace_start to
+                                  pretrace_end): reuse needs nearest_count */
+    double eb;                 /* the error bound of this phase */
+    struct grec_list all;      /* the shared cache */
+    int n_levels;
+    int levels[MAX_LEVELS];
+    struct gcell *cells;
+    size_t cells_mask;
+    uint32_t *idx;
+    struct photon_map view;    /* t->photon_map without its global map */
+    struct photon_map view_gi; /* what gather rays' hits read */
+};
+
+bool gather_pretracing(const struct gather *g)
+{
+    return g && g->pretrace;
+}
+
+bool gather_wanted(const struct tracer *t)
+{
+    return t->scene->settings.radiosity && (t->quality & TQ_ADVANCED) &&
+           !(t->quality & TQ_FULL_AMBIENT);
+}
+
+/* ------------------------------------------------------------------ */
+/* Record lists and the grid                                            */
+/* ------------------------------------------------------------------ */
+
+static bool list_push(struct grec_list *l, const struct grec *r)
+{
+    if (l->n == l->cap) {
+        size_t cap = l->cap ? 2 * l->cap : 64;
+        struct grec *nr = iris_realloc(l->r, cap * sizeof *nr);
+        if (!nr)
+            return false;
+        l->r = nr;
+        l->cap = cap;
+    }
+    l->r[l->n++] = *r;
+    return true;
+}
+
+/* The largest error bound a lookup uses: eb + 0.25 for the faintest
+** rays (gather_irradiance). */
+static double max_bound(const struct gather *g)
+{
+    return g->rs.error_bound + 0.25;
+}
+
+static int64_t cell_of(double v, double s)
+{
+    double q = floor(v / s);
+    return (int64_t)fmax(-4.0e18, fmin(4.0e18, q));
+}
+
+static uint64_t cell_hash(int32_t lvl, int64_t ix, int64_t iy, int64_t iz)
+{
+    uint64_t h = rng_mix64((uint64_t)(uint32_t)lvl * 0x9e3779b97f4a7c15ULL ^
+                           (uint64_t)ix);
+    h = rng_mix64(h ^ (uint64_t)iy * 0xbf58476d1ce4e5b9ULL);
+    return rng_mix64(h ^ (uint64_t)iz * 0x94d049bb133111ebULL);
+}
+
+static int rec_level(double rinf)
+{
+    int l = (int)ceil(log2(fmax(2.0 * rinf, 1e-12)));
+    return l < -40 ? -40 : l > 60 ? 60 : l;
+}
+
+struct cpair {
+    int32_t lvl;
+    int64_t ix, iy, iz;
+    uint32_t rec;
+};
+
+static int cpair_cmp(const void *a, const void *b)
+{
+    const struct cpair *x = a, *y = b;
+    if (x->lvl != y->lvl) return x->lvl < y->lvl ? -1 : 1;
+    if (x->ix != y->ix) return x->ix < y->ix ? -1 : 1;
+    if (x->iy != y->iy) return x->iy < y->iy ? -1 : 1;
+    if (x->iz != y->iz) return x->iz < y->iz ? -1 : 1;
+    return (x->rec > y->rec) - (x->rec < y->rec);
+}
+
+static void grid_free(struct gather *g)
+{
+    iris_free(g->cells);
+    iris_free(g->idx);
+    g->cells = NULL;
+    g->idx = NULL;
+    g->cells_mask = 0;
+    g->n_levels = 0;
+}
+
+/* Rebuilds the grid over g->all. */
+static enum iris_status grid_build(struct gather *g)
+{
+    grid_free(g);
+    size_t n = g->all.n;
+    if (n == 0)
+        return IRIS_OK;
+    struct cpair *pairs = iris_malloc(8 * n * sizeof *pairs);
+    if (!pairs)
+        return IRIS_ENOMEM;
+    size_t np = 0;
+    double ebm = max_bound(g);
+    bool seen[MAX_LEVELS] = { false };
+    for (size_t i = 0; i < n; i++) {
+        const struct grec *r = &g->all.r[i];
+        double R = r->ri * ebm;
+        int l = rec_level(R);
+        double s = ldexp(1.0, l);
+        seen[l + 40] = true;
+        int64_t lo[3] = { cell_of(r->p.x - R, s), cell_of(r->p.y - R, s),
+                          cell_of(r->p.z - R, s) };
+        int64_t hi[3] = { cell_of(r->p.x + R, s), cell_of(r->p.y + R, s),
+                          cell_of(r->p.z + R, s) };
+        for (int64_t x = lo[0]; x <= hi[0] && x <= lo[0] + 1; x++)
+            for (int64_t y = lo[1]; y <= hi[1] && y <= lo[1] + 1; y++)
+                for (int64_t z = lo[2]; z <= hi[2] && z <= lo[2] + 1; z++)
+                    pairs[np++] = (struct cpair){ l, x, y, z, (uint32_t)i };
+    }
+    for (int l = 0; l < MAX_LEVELS; l++)
+        if (seen[l])
+            g->levels[g->n_levels++] = l - 40;
+    qsort(pairs, np, sizeof *pairs, cpair_cmp);
+    size_t n_cells = 0;
+    for (size_t i = 0; i < np; i++)
+        n_cells += i == 0 || pairs[i].lvl != pairs[i - 1].lvl ||
+                   pairs[i].ix != pairs[i - 1].ix ||
+                   pairs[i].iy != pairs[i - 1].iy ||
+                   pairs[i].iz != pairs[i - 1].iz;
+    size_t cap = 16;
+    while (cap < 2 * n_cells)
+        cap *= 2;
+    g->cells = iris_calloc(cap, sizeof *g->cells);
+    g->idx = iris_malloc(np * sizeof *g->idx);
+    if (!g->cells || !g->idx) {
+        iris_free(pairs);
+        grid_free(g);
+        return IRIS_ENOMEM;
+    }
+    g->cells_mask = cap - 1;
+    for (size_t i = 0; i < np;) {
+        size_t k = i;
+        while (k < np && pairs[k].lvl == pairs[i].lvl &&
+               pairs[k].ix == pairs[i].ix && pairs[k].iy == pairs[i].iy &&
+               pairs[k].iz == pairs[i].iz) {
+            g->idx[k] = pairs[k].rec;
+            k++;
+        }
+        size_t slot = cell_hash(pairs[i].lvl, pairs[i].ix, pairs[i].iy,
+                                pairs[i].iz) & g->cells_mask;
+        while (g->cells[slot].count != 0)
+            slot = (slot + 1) & g->cells_mask;
+        g->cells[slot] = (struct gcell){ pairs[i].lvl, pairs[i].ix,
+                                         pairs[i].iy, pairs[i].iz,
+                                         (uint32_t)i, (uint32_t)(k - i) };
+        i = k;
+    }
+    iris_free(pairs);
+    return IRIS_OK;
+}
+
+/* ------------------------------------------------------------------ */
+/* Reuse                                                                */
+/* ------------------------------------------------------------------ */
+
+struct lookup {
+    vec3 p, n;
+    double eb;
+    bool smooth;               /* the final pass's weights */
+    double w, sum[3];
+};
+
+/* POV-Ray's AverageNearBlock for one record. */
+static void consider(struct lookup *q, const struct grec *r)
+{
+    vec3 delta = v3_sub(q->p, r->p);
+    double d2 = v3_len2(delta);
+    double quick = r->ri * q->eb;
+    if (!(d2 < quick * quick))
+        return;
+    double dist = sqrt(d2), ri = r->ri;
+    vec3 du = v3(0, 0, 0);
+    if (dist > NEAR_EPS) {
+        du = v3_scale(delta, 1.0 / dist);
+        /* the radius shrinks towards the nearest surface the sample saw:
+        ** light changes fastest there */
+        double cn = v3_dot(r->to_near, du);
+        if (cn > 0.0)
+            ri = cn * r->near + (1.0 - cn) * ri;
+    }
+    if (!(dist < ri * q->eb))
+        return;
+    double err = dist / ri + 2.0 * sqrt(fabs(1.0 - v3_dot(q->n, r->n)));
+    if (!(err < q->eb))
+        return;
+    if (dist > NEAR_EPS) {
+        /* a record in front of the point may see what shadows it */
+        vec3 half = v3_add(q->n, r->n);
+        double hl = v3_len(half);
+        if (hl > 0.0 && v3_dot(du, half) / hl <= IN_FRONT_LIMIT)
+            return;
+    }
+    double t = err / q->eb, w;
+    if (!q->smooth)
+        w = 1.0 - t;
+    else
+        w = t < 0.5 ? 1.0 - 2.0 * t * t : 2.0 * (1.0 - t) * (1.0 - t);
+    if (!(w > 0.0))
+        return;
+    q->w += w;
+    for (int k = 0; k < 3; k++)
+        q->sum[k] += w * r->e[k];
+}
+
+static void lookup_shared(const struct gather *g, struct lookup *q)
+{
+    if (!g->cells)
+        return;
+    for (int i = 0; i < g->n_levels; i++) {
+        int l = g->levels[i];
+        double s = ldexp(1.0, l);
+        int64_t ix = cell_of(q->p.x, s), iy = cell_of(q->p.y, s),
+                iz = cell_of(q->p.z, s);
+        size_t slot = cell_hash(l, ix, iy, iz) & g->cells_mask;
+        for (;;) {
+            const struct gcell *c = &g->cells[slot];
+            if (c->count == 0)
+                break;
+            if (c->lvl == l && c->ix == ix && c->iy == iy && c->iz == iz) {
+                for (uint32_t k = 0; k < c->count; k++)
+                    consider(q, &g->all.r[g->idx[c->first + k]]);
+                break;
+            }
+            slot = (slot + 1) & g->cells_mask;
+        }
+    }
+}
+
+/* ------------------------------------------------------------------ */
+/* One sample                                                           */
+/* ------------------------------------------------------------------ */
+
+/* POV-Ray's GatherLight: the mean radiance over the hemisphere about 'n'
+** at 'h'. Returns whether the sample may be cached (*rec filled). */
+static bool gather_sample(struct trace_ctx *c, const struct gather *g,
+                          const struct tray *eye, const struct hit *h,
+                          vec3 n, double e[3], struct grec *rec)
+{
+    const struct tracer *t = c->t;
+    vec3 a, b;
+    v3_basis(n, &a, &b);
+    double to_eye = v3_len(v3_sub(g->eye, h->p));
+    double min_d = to_eye * g->rs.minimum_reuse;
+    double max_d = to_eye * g->rs.maximum_reuse;
+    /* what a gather ray changes in the context, restored below */
+    int level = c->level, depth = c->gi_depth;
+    double transm = c->transm;
+    bool spectral = c->spectral;
+    c->gi_depth = depth + 1;
+    double wt = fmax(t->adc + 1e-6, 0.5 * g->rs.brightness);
+    double sum[3] = { 0, 0, 0 }, inv = 0.0, nearest = HUGE_VAL;
+    vec3 near_dir = n;
+    struct tray gr;
+    tray_copy(&gr, eye);
+    gr.reflected = true;
+    gr.r.o = h->p;
+    gr.tmin = h->eps;
+    for (int i = 0; i < g->count; i++) {
+        vec3 l = g->dirs[i];
+        gr.r.d = v3_norm(v3_add(v3_add(v3_scale(a, l.x), v3_scale(b, l.y)),
+                                v3_scale(n, l.z)));
+        double col[3];
+        c->level = 0; /* a new ray from scratch, as POV-Ray starts it */
+        double d = trace_ray(c, &gr, wt, false, col);
+        if (g->rs.max_sample > 0.0) {
+            double m = fmax(col[0], fmax(col[1], col[2]));
+            if (m > g->rs.max_sample)
+                for (int k = 0; k < 3; k++)
+                    col[k] *= g->rs.max_sample / m;
+        }
+        for (int k = 0; k < 3; k++)
+            if (isfinite(col[k]))
+                sum[k] += col[k];
+        if (d < nearest) {
+            nearest = d;
+            near_dir = gr.r.d;
+        }
+        if (d > 0.0 && isfinite(d))
+            inv += 1.0 / d;
+    }
+    c->level = level;
+    c->gi_depth = depth;
+    c->transm = transm;
+    c->spectral = spectral;
+    for (int k = 0; k < 3; k++)
+        e[k] = sum[k] / g->count;
+    /* almost touching another surface: rays may have slipped through it
+    ** (POV-Ray's rule) */
+    if (!(nearest > max_d * 1e-4))
+        return false;
+    double mean = inv > 0.0 ? g->count / inv : HUGE_VAL;
+    mean = fmin(fmax(mean, min_d), max_d);
+    if (!(mean > 0.0) || !isfinite(mean))
+        return false;
+    *rec = (struct grec){ h->p, n, near_dir, mean, fmin(nearest, mean),
+                          { (float)e[0], (float)e[1], (float)e[2] } };
+    return true;
+}
+
+void gather_irradiance(struct trace_ctx *c, const struct tray *eye,
+                       const struct hit *h, vec3 n, double weight,
+                       double out[3])
+{
+    const struct gather *g = c->t->gather;
+    out[0] = out[1] = out[2] = 0.0;
+    if (!g)
+        return;
+    if (!c->gl) {
+        c->gl = iris_calloc(1, sizeof *c->gl);
+        if (!c->gl)
+            return;
+    }
+    struct lookup q = { h->p, n, g->eb, !g->pretrace, 0.0, { 0, 0, 0 } };
+    /* faint rays may reuse from farther (POV-Ray's weight offset) */
+    if (weight < 0.25)
+        q.eb += 0.25 - weight;
+    lookup_shared(g, &q);
+    for (size_t i = 0; i < c->gl->l.n; i++)
+        consider(&q, &c->gl->l.r[i]);
+    double e[3];
+    bool enough = g->strict ? 4.0 * q.w >= g->rs.nearest_count
+                            : q.w > 0.0 && !g->rs.always_sample;
+    if (enough) {
+        for (int k = 0; k < 3; k++)
+            e[k] = q.sum[k] / q.w;
+    } else {
+        struct grec rec;
+        double en[3];
+        if (gather_sample(c, g, eye, h, n, en, &rec) &&
+            c->gl->l.n < LOCAL_MAX)
+            list_push(&c->gl->l, &rec);
+        /* blended with what could be reused, as POV-Ray does */
+        for (int k = 0; k < 3; k++)
+            e[k] = (q.sum[k] + en[k]) / (q.w + 1.0);
+    }
+    double gt = g->rs.gray_threshold;
+    double grey = mat_greyscale(e);
+    for (int k = 0; k < 3; k++)
+        out[k] = g->rs.brightness * (e[k] * (1.0 - gt) + gt * grey);
+}
+
+void gather_tile_begin(struct trace_ctx *c)
+{
+    if (c->gl)
+        c->gl->l.n = 0;
+}
+
+void gather_ctx_fini(struct trace_ctx *c)
+{
+    if (c->gl) {
+        iris_free(c->gl->l.r);
+        iris_free(c->gl);
+        c->gl = NULL;
+    }
+}
+
+/* ------------------------------------------------------------------ */
+/* Pretrace                                                             */
+/* ------------------------------------------------------------------ */
+
+struct pre_job {
+    struct gather *g;
+    const struct tracer *t;
+    const iris_render_options *opts;
+    const struct interior_stack *cam;
+    struct trace_ctx *ctx;     /* one per thread */
+    struct grec_list *out;     /* one per tile */
+    int x0, y0, x1, y1, tiles_x;
+    int step, round;
+    atomic_int failed;
+};
+
+static void pre_tile(void *vctx, int64_t item, int thread)
+{
+    struct pre_job *j = vctx;
+    struct trace_ctx *c = &j->ctx[thread];
+    if (atomic_load(&j->failed) ||
+        (j->opts->interrupt && *j->opts->interrupt))
+        return;
+    const iris_scene *sc = j->t->scene;
+    int tx = (int)(item % j->tiles_x), ty = (int)(item / j->tiles_x);
+    int tx0 = j->x0 + tx * TILE, ty0 = j->y0 + ty * TILE;
+    int tx1 = tx0 + TILE - 1 < j->x1 ? tx0 + TILE - 1 : j->x1;
+    int ty1 = ty0 + TILE - 1 < j->y1 ? ty0 + TILE - 1 : j->y1;
+    int s = j->step, half = s / 2;
+    gather_tile_begin(c);
+    bool ortho = sc->camera.kind == IRIS_CAM_ORTHOGRAPHIC;
+    /* the samples lie on one grid over the window, whatever the tiles */
+    for (int y = j->y0 + half; y <= ty1; y += s) {
+        if (y < ty0)
+            continue;
+        for (int x = j->x0 + half; x <= tx1; x += s) {
+            if (x < tx0)
+                continue;
+            struct tray r;
+            vec3 raw;
+            r.reflected = false;
+            r.lambda = 0.0;
+            r.tmin = 0.0;
+            if (!camera_ray_raw(&sc->camera, j->opts->width,
+                                j->opts->height, x, y, &r.r, &raw))
+                continue;
+            if (ortho) {
+                trace_containing(j->t, r.r.o, &r.st);
+            } else {
+                r.st.n = j->cam->n;
+                for (int i = 0; i < r.st.n; i++)
+                    r.st.e[i] = j->cam->e[i];
+            }
+            rng_seed(&c->rng, j->opts->seed, 0x67617468ULL + (uint64_t)j->round,
+                     ((uint64_t)(uint32_t)y << 32) | (uint32_t)x);
+            c->level = 0;
+            c->spectral = false;
+            double rgb[3];
+            trace_ray(c, &r, 1.0, false, rgb);
+        }
+    }
+    /* hand the tile's records over (the list moves, nothing is copied) */
+    if (c->gl) {
+        j->out[item] = c->gl->l;
+        memset(&c->gl->l, 0, sizeof c->gl->l);
+    }
+}
+
+static int clampi(int v, int lo, int hi)
+{
+    return v < lo ? lo : v > hi ? hi : v;
+}
+
+static enum iris_status pretrace(struct gather *g, const struct tracer *t,
+                                 const iris_render_options *opts, int threads,
+                                 const struct interior_stack *cam)
+{
+    struct pre_job j;
+    memset(&j, 0, sizeof j);
+    j.g = g;
+    j.t = t;
+    j.opts = opts;
+    j.cam = cam;
+    j.x0 = opts->start_col > 0 ? clampi(opts->start_col - 1, 0, opts->width - 1) : 0;
+    j.x1 = opts->end_col > 0 ? clampi(opts->end_col - 1, 0, opts->width - 1)
+                             : opts->width - 1;
+    j.y0 = opts->start_row > 0 ? clampi(opts->start_row - 1, 0, opts->height - 1) : 0;
+    j.y1 = opts->end_row > 0 ? clampi(opts->end_row - 1, 0, opts->height - 1)
+                             : opts->height - 1;
+    if (j.x1 < j.x0 || j.y1 < j.y0)
+        return IRIS_OK;
+    j.tiles_x = (j.x1 - j.x0) / TILE + 1;
+    int64_t n_tiles = (int64_t)j.tiles_x * ((j.y1 - j.y0) / TILE + 1);
+    int size = opts->width > opts->height ? opts->width : opts->height;
+    int first = (int)lround(g->rs.pretrace_start * size);
+    int end = (int)lround(g->rs.pretrace_end * size);
+    if (end < 1) end = 1;
+    if (first < end) first = end;
+    if (first > 256) first = 256;
+    /* POV-Ray's steps down to pretrace_end, then, with the eye pass's
+    ** rule (a sample wherever nothing can be reused), steps down to 4
+    ** pixels: what POV-Ray's final pass adds lands here in the shared
+    ** cache rather than in tile-local lists */
+    int last = end < FILL_STEP ? end : FILL_STEP;
+    j.ctx = iris_calloc((size_t)threads, sizeof *j.ctx);
+    j.out = iris_calloc((size_t)n_tiles, sizeof *j.out);
+    enum iris_status st = j.ctx && j.out ? IRIS_OK : IRIS_ENOMEM;
+    int n_ctx = 0;
+    for (; st == IRIS_OK && n_ctx < threads; n_ctx++)
+        if (!trace_ctx_init(&j.ctx[n_ctx], t)) {
+            trace_ctx_fini(&j.ctx[n_ctx]);
+            st = IRIS_ENOMEM;
+        }
+    g->pretrace = true;
+    for (int s = first; st == IRIS_OK; s = s / 2 > last ? s / 2 : last) {
+        j.step = s;
+        g->strict = s >= end;
+        g->eb = g->rs.error_bound * (g->strict ? g->rs.low_error_factor : 1);
+        atomic_init(&j.failed, 0);
+        par_for(threads, n_tiles, pre_tile, &j);
+        for (int64_t i = 0; i < n_tiles; i++) {
+            for (size_t k = 0; k < j.out[i].n && st == IRIS_OK; k++)
+                if (!list_push(&g->all, &j.out[i].r[k]))
+                    st = IRIS_ENOMEM;
+            iris_free(j.out[i].r);
+            memset(&j.out[i], 0, sizeof j.out[i]);
+        }
+        if (st == IRIS_OK)
+            st = grid_build(g);
+        if (opts->interrupt && *opts->interrupt)
+            st = IRIS_EINTR;
+        j.round++;
+        if (s == last)
+            break;
+    }
+    for (int i = 0; i < n_ctx; i++)
+        trace_ctx_fini(&j.ctx[i]);
+    iris_free(j.ctx);
+    iris_free(j.out);
+    g->pretrace = g->strict = false;
+    g->eb = g->rs.error_bound;
+    return st;
+}
+
+/* ------------------------------------------------------------------ */
+/* Set-up                                                               */
+/* ------------------------------------------------------------------ */
+
+enum iris_status gather_begin(struct tracer *t,
+                              const iris_render_options *opts, int threads,
+                              const struct interior_stack *cam)
+{
+    t->gather = NULL;
+    t->photon_map_local = t->photon_map_gather = t->photon_map;
+    if (!gather_wanted(t))
+        return IRIS_OK;
+    struct gather *g = iris_calloc(1, sizeof *g);
+    if (!g)
+        return IRIS_ENOMEM;
+    g->scene = t->scene;
+    g->rs = t->scene->settings.rad;
+    if (g->rs.count < 1)
+        g->rs.count = 35;
+    if (!(g->rs.error_bound > 0.0))
+        g->rs.error_bound = 1.8;
+    if (!(g->rs.low_error_factor > 0.0))
+        g->rs.low_error_factor = 1.0;
+    if (!(g->rs.maximum_reuse > 0.0))
+        g->rs.maximum_reuse = 0.2;
+    if (g->rs.minimum_reuse > g->rs.maximum_reuse)
+        g->rs.minimum_reuse = g->rs.maximum_reuse;
+    g->eye = t->scene->camera.location;
+    g->count = g->rs.count;
+    g->eb = g->rs.error_bound;
+    g->dirs = iris_calloc((size_t)g->count, sizeof *g->dirs);
+    if (!g->dirs) {
+        iris_free(g);
+        return IRIS_ENOMEM;
+    }
+    /* Malley's method over a golden-angle spiral: points spread evenly
+    ** over the unit disc, lifted to the hemisphere, are cosine
+    ** distributed. The spiral turns by an angle keyed by the seed, so
+    ** that progressive passes (each with its own seed) average different
+    ** direction sets; cos^2 theta stays on the midpoints of its strata. */
+    double turn = 2.0 * M_PI * (double)(rng_mix64(opts->seed ^ 0x676174686572ULL)
+                                        >> 11) * 0x1p-53;
+    for (int i = 0; i < g->count; i++) {
+        double u = (i + 0.5) / g->count, r = sqrt(u);
+        double ph = GOLDEN_ANGLE * i + turn;
+        g->dirs[i] = v3(r * cos(ph), r * sin(ph), sqrt(fmax(0.0, 1.0 - u)));
+    }
+    t->photon_map_gather = t->photon_map;
+    if (t->photon_map) {
+        /* eye hits that gather must not add the global map themselves */
+        const struct photon_map *m = t->photon_map;
+        g->view = *m;
+        g->view.global = NULL;
+        t->photon_map_local = &g->view;
+        /* The gather rays' hits: the global map only if recursion_limit
+        ** allows one more bounce, and the caustic estimate from at most
+        ** GI_CAUSTIC_K photons. Why: that k-nearest search at every
+        ** gather hit was 2/3 of the gather's time; 'count' rays average
+        ** the noisier estimates, and a smaller k only lowers their bias. */
+        g->view_gi = *m;
+        if (g->rs.recursion_limit < 2)
+            g->view_gi.global = NULL;
+        if (g->view_gi.gather_max > GI_CAUSTIC_K)
+            g->view_gi.gather_max = GI_CAUSTIC_K;
+        if (g->view_gi.gather_min > g->view_gi.gather_max / 4)
+            g->view_gi.gather_min = g->view_gi.gather_max / 4;
+        t->photon_map_gather = &g->view_gi;
+    }
+    t->gather = g;
+    enum iris_status st = pretrace(g, t, opts, threads, cam);
+    if (st != IRIS_OK)
+        gather_end(t);
+    return st;
+}
+
+void gather_end(struct tracer *t)
+{
+    struct gather *g = t->gather;
+    t->gather = NULL;
+    t->photon_map_local = t->photon_map_gather = t->photon_map;
+    if (!g)
+        return;
+    grid_free(g);
+    iris_free(g->all.r);
+    iris_free(g->dirs);
+    iris_free(g);
+}
