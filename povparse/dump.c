@@ -475,7 +475,7 @@ void iris_scene_dump(const iris_scene *s, FILE *o)
 {
     static const char *const cams[] = { "perspective", "orthographic",
         "fisheye", "panoramic", "ultra_wide_angle", "omnimax", "cylinder",
-        "spherical" };
+        "spherical", "mesh_camera" };
     fprintf(o, "version %.6g\n", s->version);
     const iris_camera *c = &s->camera;
     fprintf(o, "camera %s%s\n", cams[c->kind], s->has_camera ? "" : " (default)");

@@ -561,6 +561,28 @@ static bool pattern_kind(pp_state *ps, iris_pattern *p)
         fractal_defaults(p);
         break;
     case T_LEOPARD: p->kind = IRIS_PAT_LEOPARD; break;
+    case T_MAGNET: {
+        /* magnet N mandel ITER | magnet N julia <u, v>, ITER: a mandel or
+        ** julia pattern with the magnet type (1 or 2) in params[7] */
+        pp_token mt = ps->tok;
+        int type = pp_int(ps);
+        if (type != 1 && type != 2)
+            pp_error(ps, &mt, "magnet type must be 1 or 2");
+        pp_next(ps);
+        if (ps->tok.kind == T_JULIA) {
+            p->kind = IRIS_PAT_JULIA;
+            p->complex_c = pp_vector2(ps);
+            pp_accept(ps, T_COMMA);
+        } else if (ps->tok.kind == T_MANDEL) {
+            p->kind = IRIS_PAT_MANDEL;
+        } else {
+            pp_error(ps, &ps->tok, "expected mandel or julia after magnet");
+        }
+        p->iterations = pp_int(ps);
+        fractal_defaults(p);
+        p->params[7] = type;
+        break;
+    }
     case T_MANDEL:
         p->kind = IRIS_PAT_MANDEL;
         p->iterations = pp_int(ps);
@@ -591,7 +613,13 @@ static bool pattern_kind(pp_state *ps, iris_pattern *p)
     case T_WRINKLES: p->kind = IRIS_PAT_WRINKLES; break;
     case T_SQUARE: p->kind = IRIS_PAT_SQUARE; break;
     case T_TRIANGULAR: p->kind = IRIS_PAT_TRIANGULAR; break;
-    case T_TILING: p->kind = IRIS_PAT_TILING; p->params[0] = pp_float(ps); break;
+    case T_TILING:
+        p->kind = IRIS_PAT_TILING;
+        p->params[0] = pp_float(ps);
+        /* POV-Ray truncates, then refuses what is not one of its 27 */
+        if (!(p->params[0] >= 1.0 && p->params[0] < 28.0))
+            pp_error(ps, &at, "tiling number must be between 1 and 27");
+        break;
     case T_PAVEMENT: p->kind = IRIS_PAT_PAVEMENT; p->params[0] = 3; p->params[1] = 1; break;
     case T_SLOPE: {
         /* slope VECTOR
@@ -781,7 +809,7 @@ static bool pattern_mod(pp_state *ps, iris_pattern *p)
     case T_UV_MAPPING:
         p->uv_mapping = true;
         return true;
-    case T_MAGNET: case T_PRECOMPUTE:
+    case T_PRECOMPUTE:
         pp_warn_once(ps, &at, at.kind, lex_keyword_name(at.kind));
         pp_float(ps);
         return true;
@@ -1287,7 +1315,10 @@ static void default_map(pp_state *ps, iris_pigment *p)
     case IRIS_PAT_BOZO: m = &bozo_map; break;
     case IRIS_PAT_BRICK: m = &brick_map; break;
     case IRIS_PAT_WOOD: m = &wood_map; break;
-    case IRIS_PAT_MANDEL: m = &mandel_map; break;
+    case IRIS_PAT_MANDEL: /* magnet mandel (params[7]) has the grey map */
+        if (p->pattern.params[7] == 0)
+            m = &mandel_map;
+        break;
     case IRIS_PAT_RADIAL: m = &radial_map; break;
     case IRIS_PAT_AGATE: m = &agate_map; break;
     case IRIS_PAT_MARBLE: m = &marble_map; break;

@@ -766,20 +766,24 @@ static void mesh1(pp_state *ps, iris_object *o)
             iris_vec3 *nv = pp_alloc(ps, (size_t)nc * 3 * sizeof *nv);
             iris_vec3 *nn = pp_alloc(ps, (size_t)nc * 3 * sizeof *nn);
             int32_t *ti = pp_alloc(ps, (size_t)nc * sizeof *ti);
+            iris_vec2 *nu = pp_alloc(ps, (size_t)nc * 3 * sizeof *nu);
             if (cap) {
                 memcpy(nv, m->vertices, (size_t)cap * 3 * sizeof *nv);
                 memcpy(nn, m->normals, (size_t)cap * 3 * sizeof *nn);
                 memcpy(ti, m->tri_texture, (size_t)cap * sizeof *ti);
+                memcpy(nu, m->uvs, (size_t)cap * 3 * sizeof *nu);
             }
             m->vertices = nv;
             m->normals = nn;
             m->tri_texture = ti;
+            m->uvs = nu;
             cap = nc;
         }
         int t = m->n_triangles++;
         for (int i = 0; i < 3; i++) {
             m->vertices[3 * t + i] = p[i];
             m->normals[3 * t + i] = smooth ? n[i] : v3(0, 0, 0);
+            m->uvs[3 * t + i] = (iris_vec2){ 0, 0 }; /* POV-Ray's default */
         }
         m->tri_texture[t] = -1;
         for (;;) {
@@ -799,9 +803,14 @@ static void mesh1(pp_state *ps, iris_object *o)
                 m->tri_texture[t] = m->n_textures;
                 m->textures[m->n_textures++] = tx;
             } else if (ps->tok.kind == T_UV_VECTORS) {
-                pp_vector2(ps); pp_accept(ps, T_COMMA);
-                pp_vector2(ps); pp_accept(ps, T_COMMA);
-                pp_vector2(ps);
+                /* kept (mesh1_finish): uv_mapping and the mesh camera's
+                ** distribution 3 read them; n_uvs marks "some given" */
+                for (int i = 0; i < 3; i++) {
+                    if (i)
+                        pp_accept(ps, T_COMMA);
+                    m->uvs[3 * t + i] = pp_vector2(ps);
+                }
+                m->n_uvs = 1;
             } else {
                 pp_unexpected(ps, &ps->tok, "a mesh triangle");
             }
@@ -827,6 +836,12 @@ static void mesh1_finish(pp_state *ps, iris_object *o)
         m->tri_normals = m->tri_vertices;
     } else {
         m->normals = NULL;
+    }
+    if (m->n_uvs > 0) {
+        m->n_uvs = 3 * n;
+        m->tri_uvs = m->tri_vertices;
+    } else {
+        m->uvs = NULL;
     }
     bool any_tex = false;
     for (int i = 0; i < n; i++)

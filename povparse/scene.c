@@ -58,57 +58,83 @@ static void add_fog(pp_state *ps, iris_fog *f)
 ** Items are applied in POV-Ray's order whatever order they are written
 ** in: right, direction, angle, up, sky, location, look_at; then the
 ** transforms (semantics §3.8). */
-/* mesh_camera { rays_per_pixel, distribution [smooth] mesh... }: parsed
-** so that the scene parses, but not rendered (scene.h has no camera made
-** of a mesh): the camera keeps its other settings, with a warning. */
-static void mesh_camera(pp_state *ps, const pp_token *at)
+/*
+** mesh_camera { RAYS_PER_PIXEL DISTRIBUTION [MAX_DISTANCE]
+**               (mesh {...} | mesh2 {...})+ [smooth] }
+** POV-Ray's Parse_Mesh_Camera: rays_per_pixel >= 1, distribution 0..3,
+** 2 and 3 with one ray per pixel, distribution 0 with at least as many
+** meshes as rays, smooth only with distribution 3; no commas between
+** the numbers (POV-Ray reads three floats). The meshes stay out
+** of the scene (src/render/meshcam.c renders from them).
+*/
+static void mesh_camera(pp_state *ps, iris_camera *c, const pp_token *at)
 {
-    pp_warning(ps, at, "mesh_camera is not rendered: the camera keeps its "
-               "other settings");
     pp_expect(ps, T_LBRACE, "'{' after mesh_camera");
-    pp_int(ps);
-    pp_accept(ps, T_COMMA);
-    int dist = pp_int(ps);
-    if (dist < 0 || dist > 3)
+    c->kind = IRIS_CAM_MESH;
+    c->mesh_rays_per_pixel = pp_int(ps);
+    if (c->mesh_rays_per_pixel < 1)
+        pp_error(ps, at, "mesh_camera rays per pixel must be at least 1");
+    c->mesh_distribution = pp_int(ps);
+    if (c->mesh_distribution < 0 || c->mesh_distribution > 3)
         pp_error(ps, at, "mesh_camera distribution type must be 0 to 3");
+    if (c->mesh_distribution >= 2 && c->mesh_rays_per_pixel != 1)
+        pp_error(ps, at, "mesh_camera rays per pixel must be 1 for "
+                 "distribution 2 or 3");
+    c->mesh_max_distance = 0;
+    pp_next(ps);
+    pp_unget(ps);
+    if (pp_starts_expr(ps)) {
+        pp_token dt = ps->tok;
+        c->mesh_max_distance = pp_float(ps);
+        /* POV-Ray ends the eye ray there; trace.c has one distance limit
+        ** for all rays, so iris keeps that one and says so */
+        if (c->mesh_max_distance > 0)
+            pp_warning(ps, &dt, "mesh_camera maximum ray distance is not "
+                       "rendered: eye rays are not cut short");
+    }
+    int n = 0, cap = 0;
+    iris_object **meshes = NULL;
     for (;;) {
         pp_next(ps);
-        if (ps->tok.kind == T_RBRACE)
-            return;
-        if (ps->tok.kind == T_SMOOTH)
-            continue;
         pp_token ot = ps->tok;
-        if (ot.kind == T_MESH) {
-            /* mesh { MESH_IDENTIFIER [transformations] }, the form
-            ** POV-Ray's mesh_camera documents */
-            pp_next(ps);
-            pp_token lb = ps->tok;
-            if (lb.kind != T_LBRACE)
-                pp_unexpected(ps, &lb, "mesh");
-            pp_next(ps);
-            if (ps->tok.kind == T_IDENT && ps->tok.val.kind == V_OBJECT) {
-                for (;;) {
-                    pp_next(ps);
-                    if (ps->tok.kind == T_RBRACE)
-                        break;
-                    iris_transform x;
-                    if (!pp_transform_item(ps, &x))
-                        pp_unexpected(ps, &ps->tok, "mesh_camera mesh");
-                }
-                continue;
-            }
-            /* not that form: push back 'mesh' '{' and the token read */
-            pp_unget(ps);
-            ps->tok = lb;
-            pp_unget(ps);
-            ps->tok = ot;
-            pp_unget(ps);
-        } else {
-            pp_unget(ps);
-        }
-        if (!pp_object(ps))
+        if (ot.kind != T_MESH && ot.kind != T_MESH2)
+            break;
+        pp_unget(ps);
+        iris_object *o = pp_object(ps);
+        if (!o || o->kind != IRIS_OBJ_MESH)
             pp_unexpected(ps, &ot, "mesh_camera");
+        if (n == cap) {
+            cap = cap ? cap * 2 : 4;
+            iris_object **g = pp_alloc(ps, (size_t)cap * sizeof *g);
+            for (int i = 0; i < n; i++)
+                g[i] = meshes[i];
+            meshes = g;
+        }
+        meshes[n++] = o;
     }
+    c->mesh_smooth = ps->tok.kind == T_SMOOTH;
+    if (c->mesh_smooth) {
+        if (c->mesh_distribution != 3)
+            pp_error(ps, &ps->tok, "mesh_camera smooth needs distribution 3");
+        pp_next(ps);
+    }
+    if (ps->tok.kind != T_RBRACE)
+        pp_unexpected(ps, &ps->tok, "mesh_camera");
+    if (n == 0)
+        pp_error(ps, at, "mesh_camera needs a mesh or mesh2");
+    if (c->mesh_distribution == 0 && c->mesh_rays_per_pixel > n)
+        pp_error(ps, at, "mesh_camera rays per pixel must not exceed the "
+                 "number of meshes for distribution 0");
+    if (c->mesh_distribution == 3) {
+        if (n > 1)
+            pp_warning(ps, at, "mesh_camera distribution 3 uses only the "
+                       "first mesh");
+        if (!meshes[0]->u.mesh.uvs || !meshes[0]->u.mesh.tri_uvs)
+            pp_error(ps, at, "mesh_camera distribution 3 needs a mesh with "
+                     "uv coordinates");
+    }
+    c->n_meshes = n;
+    c->meshes = meshes;
 }
 
 iris_camera *pp_camera(pp_state *ps, const iris_camera *base)
@@ -159,7 +185,7 @@ iris_camera *pp_camera(pp_state *ps, const iris_camera *base)
                 pp_error(ps, &at, "cylinder camera type must be 1 to 4");
             break;
         case T_MESH_CAMERA:
-            mesh_camera(ps, &at);
+            mesh_camera(ps, c, &at);
             break;
         case T_LOCATION: loc = pp_vector(ps); has_loc = true; break;
         case T_DIRECTION:

@@ -479,7 +479,8 @@ typedef struct iris_light {
 enum iris_camera_kind { IRIS_CAM_PERSPECTIVE = 0, IRIS_CAM_ORTHOGRAPHIC,
                         IRIS_CAM_FISHEYE, IRIS_CAM_PANORAMIC,
                         IRIS_CAM_ULTRA_WIDE, IRIS_CAM_OMNIMAX,
-                        IRIS_CAM_CYLINDER, IRIS_CAM_SPHERICAL };
+                        IRIS_CAM_CYLINDER, IRIS_CAM_SPHERICAL,
+                        IRIS_CAM_MESH };
 
 /*
 ** The resolved camera. A primary ray for pixel (x, y) of W x H is, for the
@@ -503,6 +504,15 @@ typedef struct iris_camera {
     iris_vec3 focal_point;
     double focal_distance;
     double confidence, variance;
+    /* mesh_camera { rays_per_pixel, distribution [max_distance] meshes
+    ** [smooth] } (IRIS_CAM_MESH, src/render/meshcam.c): the meshes are
+    ** IRIS_OBJ_MESH objects not in the scene's object list */
+    int mesh_rays_per_pixel;   /* >= 1 */
+    int mesh_distribution;     /* 0..3 */
+    double mesh_max_distance;  /* 0 = none; parsed, warned, not used */
+    bool mesh_smooth;          /* distribution 3: interpolated normals */
+    int n_meshes;
+    iris_object **meshes;
 } iris_camera;
 
 enum iris_fog_kind { IRIS_FOG_CONSTANT = 1, IRIS_FOG_GROUND = 2 };

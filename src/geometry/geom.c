@@ -383,8 +383,8 @@ const char *geom_validate(const iris_object *o)
         return NULL;
     case IRIS_OBJ_JULIA_FRACTAL:
         if (!geom_julia_ok(o))
-            return "julia_fractal: only quaternion sqr and cube are "
-                   "supported, with a slice that is not parallel to w";
+            return "julia_fractal: quaternion supports only sqr and "
+                   "cube, and the slice must not be parallel to w";
         return NULL;
     case IRIS_OBJ_OVUS:
         return geom_ovus_check(o);

@@ -173,7 +173,7 @@ void geom_isosurface_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
 bool geom_isosurface_inside(const iris_object *o, vec3 p);
 
 
-/* julia_fractal (quaternion sqr and cube). */
+/* julia_fractal (quaternion and hypercomplex). */
 bool geom_julia_ok(const iris_object *o);
 bool geom_julia_inside(const iris_object *o, vec3 p);
 double geom_julia_radius(const iris_object *o);

@@ -1,6 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /*
-** julia.c: POV-Ray's quaternion julia_fractal (sqr and cube).
+** julia.c: POV-Ray's julia_fractal: quaternion (sqr, cube) and
+** hypercomplex (sqr, cube, reciprocal and the complex functions, whose
+** algebra is in julia_hcx.c).
 **
 ** A 3-D point p is lifted to the quaternion (x, y, z, w) on the slice
 ** hyperplane slice·q = distance, and iterated q <- q² + c (or q³ + c). It
@@ -11,12 +13,21 @@
 ** 1e-7, which a secondary ray started accel_epsilon() away would find
 ** again). Normals are the gradient of |q_n|² through the iteration's
 ** Jacobian, as POV-Ray computes them.
+**
+** Hypercomplex sets follow POV-Ray's hcmplx.cpp: bounding radius 4, exit
+** value 16, a step |q|²/(2 |n·d|) from the normal n along the ray d when
+** it lies between 1 and 30 minimum steps (the minimum otherwise), and
+** normals from POV-Ray's derivative product (julia_hcx.h), taken at the
+** inside end of the crossing as POV-Ray takes them.
 */
 #include "config.h"
 
 #include "geometry/geom.h"
+#include "geometry/julia_hcx.h"
 
 #include <math.h>
+#include <stdlib.h>
+#include <string.h>
 
 /* Steps one ray may take: a bad precision cannot stall a render */
 #define MAX_STEPS 100000
@@ -35,6 +46,9 @@ struct jset {
     double exit2, radius, step_min;
     int iters;
     bool cube;
+    bool hcx;    /* hypercomplex algebra */
+    int fn;      /* enum iris_julia_fn */
+    double e[2]; /* pwr's exponent */
 };
 
 static bool setup(const iris_object *o, struct jset *j)
@@ -60,9 +74,19 @@ static bool setup(const iris_object *o, struct jset *j)
         return false;
     double cn = sqrt(j->c[0] * j->c[0] + j->c[1] * j->c[1] +
                      j->c[2] * j->c[2] + j->c[3] * j->c[3]);
-    /* POV-Ray: radius 1 + |c| capped at 2, with a 1e-7 margin */
-    j->radius = fmin(2, 1 + cn + 1e-7);
-    j->exit2 = j->radius * j->radius + 1e-7;
+    j->hcx = o->u.julia.type == 1;
+    j->fn = o->u.julia.fn;
+    j->e[0] = d[6];
+    j->e[1] = d[7];
+    if (j->hcx) {
+        /* POV-Ray: a fixed radius 4 and exit value 16 */
+        j->radius = 4;
+        j->exit2 = 16;
+    } else {
+        /* POV-Ray: radius 1 + |c| capped at 2, with a 1e-7 margin */
+        j->radius = fmin(2, 1 + cn + 1e-7);
+        j->exit2 = j->radius * j->radius + 1e-7;
+    }
     j->iters = o->u.julia.iterations > 0 ? o->u.julia.iterations : 20;
     j->step_min = o->u.julia.precision > 0 ? 1 / o->u.julia.precision
                                            : 1.0 / 20;
@@ -91,14 +115,21 @@ static void qmul(const double a[4], const double b[4], double r[4])
         r[k] = t[k];
 }
 
+static bool hcx_run(const struct jset *j, vec3 p, vec3 d, double *dist,
+                    double (*z)[4], long *work);
+
 /*
 ** Iterates from 'p'. Returns whether the orbit stays bounded; '*dist'
 ** (when not NULL) receives POV-Ray's lower bound on the distance to the
-** set for escaping orbits (the minimum step otherwise). '*work' (when not
-** NULL) grows by the iterations spent.
+** set for escaping orbits (the minimum step otherwise; hypercomplex sets
+** step along the unit direction 'd'). '*work' (when not NULL) grows by
+** the iterations spent.
 */
-static bool iterate(const struct jset *j, vec3 p, double *dist, long *work)
+static bool iterate(const struct jset *j, vec3 p, vec3 d, double *dist,
+                    long *work)
 {
+    if (j->hcx)
+        return hcx_run(j, p, d, dist, NULL, work);
     double q[4], normp = 1;
     lift(j, p, q);
     double pw = 1;
@@ -131,6 +162,190 @@ static bool iterate(const struct jset *j, vec3 p, double *dist, long *work)
     if (dist)
         *dist = j->step_min;
     return true;
+}
+
+/*
+** POV-Ray's iteration stack z_0 .. z_iters. POV-Ray keeps one per thread
+** and its normal reads all of it, also rows an early escape left from
+** earlier calls; for 3.7's function typo (hcx_run) that decides the
+** normal, so each ray replays POV-Ray's sequence of calls on a stack of
+** its own. It starts zeroed, not with the previous ray's rows as
+** POV-Ray's does: renders stay independent of thread order (a test render
+** of a hypercomplex exp set came out identical either way).
+*/
+#define HSTACK_ROWS 65
+
+struct hstack {
+    double (*z)[4];
+    double rows[HSTACK_ROWS][4];
+};
+
+static bool hstack_init(struct hstack *s, int iters)
+{
+    memset(s->rows, 0, sizeof s->rows);
+    s->z = iters < HSTACK_ROWS ? s->rows
+                               : calloc((size_t)iters + 1, sizeof *s->z);
+    return s->z != NULL;
+}
+
+static void hstack_fini(struct hstack *s)
+{
+    if (s->z != s->rows)
+        free(s->z);
+}
+
+/*
+** POV-Ray's hypercomplex normal from the stack: the derivative product
+** z_0 · factor(z_1) ... factor(z_(nmax-1)) against z_nmax · pw.
+*/
+static vec3 hcx_stack_normal(const struct jset *j, double (*z)[4], int nmax,
+                             double pw)
+{
+    double dp[4], n[4], g[3];
+    for (int k = 0; k < 4; k++) {
+        dp[k] = z[0][k];
+        n[k] = z[nmax][k] * pw;
+    }
+    for (int i = 1; i < nmax; i++) {
+        double f[4];
+        hcx_normal_factor(j->fn, j->e, z[i], f);
+        hcx_mul(dp, f, dp);
+    }
+    hcx_normal(dp, n, g);
+    return v3(g[0], g[1], g[2]);
+}
+
+/*
+** The hypercomplex iteration from 'p' into the stack 'z' (NULL: a local
+** one), as iterate() below. With 'dist' it is POV-Ray's stepping
+** iteration: '*dist' gets the step |q|²/(2|n·d|) along the unit
+** direction 'd' when that lies between 1 and 30 minimum steps.
+*/
+static bool hcx_run(const struct jset *j, vec3 p, vec3 d, double *dist,
+                    double (*z)[4], long *work)
+{
+    struct hstack own;
+    if (!z) {
+        if (!hstack_init(&own, j->iters))
+            return false;
+        bool in = hcx_run(j, p, d, dist, own.z, work);
+        hstack_fini(&own);
+        return in;
+    }
+    /*
+    ** POV-Ray 3.7's plain iteration for the complex functions (its inside
+    ** test, bisection and normal; not the stepping one) starts from
+    ** z = y, a typo fixed only in 3.8 (Iteration_HCompl_Func): iris
+    ** renders 3.7's surfaces and normals.
+    */
+    bool fn = j->fn != IRIS_JULIA_SQR && j->fn != IRIS_JULIA_CUBE &&
+              j->fn != IRIS_JULIA_RECIPROCAL;
+    if (fn && !dist)
+        p.z = p.y;
+    lift(j, p, z[0]);
+    for (int i = 1; i <= j->iters; i++) {
+        const double *q = z[i - 1];
+        double n2 = q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3];
+        if (n2 > j->exit2) {
+            if (work)
+                *work += i;
+            if (dist) {
+                /* sqr's normal carries POV-Ray's 2^n: it scales the step */
+                double pw = j->fn == IRIS_JULIA_SQR
+                                ? ldexp(1, i > 1 ? i - 1 : 1) : 1;
+                vec3 g = hcx_stack_normal(j, z, i - 1, pw);
+                double step = v3_dot(g, d);
+                *dist = j->step_min;
+                if (step < -1e-8) {
+                    step *= -2;
+                    if (n2 > j->step_min * step &&
+                        n2 < 30 * j->step_min * step)
+                        *dist = n2 / step;
+                }
+            }
+            return false;
+        }
+        double r[4];
+        hcx_map(j->fn, j->e, q, r);
+        for (int k = 0; k < 4; k++)
+            z[i][k] = r[k] + j->c[k];
+    }
+    if (work)
+        *work += j->iters;
+    if (dist)
+        *dist = j->step_min;
+    return true;
+}
+
+/*
+** A ray through a hypercomplex set, as POV-Ray's Fractal::All_Intersections
+** traces it: step until inside/outside flips, bisect to 1e-7, take the
+** normal from the stack the last plain iteration left, and start a ray
+** that begins inside 2e-7 further on. 'a'..'b' is the span inside the
+** bounding sphere along the unit direction 'd' ('dl' = |rd|).
+*/
+static void hcx_hits(const struct jset *j, vec3 ro, vec3 d, double dl,
+                     double a, double b, double t0, double t1,
+                     struct isect_list *out)
+{
+    const double tol = 1e-7;
+    struct hstack st;
+    if (b < tol || !hstack_init(&st, j->iters))
+        return;
+    long work = 0;
+    double depth = fmax(a, tol), dist, dist_next = 0;
+    vec3 next = v3_madd(ro, d, depth);
+    bool cur = hcx_run(j, next, d, &dist, st.z, &work), nxt, last = false;
+    if (cur) {
+        next = v3_madd(next, d, 2 * tol);
+        depth += 2 * tol;
+        cur = hcx_run(j, next, d, &dist, st.z, &work);
+    }
+    while (depth < b && work < MAX_WORK) {
+        vec3 ip;
+        for (;;) {
+            dist = fmax(dist, j->step_min);
+            depth += dist;
+            if (depth > b || work >= MAX_WORK)
+                goto done;
+            ip = next;
+            next = v3_madd(next, d, dist);
+            nxt = hcx_run(j, next, d, &dist_next, st.z, &work);
+            if (nxt != cur) {
+                depth -= dist;
+                break;
+            }
+            dist = dist_next;
+        }
+        while (dist > tol) {
+            dist *= 0.5;
+            vec3 mid = v3_madd(ip, d, dist);
+            last = hcx_run(j, mid, d, NULL, st.z, &work);
+            if (last == cur) {
+                ip = mid;
+                depth += dist;
+                if (depth > b)
+                    goto done;
+            }
+        }
+        if (!cur) {
+            ip = v3_madd(ip, d, dist);
+            depth += dist;
+            hcx_run(j, ip, d, NULL, st.z, &work);
+        } else if (last != cur) {
+            hcx_run(j, ip, d, NULL, st.z, &work);
+        }
+        vec3 n = hcx_stack_normal(j, st.z, j->iters, 1);
+        if (!(v3_len2(n) > 0) || !isfinite(v3_len2(n)))
+            n = v3_scale(d, -1); /* degenerate: face the ray */
+        if (depth > t0 * dl && depth < t1 * dl)
+            isect_push(out, depth / dl, n, 0, 0);
+        /* POV-Ray carries on from the step's far end */
+        dist = dist_next;
+        cur = nxt;
+    }
+done:
+    hstack_fini(&st);
 }
 
 /* Gradient of |q_n|² with respect to p, through the Jacobian of the map. */
@@ -189,9 +404,13 @@ static vec3 julia_normal(const struct jset *j, vec3 p)
 bool geom_julia_ok(const iris_object *o)
 {
     struct jset j;
-    return o->u.julia.type == 0 &&
-           (o->u.julia.fn == IRIS_JULIA_SQR ||
-            o->u.julia.fn == IRIS_JULIA_CUBE) &&
+    /* POV-Ray rejects quaternion functions other than sqr and cube */
+    bool quat_fn = o->u.julia.fn == IRIS_JULIA_SQR ||
+                   o->u.julia.fn == IRIS_JULIA_CUBE;
+    bool fn_ok = o->u.julia.fn >= IRIS_JULIA_SQR &&
+                 o->u.julia.fn <= IRIS_JULIA_PWR;
+    return ((o->u.julia.type == 0 && quat_fn) ||
+            (o->u.julia.type == 1 && fn_ok)) &&
            setup(o, &j);
 }
 
@@ -200,7 +419,7 @@ bool geom_julia_inside(const iris_object *o, vec3 p)
     struct jset j;
     if (!setup(o, &j) || v3_len2(p) > j.radius * j.radius)
         return false;
-    return iterate(&j, p, NULL, NULL);
+    return iterate(&j, p, v3(0, 0, 0), NULL, NULL);
 }
 
 double geom_julia_radius(const iris_object *o)
@@ -225,20 +444,24 @@ void geom_julia_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
     double a = fmax(tc - sqrt(h2), t0 * dl), b = fmin(tc + sqrt(h2), t1 * dl);
     if (!(a < b))
         return;
+    if (j.hcx) {
+        hcx_hits(&j, ro, d, dl, a, b, t0, t1, out);
+        return;
+    }
     double t = a, dist;
     long work = 0;
-    bool in = iterate(&j, v3_madd(ro, d, t), &dist, &work);
+    bool in = iterate(&j, v3_madd(ro, d, t), d, &dist, &work);
     for (int step = 0; step < MAX_STEPS && t < b && work < MAX_WORK;
          step++) {
         double tn = fmin(t + fmax(dist, j.step_min), b), dn;
-        bool inn = iterate(&j, v3_madd(ro, d, tn), &dn, &work);
+        bool inn = iterate(&j, v3_madd(ro, d, tn), d, &dn, &work);
         if (inn != in) {
             /* Bisect to adjacent doubles (at most ~60 halvings) */
             double lo = t, hi = tn;
             for (int k = 0; k < 80 && hi - lo > 2e-16 * fmax(fabs(lo),
                                                            fabs(hi)); k++) {
                 double m = 0.5 * (lo + hi);
-                if (iterate(&j, v3_madd(ro, d, m), NULL, &work) == in)
+                if (iterate(&j, v3_madd(ro, d, m), d, NULL, &work) == in)
                     lo = m;
                 else
                     hi = m;

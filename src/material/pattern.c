@@ -22,8 +22,10 @@
 #include <stdlib.h>
 
 #include "iris/fn.h"
+#include "material/fractal_pattern.h"
 #include "material/mat_internal.h"
 #include "material/noise.h"
+#include "material/tiling.h"
 #include "math/transform.h"
 
 #define PAT_EPSILON 1e-10
@@ -792,6 +794,16 @@ static double fractal(const iris_pattern *pat, vec3 p, bool julia)
     double ifac = given ? pat->params[1] : 1.0;
     double efac = given ? pat->params[3] : 1.0;
     int it_max = pat->iterations > 0 ? pat->iterations : 1;
+    if (pat->params[7] == 1 || pat->params[7] == 2) {
+        /* magnet 1/2 (fractal_pattern.c) */
+        int k;
+        double ma, mb, m2;
+        if (pat_magnet((int)pat->params[7], julia, p.x, p.y,
+                       pat->complex_c.u, pat->complex_c.v, it_max, &k, &ma,
+                       &mb, &m2))
+            return fractal_exterior(etype, efac, k, it_max, ma, mb);
+        return fractal_interior(itype, ifac, ma, mb, m2);
+    }
     int n = (int)lround(pat->params[6]);
     if (n < 2 || n > 33)
         n = 2;
@@ -900,6 +912,7 @@ static double raw_value(const struct mat_ctx *ctx, const iris_pattern *pat,
         return 0.297 * c.r + 0.589 * c.g + 0.114 * c.b;
     }
     case IRIS_PAT_SLOPE: return slope(pat, p, pt);
+    case IRIS_PAT_TILING: return pattern_tiling(pat->params[0], p);
     default:
         return 0.0;
     }

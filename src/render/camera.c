@@ -11,6 +11,7 @@
 #include <math.h>
 
 #include "render/camera.h"
+#include "render/meshcam.h"
 
 /* The unit vector 'v', or 'v' itself when it has no length. */
 static vec3 unit_or_self(vec3 v)
@@ -135,6 +136,12 @@ bool camera_ray(const iris_camera *cam, int width, int height, double x,
 bool camera_ray_raw(const iris_camera *cam, int width, int height, double x,
                     double y, ray *r, vec3 *raw)
 {
+    if (cam->kind == IRIS_CAM_MESH) {
+        if (!meshcam_ray(cam, width, height, x, y, 0, r))
+            return false;
+        *raw = r->d;
+        return true;
+    }
     double w = width > 0 ? width : 1, h = height > 0 ? height : 1;
     /* POV-Ray shifts to the pixel's corner first, then maps to [-.5, .5]. */
     x += 0.5;
@@ -194,5 +201,17 @@ bool camera_ray_raw(const iris_camera *cam, int width, int height, double x,
         return false;
     *raw = d;
     r->d = v3_scale(d, 1.0 / len);
+    return true;
+}
+
+bool camera_ray_numbered(const iris_camera *cam, int width, int height,
+                         double x, double y, int ray_number, ray *r,
+                         vec3 *raw)
+{
+    if (cam->kind != IRIS_CAM_MESH)
+        return camera_ray_raw(cam, width, height, x, y, r, raw);
+    if (!meshcam_ray(cam, width, height, x, y, ray_number, r))
+        return false;
+    *raw = r->d;
     return true;
 }

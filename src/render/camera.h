@@ -31,4 +31,11 @@ bool camera_ray(const iris_camera *cam, int width, int height, double x,
 bool camera_ray_raw(const iris_camera *cam, int width, int height, double x,
                     double y, ray *r, vec3 *raw);
 
+/* camera_ray_raw() for ray 'ray_number' of the pixel: the mesh camera
+** (meshcam.h) traces rays_per_pixel rays per pixel, each from its own
+** face; the other cameras ignore the number. */
+bool camera_ray_numbered(const iris_camera *cam, int width, int height,
+                         double x, double y, int ray_number, ray *r,
+                         vec3 *raw);
+
 #endif

@@ -103,8 +103,8 @@ static bool trace_one(struct job *j, struct trace_ctx *c, double x,
     rgb[3] = 1.0;              /* no ray: transparent, as POV-Ray has it */
     c->spectral = false;
     vec3 raw;
-    if (!camera_ray_raw(&j->scene->camera, j->opts->width, j->opts->height,
-                        x, y, &r.r, &raw))
+    if (!camera_ray_numbered(&j->scene->camera, j->opts->width,
+                             j->opts->height, x, y, nr, &r.r, &raw))
         return false;
     if (j->blur) {
         focal_blur_ray(&j->fb, &j->scene->camera, bx, by, nr, raw, &r.r);
@@ -130,12 +130,42 @@ static bool trace_one(struct job *j, struct trace_ctx *c, double x,
     return c->spectral;
 }
 
+/* A mesh camera's sample (POV-Ray's TracePixel): the mean of the
+** rays_per_pixel rays that have a face; none gives transparent black. */
+static bool meshcam_sample(struct job *j, struct trace_ctx *c, double x,
+                           double y, double rgb[NCH])
+{
+    const iris_camera *cam = &j->scene->camera;
+    double sum[NCH] = { 0, 0, 0, 0 };
+    int n = 0;
+    bool spectral = false;
+    for (int nr = 0; nr < cam->mesh_rays_per_pixel; nr++) {
+        ray probe;
+        vec3 raw;
+        if (!camera_ray_numbered(cam, j->opts->width, j->opts->height, x, y,
+                                 nr, &probe, &raw))
+            continue;
+        double col[NCH];
+        spectral |= trace_one(j, c, x, y, nr, x, y, col);
+        for (int k = 0; k < NCH; k++)
+            sum[k] += col[k];
+        n++;
+    }
+    for (int k = 0; k < NCH; k++)
+        rgb[k] = n ? sum[k] / n : 0.0;
+    if (!n)
+        rgb[3] = 1.0;
+    return spectral;
+}
+
 /* The image sample at (x, y): one pinhole ray, or POV-Ray's focal blur
 ** loop (focalblur.h): batches of blur rays, each at its own sub-pixel
 ** position, until the confidence test passes or blur_samples are in. */
 static bool trace_sample(struct job *j, struct trace_ctx *c, double x,
                          double y, double rgb[NCH])
 {
+    if (!j->blur && j->scene->camera.kind == IRIS_CAM_MESH)
+        return meshcam_sample(j, c, x, y, rgb);
     if (!j->blur)
         return trace_one(j, c, x, y, 0, x, y, rgb);
     const struct focal_blur *fb = &j->fb;
@@ -561,7 +591,8 @@ enum iris_status eyepass_run(const struct tracer *tr,
     eye_aa_gamma_init(&j.gam, opts->aa_gamma);
     /* POV-Ray clips the jitter amount to [0, 1] */
     j.jitter = opts->jitter ? fmin(fmax(opts->jitter_amount, 0.0), 1.0) : 0.0;
-    j.ortho = scene->camera.kind == IRIS_CAM_ORTHOGRAPHIC;
+    j.ortho = scene->camera.kind == IRIS_CAM_ORTHOGRAPHIC ||
+              scene->camera.kind == IRIS_CAM_MESH;
     if (threads < 1)
         threads = 1;
     trace_containing(tr, scene->camera.location, &j.cam_stack);

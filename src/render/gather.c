@@ -499,7 +499,8 @@ static void pre_tile(void *vctx, int64_t item, int thread)
     int ty1 = ty0 + TILE - 1 < j->y1 ? ty0 + TILE - 1 : j->y1;
     int s = j->step, half = s / 2;
     gather_tile_begin(c);
-    bool ortho = sc->camera.kind == IRIS_CAM_ORTHOGRAPHIC;
+    bool ortho = sc->camera.kind == IRIS_CAM_ORTHOGRAPHIC ||
+                 sc->camera.kind == IRIS_CAM_MESH;
     /* the samples lie on one grid over the window, whatever the tiles */
     for (int y = j->y0 + half; y <= ty1; y += s) {
         if (y < ty0)

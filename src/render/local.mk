@@ -1,6 +1,7 @@
 ## src/render: see the file headers. Appends to the core library.
 libiris_core_la_SOURCES += %reldir%/render.c \
-	%reldir%/camera.c %reldir%/camera.h %reldir%/light.c %reldir%/light.h \
+	%reldir%/camera.c %reldir%/camera.h \
+	%reldir%/meshcam.c %reldir%/meshcam.h %reldir%/light.c %reldir%/light.h \
 	%reldir%/query.h %reldir%/trace.c %reldir%/trace.h \
 	%reldir%/plan.c %reldir%/plan.h %reldir%/eyepass.c %reldir%/eyepass.h \
 	%reldir%/jitter.c %reldir%/jitter.h \

@@ -18,3 +18,9 @@ tests_unit_test_accel_LDADD = $(TEST_LDADD)
 tests_unit_test_accel_pov_SOURCES = tests/unit/test_accel_pov.c tests/testutil.h
 tests_unit_test_accel_pov_CFLAGS = $(TEST_CFLAGS)
 tests_unit_test_accel_pov_LDADD = $(TEST_LDADD)
+check_PROGRAMS += tests/unit/test_julia_hcx
+TESTS += tests/unit/test_julia_hcx
+tests_unit_test_julia_hcx_SOURCES = tests/unit/test_julia_hcx.c \
+	tests/testutil.h
+tests_unit_test_julia_hcx_CFLAGS = $(TEST_CFLAGS)
+tests_unit_test_julia_hcx_LDADD = $(TEST_LDADD)

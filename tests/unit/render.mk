@@ -5,6 +5,11 @@ TESTS += tests/unit/test_material
 tests_unit_test_material_SOURCES = tests/unit/test_material.c tests/testutil.h
 tests_unit_test_material_CFLAGS = $(TEST_CFLAGS)
 tests_unit_test_material_LDADD = $(TEST_LDADD)
+check_PROGRAMS += tests/unit/test_tiling
+TESTS += tests/unit/test_tiling
+tests_unit_test_tiling_SOURCES = tests/unit/test_tiling.c tests/testutil.h
+tests_unit_test_tiling_CFLAGS = $(TEST_CFLAGS)
+tests_unit_test_tiling_LDADD = $(TEST_LDADD)
 
 check_PROGRAMS += tests/unit/test_render
 TESTS += tests/unit/test_render
@@ -12,6 +17,13 @@ tests_unit_test_render_SOURCES = tests/unit/test_render.c \
 	tests/unit/render_double.c tests/unit/render_double.h tests/testutil.h
 tests_unit_test_render_CFLAGS = $(TEST_CFLAGS)
 tests_unit_test_render_LDADD = $(TEST_LDADD)
+
+check_PROGRAMS += tests/unit/test_meshcam
+TESTS += tests/unit/test_meshcam
+tests_unit_test_meshcam_SOURCES = tests/unit/test_meshcam.c \
+	tests/unit/parse_util.h tests/testutil.h
+tests_unit_test_meshcam_CFLAGS = $(TEST_CFLAGS)
+tests_unit_test_meshcam_LDADD = $(TEST_LDADD)
 
 check_PROGRAMS += tests/unit/test_media
 TESTS += tests/unit/test_media
@@ -32,3 +44,10 @@ EXTRA_DIST += tests/render/gather.sh tests/render/gather
 # +UA output against POV-Ray's (tests/render/alpha.sh)
 TESTS += tests/render/alpha.sh
 EXTRA_DIST += tests/render/alpha.sh tests/render/alpha
+# the magnet patterns (src/material/fractal_pattern.c)
+check_PROGRAMS += tests/unit/test_fractal_pattern
+TESTS += tests/unit/test_fractal_pattern
+tests_unit_test_fractal_pattern_SOURCES = tests/unit/test_fractal_pattern.c \
+	tests/testutil.h
+tests_unit_test_fractal_pattern_CFLAGS = $(TEST_CFLAGS)
+tests_unit_test_fractal_pattern_LDADD = $(TEST_LDADD)

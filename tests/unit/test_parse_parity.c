@@ -407,8 +407,9 @@ static void test_unknown_glass(void **state)
 
 /*
 ** What the renderer lacks is parsed and said, never dropped in silence:
-** a located warning for magnet, material_map and rainbow; none for the
-** fractal colouring types, which are rendered (test_fractal_colouring).
+** a located warning for material_map and rainbow; none for the fractal
+** colouring types and magnet, which are rendered (test_fractal_colouring,
+** test_pattern_fractal).
 */
 static void test_not_rendered_warnings(void **state)
 {
@@ -417,7 +418,7 @@ static void test_not_rendered_warnings(void **state)
         "sphere { 0, 1 pigment { mandel 20 exterior 1, 1 interior 0, 1 } }\n"
         "sphere { 0, 1 pigment { mandel 20 exterior 2, 1 } }\n"
         "sphere { 0, 1 pigment { julia <0.3, 0.5>, 20 interior 1, 1 } }\n"
-        "sphere { 0, 1 pigment { magnet 1 mandel 20 } }\n"
+        "sphere { 0, 1 pigment { magnet 2 julia <0.3, 0.5>, 20 } }\n"
         "sphere { 0, 1 texture { material_map { png \"m.png\" texture { } } } }\n"
         "rainbow { angle 42 width 5 distance 1e3 direction <0,0,1>"
         " color_map { [0 rgb 1] [1 rgb 0] } }\n";
@@ -427,7 +428,6 @@ static void test_not_rendered_warnings(void **state)
     assert_int_equal(iris_parse_string("t.pov", sdl, strlen(sdl), NULL, &sc,
                                        &d), IRIS_OK);
     const struct { unsigned line; const char *what; } want[] = {
-        { 4, "magnet is parsed but not rendered" },
         { 5, "material_map is parsed but not rendered" },
         { 6, "rainbow is parsed but not rendered" },
     };

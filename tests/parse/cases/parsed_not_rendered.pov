@@ -1,10 +1,10 @@
 // Features parsed (so that the scene parses) but not rendered, each with a
-// located warning: mesh_camera keeps the camera's other settings,
+// located warning (mesh_camera, once here, is rendered: meshcam.c),
 // density_file reads as 0 (its interpolate is accepted), transform
 // functions and vturbulence are evaluated.
 #version 3.7;
 camera {
-  mesh_camera { 1, 0 smooth mesh { triangle { <0,0,0>, <1,0,0>, <0,1,0> } } }
+  direction <0, 0, 1>
   location <0, 0, -1>
 }
 plane { y, 0 pigment { density_file df3 "missing.df3" interpolate 1 } }
