@@ -558,10 +558,20 @@ static void run_tile(void *ctx, int64_t item, int thread)
                           (double)done / (j->tiles_x * j->tiles_y));
 }
 
-
 static int clampi(int v, int lo, int hi)
 {
     return v < lo ? lo : v > hi ? hi : v;
+}
+
+bool eye_window(const iris_render_options *opts, int *x0, int *x1, int *y0,
+                int *y1)
+{
+    int w = opts->width, h = opts->height;
+    *x0 = opts->start_col > 0 ? clampi(opts->start_col - 1, 0, w - 1) : 0;
+    *x1 = opts->end_col > 0 ? clampi(opts->end_col - 1, 0, w - 1) : w - 1;
+    *y0 = opts->start_row > 0 ? clampi(opts->start_row - 1, 0, h - 1) : 0;
+    *y1 = opts->end_row > 0 ? clampi(opts->end_row - 1, 0, h - 1) : h - 1;
+    return *x1 >= *x0 && *y1 >= *y0;
 }
 
 enum iris_status eyepass_run(const struct tracer *tr,
@@ -575,13 +585,7 @@ enum iris_status eyepass_run(const struct tracer *tr,
     j.opts = opts;
     j.out = out;
     j.tracer = tr;
-    j.x0 = opts->start_col > 0 ? clampi(opts->start_col - 1, 0, opts->width - 1) : 0;
-    j.x1 = opts->end_col > 0 ? clampi(opts->end_col - 1, 0, opts->width - 1)
-                             : opts->width - 1;
-    j.y0 = opts->start_row > 0 ? clampi(opts->start_row - 1, 0, opts->height - 1) : 0;
-    j.y1 = opts->end_row > 0 ? clampi(opts->end_row - 1, 0, opts->height - 1)
-                             : opts->height - 1;
-    if (j.x1 < j.x0 || j.y1 < j.y0)
+    if (!eye_window(opts, &j.x0, &j.x1, &j.y0, &j.y1))
         return IRIS_EINVAL;
     j.tiles_x = (j.x1 - j.x0) / TILE + 1;
     j.tiles_y = (j.y1 - j.y0) / TILE + 1;

@@ -24,6 +24,14 @@ enum iris_status eyepass_run(const struct tracer *tr,
                              iris_image *out, iris_render_stats *stats);
 
 /*
+** The pixel window of 'opts' (POV-Ray's +SC/+EC/+SR/+ER, 1-based, 0 =
+** the image edge) as 0-based inclusive bounds clamped to the image.
+** Returns false when it is empty.
+*/
+bool eye_window(const iris_render_options *opts, int *x0, int *x1, int *y0,
+                int *y1);
+
+/*
 ** The colour POV-Ray's AA threshold compares: each channel, clipped at 0,
 ** to the power e = 1/aa_gamma (§4.1). eye_aa_gamma_apply() writes it to
 ** 'g' and returns a bound on sum |g - pow(c, e)|: 0 where it used pow()

@@ -49,6 +49,7 @@
 #include "config.h"
 
 #include "render/gather.h"
+#include "render/eyepass.h"
 
 #include <math.h>
 #include <stdatomic.h>
@@ -538,11 +539,6 @@ static void pre_tile(void *vctx, int64_t item, int thread)
     }
 }
 
-static int clampi(int v, int lo, int hi)
-{
-    return v < lo ? lo : v > hi ? hi : v;
-}
-
 static enum iris_status pretrace(struct gather *g, const struct tracer *t,
                                  const iris_render_options *opts, int threads,
                                  const struct interior_stack *cam)
@@ -553,13 +549,7 @@ static enum iris_status pretrace(struct gather *g, const struct tracer *t,
     j.t = t;
     j.opts = opts;
     j.cam = cam;
-    j.x0 = opts->start_col > 0 ? clampi(opts->start_col - 1, 0, opts->width - 1) : 0;
-    j.x1 = opts->end_col > 0 ? clampi(opts->end_col - 1, 0, opts->width - 1)
-                             : opts->width - 1;
-    j.y0 = opts->start_row > 0 ? clampi(opts->start_row - 1, 0, opts->height - 1) : 0;
-    j.y1 = opts->end_row > 0 ? clampi(opts->end_row - 1, 0, opts->height - 1)
-                             : opts->height - 1;
-    if (j.x1 < j.x0 || j.y1 < j.y0)
+    if (!eye_window(opts, &j.x0, &j.x1, &j.y0, &j.y1))
         return IRIS_OK;
     j.tiles_x = (j.x1 - j.x0) / TILE + 1;
     int64_t n_tiles = (int64_t)j.tiles_x * ((j.y1 - j.y0) / TILE + 1);
