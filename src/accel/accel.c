@@ -788,21 +788,7 @@ static bool finite_v(vec3 v)
 static double hit_epsilon(const struct accel *a, const struct anode *leaf,
                           vec3 p)
 {
-    if (!(leaf->size > 0))
-        return a->eps;
-    /* Comparisons, not fmax/fmin (library calls, once per hit); a NaN p
-    ** makes the hit rejected by the caller anyway */
-    double s = leaf->size, ax = fabs(p.x), ay = fabs(p.y), az = fabs(p.z);
-    if (ax > s)
-        s = ax;
-    if (ay > s)
-        s = ay;
-    if (az > s)
-        s = az;
-    double e = 1e-9 * s;
-    if (!(e > 1e-290))
-        e = 1e-290;
-    return e < a->eps ? e : a->eps;
+    return accel_hit_epsilon(leaf->size, p, a->eps);
 }
 
 /*

@@ -12,6 +12,7 @@
 #ifndef IRIS_ACCEL_ACCEL_H
 #define IRIS_ACCEL_ACCEL_H
 
+#include <math.h>
 #include <stdbool.h>
 #include <stddef.h>
 #include <stdio.h>
@@ -97,5 +98,31 @@ bool accel_object_bounds(const struct accel *a, const iris_object *obj,
 ** Start a ray that leaves hit 'h' with tmin = h.eps.
 */
 double accel_epsilon(const struct accel *a);
+
+/*
+** The offset for a ray leaving world point 'p' on a surface of world size
+** 'size' (0: unbounded), at most the scene's 'scene_eps': 1e-9 of the
+** larger of the size and |p| (accel.c explains why). Inline: it is asked
+** once per hit, and the photon fast path (src/photon/fastpath.c) must
+** give the same value to the bit.
+*/
+static inline double accel_hit_epsilon(double size, vec3 p, double scene_eps)
+{
+    if (!(size > 0))
+        return scene_eps;
+    /* Comparisons, not fmax/fmin (library calls); a NaN p makes the hit
+    ** rejected by the caller anyway */
+    double s = size, ax = fabs(p.x), ay = fabs(p.y), az = fabs(p.z);
+    if (ax > s)
+        s = ax;
+    if (ay > s)
+        s = ay;
+    if (az > s)
+        s = az;
+    double e = 1e-9 * s;
+    if (!(e > 1e-290))
+        e = 1e-290;
+    return e < scene_eps ? e : scene_eps;
+}
 
 #endif

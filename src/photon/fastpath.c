@@ -198,24 +198,6 @@ static bool finite_v(vec3 v)
     return isfinite(v.x) && isfinite(v.y) && isfinite(v.z);
 }
 
-/* accel.c hit_epsilon(). */
-static double hit_eps(const struct pfast *f, const struct pfast_prim *s,
-                      vec3 p)
-{
-    if (!(s->size > 0))
-        return f->eps;
-    double e = s->size, ax = fabs(p.x), ay = fabs(p.y), az = fabs(p.z);
-    if (ax > e)
-        e = ax;
-    if (ay > e)
-        e = ay;
-    if (az > e)
-        e = az;
-    e *= 1e-9;
-    if (!(e > 1e-290))
-        e = 1e-290;
-    return e < f->eps ? e : f->eps;
-}
 
 bool pfast_intersect(const void *ctx, const ray *r, double tmin, double tmax,
                      unsigned skip, struct hit *h)
@@ -257,7 +239,7 @@ bool pfast_intersect(const void *ctx, const ray *r, double tmin, double tmax,
     h->obj = h->top = o;
     h->texture = o->texture;
     h->interior = o->interior;
-    h->eps = hit_eps(f, best, h->p);
+    h->eps = accel_hit_epsilon(best->size, h->p, f->eps);
     return isfinite(h->t) && finite_v(h->p) && finite_v(h->n) &&
            v3_len2(h->n) > 0;
 }
