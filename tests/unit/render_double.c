@@ -9,6 +9,10 @@
 
 #include "render_double.h"
 
+#include <string.h>
+
+#include "render/trace.h"
+
 static bool skipped(const iris_object *o, unsigned skip)
 {
     return ((skip & ACCEL_SKIP_NO_IMAGE) && o->no_image) ||
@@ -95,4 +99,16 @@ void dbl_query(const struct dbl_scene *d, struct rquery *q)
     q->intersect = dbl_intersect;
     q->inside = dbl_inside;
     q->eps = 1e-6;
+}
+
+void dbl_shoot(const struct tracer *t, struct trace_ctx *c, vec3 o, vec3 d,
+               double rgb[3])
+{
+    struct tray r;
+    memset(&r, 0, sizeof r);
+    r.r.o = o;
+    r.r.d = v3_norm(d);
+    trace_containing(t, o, &r.st);
+    c->level = 0;
+    trace_ray(c, &r, 1.0, false, rgb);
 }

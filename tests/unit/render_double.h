@@ -22,4 +22,12 @@ struct dbl_scene {
 /* Fills 'q' to query 'd' (borrowed). */
 void dbl_query(const struct dbl_scene *d, struct rquery *q);
 
+struct tracer;
+struct trace_ctx;
+
+/* Traces one camera-like ray from 'o' along 'd' (normalised here),
+** starting in the interiors that contain 'o', into 'rgb'. */
+void dbl_shoot(const struct tracer *t, struct trace_ctx *c, vec3 o, vec3 d,
+               double rgb[3]);
+
 #endif

@@ -150,13 +150,7 @@ static void world_free(struct world *w)
 
 static void shoot(struct world *w, vec3 o, vec3 d, double rgb[3])
 {
-    struct tray r;
-    memset(&r, 0, sizeof r);
-    r.r.o = o;
-    r.r.d = v3_norm(d);
-    trace_containing(&w->tr, o, &r.st);
-    w->ctx.level = 0;
-    trace_ray(&w->ctx, &r, 1.0, false, rgb);
+    dbl_shoot(&w->tr, &w->ctx, o, d, rgb);
 }
 
 /* Beer-Lambert: a ray through the centre of a hollow absorbing sphere of
