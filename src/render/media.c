@@ -344,6 +344,29 @@ static void regular_sampling(const struct seg *s, struct interval *iv,
     }
 }
 
+/* The roots t1 <= t2 of a t^2 + 2 b t + c = 0 when its discriminant
+** b^2 - a c exceeds M_EPSILON (POV-Ray's test for a spot or cylinder
+** light's boundary), and where they lie along the light's axis: l = k2 +
+** t k1. */
+static bool axis_roots(double a, double b, double c, double k1, double k2,
+                       double *t1, double *t2, double *l1, double *l2)
+{
+    double d = b * b - a * c;
+    if (!(d > M_EPSILON))
+        return false;
+    d = sqrt(d);
+    *t1 = (-b + d) / a;
+    *t2 = (-b - d) / a;
+    if (*t1 > *t2) {
+        double tmp = *t1;
+        *t1 = *t2;
+        *t2 = tmp;
+    }
+    *l1 = k2 + *t1 * k1;
+    *l2 = k2 + *t2 * k1;
+    return true;
+}
+
 /* POV-Ray's ComputeSpotLightInterval: where the ray is inside the cone
 ** of spot light 'l' ('cos_falloff' the cone's cosine). */
 static bool spot_interval(const ray *r, const struct rlight *l, double *d1,
@@ -362,16 +385,8 @@ static bool spot_interval(const ray *r, const struct rlight *l, double *d1,
     double k3 = v3_dot(v1, r->d), k4 = v3_len2(v1);
     double a = 1.0 - k1 * k1 * m, b = k3 - k1 * k2 * m, c = k4 - k2 * k2 * m;
     if (a != 0.0) {
-        double d = b * b - a * c;
-        if (d > M_EPSILON) {
-            d = sqrt(d);
-            double t1 = (-b + d) / a, t2 = (-b - d) / a;
-            if (t1 > t2) {
-                double tmp = t1;
-                t1 = t2;
-                t2 = tmp;
-            }
-            double l1 = k2 + t1 * k1, l2 = k2 + t2 * k1;
+        double t1, t2, l1, l2;
+        if (axis_roots(a, b, c, k1, k2, &t1, &t2, &l1, &l2)) {
             if (l1 <= 0.0 && l2 <= 0.0)
                 return false;
             if (l1 <= 0.0 || l2 <= 0.0) {
@@ -396,7 +411,7 @@ static bool spot_interval(const ray *r, const struct rlight *l, double *d1,
             *d2 = t2;
             return true;
         }
-        if (d > -M_EPSILON) {
+        if (b * b - a * c > -M_EPSILON) { /* tangent to the cone */
             if (in_cone) {
                 *d1 = 0.0;
                 *d2 = -b / a;
@@ -429,17 +444,9 @@ static bool cylinder_interval(const ray *r, const struct rlight *l,
     double k3 = v3_dot(v1, r->d), k4 = v3_len2(v1);
     double b = k3 - k1 * k2;
     double c = k4 - k2 * k2 - l->falloff * l->falloff;
-    double d = b * b - a * c;
-    if (!(d > M_EPSILON))
+    double t1, t2, l1, l2;
+    if (!axis_roots(a, b, c, k1, k2, &t1, &t2, &l1, &l2))
         return false;
-    d = sqrt(d);
-    double t1 = (-b + d) / a, t2 = (-b - d) / a;
-    if (t1 > t2) {
-        double tmp = t1;
-        t1 = t2;
-        t2 = tmp;
-    }
-    double l1 = k2 + t1 * k1, l2 = k2 + t2 * k1;
     if (l1 <= 0.0 && l2 <= 0.0)
         return false;
     if (l1 <= 0.0 || l2 <= 0.0) {
