@@ -14,7 +14,8 @@
 ** its own). cpu_shoot_s, cpu_build_s and photons_per_cpu_s are the same in
 ** CPU seconds of all threads, and gathers_per_cpu_s the gather rate per
 ** CPU second: on a shared machine the wall clock also counts the others'
-** work. Textures are evaluated by the
+** work. map_fnv is a hash of the stored records (the same map, the same
+** hash). Textures are evaluated by the
 ** material module when IRIS_BENCH_MAT is set in the environment, else as
 ** solid pigments. Not installed; built by `make tools/photon_bench`.
 */
@@ -73,6 +74,20 @@ static double gather_rate(const struct photon_map *m, int n, double *per_cpu_s)
     return dt > 0 ? n / dt : 0.0;
 }
 
+/* FNV-1a over the stored records in tree order: two builds of the same
+** map print the same value (checking that an optimisation left the map
+** as it was). */
+static unsigned long long map_hash(const struct photon_map *m)
+{
+    unsigned long long h = 1469598103934665603ULL;
+    if (!m)
+        return h;
+    const unsigned char *b = (const unsigned char *)m->store.ph;
+    for (size_t i = 0; i < m->store.n * sizeof *m->store.ph; i++)
+        h = (h ^ b[i]) * 1099511628211ULL;
+    return h;
+}
+
 int main(int argc, char **argv)
 {
     int threads = 1, queries = 100000, accel_only = 0;
@@ -129,12 +144,13 @@ int main(int argc, char **argv)
     printf("threads=%d shot=%lld stored=%lld bytes_per_photon=%.2f "
            "shoot_s=%.3f build_s=%.3f photons_per_s_per_thread=%.0f "
            "cpu_shoot_s=%.3f cpu_build_s=%.3f photons_per_cpu_s=%.0f "
-           "gather_radius=%.4g gathers_per_s=%.0f gathers_per_cpu_s=%.0f\n",
+           "gather_radius=%.4g gathers_per_s=%.0f gathers_per_cpu_s=%.0f "
+           "map_fnv=%016llx\n",
            threads, (long long)st.shot, (long long)st.stored,
            st.stored ? (double)st.bytes / st.stored : 0.0, st.seconds_shoot,
            st.seconds_build, per_thread, st.cpu_shoot, st.cpu_build,
            st.cpu_shoot > 0 ? st.shot / st.cpu_shoot : 0.0, st.gather_radius,
-           g_wall, g_cpu);
+           g_wall, g_cpu, map_hash(m));
     photon_map_destroy(m);
     mat_ctx_destroy(mc);
     accel_destroy(a);

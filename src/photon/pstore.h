@@ -77,6 +77,14 @@ IRIS_NODISCARD enum iris_status pstore_build_mt(struct pstore *s,
                                                 struct pstore_raw *raw,
                                                 size_t n, int threads);
 
+/* The same, taking 'raw' (allocated with iris_malloc): the packed records
+** are written over it and it is shrunk to them (33 bytes a photon at the
+** peak instead of 49), or freed on failure. 'raw' must not be used
+** afterwards. */
+IRIS_NODISCARD enum iris_status pstore_build_in_place(struct pstore *s,
+                                                      struct pstore_raw *raw,
+                                                      size_t n, int threads);
+
 void pstore_fini(struct pstore *s);
 
 #define PSTORE_WHITE 65535u

@@ -61,12 +61,15 @@
 #include <math.h>
 #include <stdatomic.h>
 #include <stdio.h>
+#include <stdint.h>
 #include <string.h>
+#include <sys/mman.h>
 #include <time.h>
 #include <unistd.h>
 
 #include "photon/membudget.h"
 #include "photon/trace.h"
+#include "spectrum/ior.h"
 #include "spectrum/spectrum.h"
 #include "util/mem.h"
 #include "util/thread.h"
@@ -82,6 +85,8 @@ static const double LATTICE[3] = { 0.7548776662466927, 0.5698402909980532,
 struct combo {
     struct ptrace_combo tc;
     struct spec_emitter em;
+    double flat_emission;      /* !tc.chromatic: the emission at every
+                                  lambda (to 1e-12), taken once */
     vec3 ctr, axis, a, b;      /* centre; unit axis light->centre or the
                                   light direction; a, b complete a basis */
     vec3 origin;               /* the light's location */
@@ -93,6 +98,7 @@ struct combo {
     vec3 beam;                 /* unit light->point_at, for the spot and
                                   cylinder attenuation (once, not per
                                   photon) */
+    double spot_cr, spot_cf;   /* spot: cos of radius and falloff */
 };
 
 /* One ring of photons. */
@@ -116,6 +122,9 @@ struct shoot {
     double jitter;
     double u0;                 /* random offset of the wavelength lattice */
     struct ptrace_out *outs;   /* one per batch */
+    struct pstore_raw *slab;   /* PHOTON_BATCH slots per batch, batch b's
+                                  from b·PHOTON_BATCH (NULL: each batch
+                                  grows its own buffer) */
     /* The memory budget (membudget.h) for the photons STORED: a photon
     ** can deposit many times (a diffuse mirror between two plates), which
     ** the count checked before shooting does not know. Batches add what
@@ -152,23 +161,39 @@ static double smooth(double t)
     return t * t * (3.0 - 2.0 * t);
 }
 
+/* A spot light's attenuation along 'dir', given the cosines of its radius
+** 'cr' and falloff 'cf' (shoot_one takes them once per combo, not per
+** photon). */
+static double spot_atten(const iris_light *l, vec3 axis, vec3 dir, double cr,
+                         double cf)
+{
+    double k = v3_dot(axis, dir);
+    if (k <= 0.0)
+        return 0.0;
+    double a = l->tightness > 0.0 ? pow(k, l->tightness) : 1.0;
+    if (k < cr)
+        a *= k <= cf || cr <= cf ? 0.0 : smooth((k - cf) / (cr - cf));
+    return a;
+}
+
 double pmap_light_atten(const iris_light *l, vec3 axis, vec3 origin, vec3 dir)
 {
-    if (l->kind == IRIS_LIGHT_SPOT && !l->parallel) {
-        double k = v3_dot(axis, dir);
-        if (k <= 0.0)
-            return 0.0;
-        double a = l->tightness > 0.0 ? pow(k, l->tightness) : 1.0;
-        double cr = cos(l->radius * M_PI / 180.0);
-        double cf = cos(l->falloff * M_PI / 180.0);
-        if (k < cr)
-            a *= k <= cf || cr <= cf ? 0.0 : smooth((k - cf) / (cr - cf));
-        return a;
-    }
+    if (l->kind == IRIS_LIGHT_SPOT && !l->parallel)
+        return spot_atten(l, axis, dir, cos(l->radius * M_PI / 180.0),
+                          cos(l->falloff * M_PI / 180.0));
     if (l->kind == IRIS_LIGHT_CYLINDER) {
         vec3 rel = v3_sub(origin, l->location);
         vec3 perp = v3_madd(rel, axis, -v3_dot(rel, axis));
-        double dist = v3_len(perp);
+        double d2 = v3_len2(perp);
+        /* Well inside the full-power core (and tightness 0) the answer
+        ** is exactly 1 below: no square root and division per photon.
+        ** The margin keeps rounding of d2 against the limits away. */
+        double core = l->radius > 0.0 && l->radius < l->falloff
+                          ? l->radius : l->falloff;
+        if (l->falloff > 0.0 && !(l->tightness > 0.0) &&
+            d2 < 0.999 * core * core)
+            return 1.0;
+        double dist = sqrt(d2);
         if (!(l->falloff > 0.0) || dist >= l->falloff)
             return 0.0;
         double x = 1.0 - dist / l->falloff;
@@ -178,6 +203,43 @@ double pmap_light_atten(const iris_light *l, vec3 axis, vec3 origin, vec3 dir)
         return a;
     }
     return 1.0;
+}
+
+/*
+** Whether no interior in object 'o' (CSG children and clipped_by
+** included) is dispersive. A tree deeper than 64 levels answers false:
+** trace.c then tests at every refraction, as without this.
+*/
+static bool object_none_dispersive(const iris_object *o, int depth)
+{
+    if (!o)
+        return true;
+    if (depth > 64 || ior_is_dispersive(o->interior))
+        return false;
+    if (o->kind >= IRIS_OBJ_UNION && o->kind < IRIS_OBJ_KIND_COUNT &&
+        o->u.csg.children)
+        for (int i = 0; i < o->u.csg.n_children; i++)
+            if (!object_none_dispersive(o->u.csg.children[i], depth + 1))
+                return false;
+    if (o->clipped_by)
+        for (int i = 0; i < o->n_clipped_by; i++)
+            if (!object_none_dispersive(o->clipped_by[i], depth + 1))
+                return false;
+    return true;
+}
+
+/* Whether no interior of the scene, objects or lights' looks_like, is
+** dispersive (ptrace_combo.no_dispersion). */
+static bool scene_none_dispersive(const iris_scene *sc)
+{
+    for (int i = 0; i < sc->n_objects; i++)
+        if (!object_none_dispersive(sc->objects[i], 0))
+            return false;
+    for (int i = 0; i < sc->n_lights; i++)
+        if (!object_none_dispersive(sc->lights[i]->looks_like, 0) ||
+            !object_none_dispersive(sc->lights[i]->projected_through, 0))
+            return false;
+    return true;
 }
 
 /* Collects the combos and their bounding spheres. */
@@ -193,6 +255,9 @@ static enum iris_status find_combos(struct shoot *s)
     int max_level = sc->settings.photons.max_trace_level;
     if (max_level < 0)
         max_level = sc->settings.max_trace_level;
+    /* Whether any interior disperses, once instead of at every refraction
+    ** of every photon (trace.c) */
+    bool none_dispersive = scene_none_dispersive(sc);
     for (int li = 0; li < sc->n_lights; li++) {
         const iris_light *l = sc->lights[li];
         for (int oi = 0; oi < sc->n_objects; oi++) {
@@ -218,7 +283,11 @@ static enum iris_status find_combos(struct shoot *s)
                                                        5.0 * k) - e0) >
                     1e-12 * fabs(e0))
                     c->tc.chromatic = true;
+            c->flat_emission = e0;
+            c->tc.no_dispersion = none_dispersive;
             c->beam = v3_norm(v3_sub(l->point_at, l->location));
+            c->spot_cr = cos(l->radius * M_PI / 180.0);
+            c->spot_cf = cos(l->falloff * M_PI / 180.0);
             c->ctr = v3_scale(v3_add(lo, hi), 0.5);
             c->rad = 0.5 * v3_len(v3_sub(hi, lo));
             c->est_rad = c->rad;
@@ -577,12 +646,17 @@ static void shoot_one(const struct shoot *s, const struct ring *rg, int64_t j,
         o = v3_madd(o, c->axis1, (double)u / (c->n1 - 1) - 0.5);
         o = v3_madd(o, c->axis2, (double)v / (c->n2 - 1) - 0.5);
     }
-    double a = pmap_light_atten(c->tc.light, c->beam, o, d);
+    const iris_light *l = c->tc.light;
+    double a = l->kind == IRIS_LIGHT_SPOT && !l->parallel
+                   ? spot_atten(l, c->beam, d, c->spot_cr, c->spot_cf)
+                   : pmap_light_atten(l, c->beam, o, d);
     if (a < 1e-5)
         return;
     double u = s->u0 + lambda_lattice(rg - s->rings, k_phi, k_area);
     double lambda = spec_sample_uniform(u - floor(u));
-    double power = rg->cell * a * spec_emitter_eval(&c->em, lambda);
+    double power = rg->cell * a *
+                   (c->tc.chromatic ? spec_emitter_eval(&c->em, lambda)
+                                    : c->flat_emission);
     if (!(power > 0.0))
         return;
     ptrace_photon(s->w, &c->tc, o, d, lambda, power, &r, out);
@@ -615,7 +689,9 @@ static void shoot_fini(struct shoot *s, int64_t n_batches)
 {
     if (s->outs)
         for (int64_t b = 0; b < n_batches; b++)
-            iris_free(s->outs[b].ph);
+            if (!s->outs[b].borrowed)
+                iris_free(s->outs[b].ph);
+    iris_free(s->slab);
     iris_free(s->outs);
     iris_free(s->rings);
     iris_free(s->combos);
@@ -642,12 +718,89 @@ enum iris_status pmap_concat(struct ptrace_out *outs, int64_t n,
         if (a && outs[b].n)
             memcpy(a + at, outs[b].ph, outs[b].n * sizeof *a);
         at += outs[b].n;
-        iris_free(outs[b].ph);
+        if (!outs[b].borrowed)
+            iris_free(outs[b].ph);
         outs[b].ph = NULL;
+        outs[b].borrowed = false;
     }
     *all = a;
     *total = rc == IRIS_OK ? sum : 0;
     return rc;
+}
+
+/*
+** Gives the whole pages inside [from, to) back to the system, where the
+** system allows it (Linux's madvise): the slab between the photons moved
+** down so far and the next batch's slice holds nothing any more. Without
+** it the moves would keep the pages of the slots that stored nothing
+** (photons that missed) and the peak would count the photons shot, not
+** those stored. Reading a released page would give zeros: nothing reads
+** there before writing.
+*/
+static void release_pages(void *from, void *to)
+{
+#ifdef MADV_DONTNEED
+    long pg = sysconf(_SC_PAGESIZE);
+    if (pg <= 0)
+        return;
+    uintptr_t lo = ((uintptr_t)from + (uintptr_t)pg - 1) / (uintptr_t)pg *
+                   (uintptr_t)pg;
+    uintptr_t hi = (uintptr_t)to / (uintptr_t)pg * (uintptr_t)pg;
+    if (hi > lo)
+        (void)madvise((void *)lo, hi - lo, MADV_DONTNEED);
+#else
+    (void)from;
+    (void)to;
+#endif
+}
+
+/*
+** The batches' photons in order in one array. When every batch still
+** writes into its own slice of the slab (none stored more photons than
+** it shot), the slices are moved down over the slab itself and the slab
+** is shrunk to them: no second array, and no copy into fresh pages (that
+** copy and its page faults were about 5% of the shooting, perf).
+** Otherwise pmap_concat() copies them into a new array. The slab is
+** consumed either way.
+*/
+static enum iris_status concat_batches(struct shoot *s, int64_t n_batches,
+                                       struct pstore_raw **all,
+                                       size_t *total)
+{
+    bool in_place = s->slab != NULL;
+    for (int64_t b = 0; b < n_batches && in_place; b++)
+        in_place = s->outs[b].borrowed && !s->outs[b].failed;
+    if (!in_place) {
+        enum iris_status rc = pmap_concat(s->outs, n_batches, all, total);
+        iris_free(s->slab);
+        s->slab = NULL;
+        return rc;
+    }
+    size_t at = 0;
+    for (int64_t b = 0; b < n_batches; b++) {
+        struct ptrace_out *o = &s->outs[b];
+        /* at <= b·PHOTON_BATCH, the slice's start: a move down */
+        if (o->n > 0 && o->ph != s->slab + at)
+            memmove(s->slab + at, o->ph, o->n * sizeof *o->ph);
+        at += o->n;
+        o->ph = NULL;
+        o->n = 0;
+        o->borrowed = false;
+        int64_t next = (b + 1) * PHOTON_BATCH; /* the next slice */
+        release_pages(s->slab + at,
+                      s->slab + (next < s->n_photons ? next : s->n_photons));
+    }
+    *all = NULL;
+    *total = at;
+    if (at == 0) {
+        iris_free(s->slab);
+    } else {
+        /* shrinking: glibc returns a large block's tail without copying */
+        struct pstore_raw *a = iris_realloc(s->slab, at * sizeof *a);
+        *all = a ? a : s->slab;
+    }
+    s->slab = NULL;
+    return IRIS_OK;
 }
 
 /* CPU seconds of the whole process (all threads), for the stats. */
@@ -708,6 +861,22 @@ static enum iris_status build_caustic(const iris_scene *scene,
         if (!s.outs)
             rc = IRIS_ENOMEM;
     }
+    if (rc == IRIS_OK) {
+        /* One slot per photon shot, batch b's from b·PHOTON_BATCH: a
+        ** caustic photon is stored at most once or twice, mostly once, so
+        ** the batches write where the map will be (concat_batches). Its
+        ** pages are touched only where written. Without it (too large)
+        ** each batch grows its own buffer. */
+        s.slab = iris_malloc((size_t)s.n_photons * sizeof *s.slab);
+        for (int64_t b = 0; s.slab && b < n_batches; b++) {
+            int64_t lo = b * PHOTON_BATCH;
+            s.outs[b].ph = s.slab + lo;
+            s.outs[b].cap = (size_t)(s.n_photons - lo < PHOTON_BATCH
+                                         ? s.n_photons - lo
+                                         : PHOTON_BATCH);
+            s.outs[b].borrowed = true;
+        }
+    }
     if (rc == IRIS_OK)
         par_for(opts->threads, n_batches, shoot_batch, &s);
     if (rc == IRIS_OK && atomic_load(&s.over_budget)) {
@@ -731,7 +900,7 @@ static enum iris_status build_caustic(const iris_scene *scene,
     size_t total = 0;
     struct pstore_raw *all = NULL;
     if (rc == IRIS_OK)
-        rc = pmap_concat(s.outs, n_batches, &all, &total);
+        rc = concat_batches(&s, n_batches, &all, &total);
     st.shot = s.n_photons;
     st.n_combos = s.n_combos;
     shoot_fini(&s, n_batches);
@@ -791,8 +960,9 @@ enum iris_status pmap_from_raw(const iris_scene *scene,
     struct photon_map *m = iris_calloc(1, sizeof *m);
     enum iris_status rc = m ? IRIS_OK : IRIS_ENOMEM;
     if (rc == IRIS_OK)
-        rc = pstore_build_mt(&m->store, all, n, threads);
-    iris_free(all);
+        rc = pstore_build_in_place(&m->store, all, n, threads);
+    else
+        iris_free(all);
     if (rc != IRIS_OK) {
         photon_map_destroy(m);
         return rc;

@@ -20,6 +20,10 @@ struct ptrace_combo {
     double fade_distance, fade_power; /* the light's fade */
     int max_level;             /* photon max_trace_level */
     bool chromatic;            /* the light's emission varies with lambda */
+    bool no_dispersion;        /* no interior of the scene is dispersive
+                                  (ior_is_dispersive): the per-interface
+                                  test is skipped. false (unknown) keeps
+                                  the test */
     bool global;               /* a global-map photon (global.c): any first
                                   hit, physical specular transport whatever
                                   the photon flags, Lambertian bounces by
@@ -27,6 +31,8 @@ struct ptrace_combo {
                                   diffuse bounce; the D^2 and fade factors
                                   are applied where it first lands on a
                                   diffuse surface */
+    int max_diffuse;           /* global: > 0 ends a photon after that many
+                                  diffuse bounces (recursion_limit - 1) */
     const struct mat_ctx *mat; /* NULL: solid pigments (tests) */
     int n_stack;               /* interiors containing the light */
     const iris_object *stack[PTRACE_MAX_STACK];
@@ -37,6 +43,9 @@ struct ptrace_out {
     struct pstore_raw *ph;
     size_t n, cap;
     bool failed;               /* an allocation failed */
+    bool borrowed;             /* 'ph' is a slice of the caller's array
+                                  (shoot.c): when full it is copied to a
+                                  buffer of its own, never reallocated */
 };
 
 /* The level cap of a global photon: diffuse bounces end by Russian

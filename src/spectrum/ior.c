@@ -50,6 +50,24 @@ const struct spec_glass *ior_glass_find(const char *name)
     return NULL;
 }
 
+/*
+** ior_glass_find() remembering the last glass found, per thread: a
+** Sellmeier index by glass name is evaluated at every refraction of every
+** photon, and the catalogue scan was most of it. The remembered entry is
+** checked against the name (one strcasecmp), so a name freed with its
+** scene and a new one at the same address cannot return a stale glass.
+*/
+static const struct spec_glass *glass_find_cached(const char *name)
+{
+    static _Thread_local const struct spec_glass *last;
+    if (name && last && strcasecmp(last->name, name) == 0)
+        return last;
+    const struct spec_glass *g = ior_glass_find(name);
+    if (g)
+        last = g;
+    return g;
+}
+
 /* n^2 - 1 = sum B·l^2/(l^2 - C); n^2 <= 0 (inside an absorption band,
 ** where the formula has no meaning) clamps to IOR_MIN. */
 static double sellmeier_raw(const double b[4], const double c[4],
@@ -97,7 +115,7 @@ static double eval_model(const iris_interior *in, double lambda,
     if (s) {
         switch (s->model) {
         case IRIS_IOR_SELLMEIER: {
-            const struct spec_glass *g = ior_glass_find(s->glass_name);
+            const struct spec_glass *g = glass_find_cached(s->glass_name);
             if (s->glass_name && !g)
                 break; /* unknown: ior_check() reports it */
             return g ? sellmeier_raw(g->b, g->c, lum, clamped)
@@ -138,6 +156,15 @@ double ior_eval(const iris_interior *in, double lambda_nm)
 {
     if (!in)
         return 1.0;
+    /* The common plain 'ior' without dispersion: eval_model's last case,
+    ** without the call (ior_eval runs twice per refraction per photon) */
+    if (!in->spectral_ior &&
+        (!(in->ior > 0.0) || !(in->dispersion > 0.0) ||
+         in->dispersion == 1.0)) {
+        double n = base_ior(in);
+        if (n >= IOR_MIN && n <= IOR_MAX)
+            return n;
+    }
     bool clamped = false;
     return clamp_n(eval_model(in, lambda_nm, &clamped), &clamped);
 }

@@ -211,15 +211,20 @@ render thin_sky "+W$W +H$H" "$scenes/thin.pov" Declare=T=1e-4 Declare=SKY=1
 out=$("$check" same "$tmp/thin_nosky.exr" "$tmp/thin_sky.exr" 2>&1)
 tap_result_todo $? "a 1e-4 shell renders the same inside a 1e6 sphere" ""
 [ -n "$out" ] && echo "# $out"
-# ... and with photons: the hidden sphere only collects a few stray
-# photons, so the caustic under the shell must stay (30 dB allows photon
-# noise; without the caustic the PSNR is 17 dB).
-render thin_ph "+W$W +H$H" "$scenes/thin.pov" Declare=T=1e-2 Declare=PHOTONS=1
+# ... and with photons: the hidden sphere only collects stray photons
+# (1.1-1.7% of those stored), so the caustic under the shell must stay.
+# 8000 photons (spacing 0.015): the two renders agree to 51.6 dB; 40 dB
+# allows photon noise. When the strays widened the photons' quantisation
+# box (pstore.c robust_box) the caustic merged into a few grid points:
+# 16.8 dB. (At the stage's spacing 0.05 the two differ by ~30 dB of
+# noise alone, too close to tell.)
+render thin_ph "+W$W +H$H" "$scenes/thin.pov" Declare=T=1e-2 Declare=PHOTONS=1 \
+    Declare=PH_SPACING=0.015
 render thin_ph_sky "+W$W +H$H" "$scenes/thin.pov" Declare=T=1e-2 \
-    Declare=PHOTONS=1 Declare=SKY=1
+    Declare=PHOTONS=1 Declare=SKY=1 Declare=PH_SPACING=0.015
 p=$("$imgtool" psnr "$tmp/thin_ph.exr" "$tmp/thin_ph_sky.exr" 2>&1)
-awk -v p="$p" 'BEGIN { exit !(p + 0 >= 30) }'
-tap_result_todo $? "the caustic stays when a hidden 1e6 sphere is added (PSNR $p dB >= 30)" ""
+awk -v p="$p" 'BEGIN { exit !(p + 0 >= 40) }'
+tap_result_todo $? "the caustic stays when a hidden 1e6 sphere is added (PSNR $p dB >= 40)" ""
 
 # The same scene at scale 1e-6 and 1e6 (camera, light, checker and glass
 # all scaled): the same image. 40 dB on sRGB values is an RMS difference

@@ -23,6 +23,7 @@
 #include "render/progressive.h"
 #include "spectrum/ior.h"
 #include "spectrum/spectrum.h"
+#include "util/mem.h"
 #include "util/rng.h"
 
 static const iris_colour WHITE = { 1, 1, 1, 0, 0 };
@@ -192,6 +193,116 @@ static void test_parallel_build(void **state)
         assert_near(r2, dist[19], 1e-6 * (1 + dist[19]));
     }
     pstore_fini(&s1);
+}
+
+/*
+** The build in place (pstore_build_in_place, what pmap_from_raw uses:
+** the packed records written over the raw array) makes the same store as
+** the build into a separate array, record for record, with the far
+** photons dropped the same way, serial and parallel. Photons: a volume, a
+** floor (ties along y), duplicates (ties on every axis) and 4 far away.
+*/
+static void test_build_in_place(void **state)
+{
+    (void)state;
+    enum { N = 40000 };
+    static struct pstore_raw raw[N], copy[N];
+    rng r;
+    rng_seed(&r, 23, 0, 0);
+    for (int i = 0; i < N; i++) {
+        double x = rng_uniform(&r) * 2 - 1, y = rng_uniform(&r),
+               z = rng_uniform(&r) * 2 - 1;
+        if (i % 3 == 1)
+            y = 0.25;
+        if (i % 7 == 2)
+            x = raw[i - 1].p[0], y = raw[i - 1].p[1], z = raw[i - 1].p[2];
+        if (i % 10007 == 5)
+            x = 1e5; /* far: dropped */
+        vec3 d = v3_norm(v3(rng_uniform(&r) - .5, rng_uniform(&r) - .5,
+                            rng_uniform(&r) - .5));
+        raw[i] = (struct pstore_raw){ { (float)x, (float)y, (float)z },
+                                      (float)(1 + i % 5),
+                                      i % 4 ? (float)(380 + i % 400) : -1.0f,
+                                      { (float)d.x, (float)d.y,
+                                        (float)d.z } };
+    }
+    memcpy(copy, raw, sizeof raw);
+    for (int t = 1; t <= 2; t++) {
+        struct pstore a, b;
+        memcpy(raw, copy, sizeof raw);
+        assert_int_equal(pstore_build_mt(&a, raw, N, t), IRIS_OK);
+        struct pstore_raw *own = iris_malloc(sizeof raw);
+        assert_non_null(own);
+        memcpy(own, copy, sizeof raw);
+        assert_int_equal(pstore_build_in_place(&b, own, N, t), IRIS_OK);
+        assert_int_equal(a.n_dropped, 4);
+        assert_int_equal(b.n_dropped, a.n_dropped);
+        assert_int_equal(b.n, a.n);
+        for (int k = 0; k < 3; k++)
+            assert_true(b.lo[k] == a.lo[k] && b.step[k] == a.step[k]);
+        assert_memory_equal(b.ph, a.ph, a.n * sizeof *a.ph);
+        pstore_fini(&a);
+        pstore_fini(&b);
+    }
+    /* nothing to store: no records, and the array is freed (valgrind) */
+    struct pstore e;
+    struct pstore_raw *none = iris_malloc(sizeof *none);
+    assert_non_null(none);
+    assert_int_equal(pstore_build_in_place(&e, none, 0, 2), IRIS_OK);
+    assert_int_equal(e.n, 0);
+    pstore_fini(&e);
+}
+
+/*
+** Photons that are stored more than once each (two plates, both diffuse
+** and perfect mirrors, a point light between them, as
+** tests/largerun/plates.pov): more photons are stored than shot, so some
+** batches outgrow their slots of the shared array (shoot.c
+** concat_batches) and take buffers of their own. The map must still be
+** the same for 1 and 2 threads, record for record, and a photon that
+** keeps bouncing is stored at levels 2..max_trace_level only: at most
+** max_trace_level - 1 stores per photon shot.
+*/
+static void test_multi_deposit(void **state)
+{
+    (void)state;
+    struct tw_scene tw;
+    tw_init(&tw, 0.05, 20);
+    enum { LEVELS = 6 };
+    tw.scene.settings.photons.max_trace_level = LEVELS;
+    iris_light *l = tw_light(&tw, v3(0, 0.5, 0), v3(0, 0, 0), false);
+    l->photon_refraction = IRIS_UNSET;
+    l->photon_reflection = IRIS_ON;
+    iris_object *plate[2] = {
+        tw_box(&tw, v3(-50, -1, -50), v3(50, 0, 50), WHITE, 1, 0),
+        tw_box(&tw, v3(-50, 1, -50), v3(50, 2, 50), WHITE, 1, 0)
+    };
+    for (int k = 0; k < 2; k++) {
+        iris_finish *f = plate[k]->texture->finish;
+        f->reflection_max = f->reflection_min = WHITE;
+        f->reflection_falloff = 1;
+        plate[k]->photon_reflection = IRIS_ON;
+    }
+    plate[0]->photon_target = true;
+    struct pmap_world w = tw_world(&tw);
+    struct photon_map *m[2];
+    struct photon_stats st[2];
+    for (int t = 0; t < 2; t++) {
+        struct photon_options o = { t + 1, 12345, 0, 0, NULL, 0, NULL, 0,
+                                    false };
+        assert_int_equal(pmap_build(&tw.scene, &w, &o, &m[t], &st[t]),
+                         IRIS_OK);
+        assert_non_null(m[t]);
+    }
+    fprintf(stderr, "# %lld shot, %lld stored\n", (long long)st[0].shot,
+            (long long)st[0].stored);
+    assert_true(st[0].stored > 2 * st[0].shot);
+    assert_true(st[0].stored <= (LEVELS - 1) * st[0].shot);
+    assert_int_equal(m[1]->store.n, m[0]->store.n);
+    assert_memory_equal(m[1]->store.ph, m[0]->store.ph,
+                        m[0]->store.n * sizeof *m[0]->store.ph);
+    photon_map_destroy(m[0]);
+    photon_map_destroy(m[1]);
 }
 
 /* ------------------------------------------------------------------ */
@@ -1186,12 +1297,69 @@ static void test_global_direct_only(void **state)
     assert_null(m);
 }
 
+/*
+** A cylinder light's attenuation at distance d from its axis (semantics
+** §3.5), written out here: 0 from the falloff radius on; inside,
+** (1 - d/falloff)^tightness (1 for tightness 0), times the smoothstep of
+** (1 - d/falloff)/(1 - radius/falloff) between radius and falloff. Checked
+** on a fine grid of d across the core's edge, where the shortcut for
+** photons well inside the core (shoot.c) must hand over exactly; the
+** tolerance 1e-12 is rounding (the expectation is computed differently).
+*/
+static double cyl_ref(double radius, double falloff, double tight, double d)
+{
+    if (!(falloff > 0) || d >= falloff)
+        return 0;
+    double x = 1 - d / falloff;
+    double a = tight > 0 ? pow(x, tight) : 1;
+    if (radius > 0 && d > radius) {
+        double t = x / (1 - radius / falloff);
+        t = t < 0 ? 0 : t > 1 ? 1 : t;
+        a *= t * t * (3 - 2 * t);
+    }
+    return a;
+}
+
+static void test_cylinder_atten(void **state)
+{
+    (void)state;
+    const double cases[][3] = { /* radius, falloff, tightness */
+                                { 1, 1, 0 },   { 0.5, 1, 0 }, { 2, 1, 0 },
+                                { 0, 1, 0 },   { 0.5, 1, 3 }, { 0.3, 0.8, 0 },
+                                { 1, -1, 0 },  { 0.5, 0, 0 } };
+    iris_light l;
+    memset(&l, 0, sizeof l);
+    l.kind = IRIS_LIGHT_CYLINDER;
+    l.location = v3(0, 20, 0);
+    vec3 axis = v3(0, -1, 0);
+    int inside = 0;
+    for (size_t c = 0; c < sizeof cases / sizeof *cases; c++) {
+        l.radius = cases[c][0];
+        l.falloff = cases[c][1];
+        l.tightness = cases[c][2];
+        for (int i = 0; i <= 3000; i++) {
+            double d = 1.2 * i / 3000.0;
+            /* photons start on the light's plane, any direction along the
+            ** beam; the point's height must not matter */
+            vec3 o = v3(d * 0.6, 20 - i % 3, d * 0.8);
+            double got = pmap_light_atten(&l, axis, o, axis);
+            double want = cyl_ref(l.radius, l.falloff, l.tightness, d);
+            assert_near(got, want, 1e-12);
+            inside += got == 1.0;
+        }
+    }
+    assert_true(inside > 3000); /* the full-power core was visited */
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_knn_brute_force),
         cmocka_unit_test(test_parallel_build),
         cmocka_unit_test(test_far_photons),
+        cmocka_unit_test(test_build_in_place),
+        cmocka_unit_test(test_cylinder_atten),
+        cmocka_unit_test(test_multi_deposit),
         cmocka_unit_test(test_cone_and_estimate),
         cmocka_unit_test(test_white_photons),
         cmocka_unit_test(test_slab_flux),
