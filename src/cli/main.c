@@ -22,6 +22,7 @@
 #include "cli/passlog.h"
 #include "cli/report.h"
 #include "iris/iris.h"
+#include "photon/membudget.h"
 #include "render/mpi_passes.h"
 #include "util/thread.h"
 
@@ -130,6 +131,8 @@ static int iris_main(int argc, char **argv)
         return 0;
     }
     install_signals();
+    if (o.node_memory > 0.0) /* shared by the node's MPI ranks */
+        membudget_set_node_limit(o.node_memory);
     if (mpi_passes_rank() != 0) /* rank 0 alone writes the error log */
         o.error_log = NULL;
 

@@ -39,6 +39,27 @@ static bool parse_num(const char *s, double lo, double hi, double *out)
     return true;
 }
 
+/* A size in bytes: a positive number with an optional k, M, G or T
+** (powers of 1000, as the memory error messages print them). */
+static bool parse_size(const char *s, double *out)
+{
+    char *end;
+    errno = 0;
+    double v = strtod(s, &end);
+    if (errno || end == s || !(v > 0.0))
+        return false;
+    static const char units[] = "kMGT";
+    const char *u = *end ? strchr(units, *end) : NULL;
+    if (*end && (!u || end[1]))
+        return false;
+    for (const char *k = units; u && k <= u; k++)
+        v *= 1000.0;
+    if (!(v >= 1.0 && v <= 1e18))
+        return false;
+    *out = v;
+    return true;
+}
+
 IRIS_PRINTF(3, 4)
 static int fail(char *err, size_t errlen, const char *fmt, ...)
 {
@@ -274,6 +295,14 @@ static int long_option(int argc, char **argv, int *i, struct cli_options *o,
             return 0;
         }
     }
+    v = long_value(argc, argv, i, "node-memory", &m);
+    if (m) {
+        if (!v || !parse_size(v, &d))
+            return fail(err, errlen, "%s: expected a size in bytes, with "
+                        "k, M, G or T (powers of 1000), e.g. 8G", a);
+        o->node_memory = d;
+        return 0;
+    }
     v = long_value(argc, argv, i, "spectral-samples", &m);
     if (m) {
         if (!v || !parse_int(v, 2, 10000, &n)) return fail(err, errlen, "%s: expected 2..10000 wavelengths", a);
@@ -388,7 +417,10 @@ void cli_usage(FILE *out)
 "      --resume=F      continue the accumulation saved in F\n"
 "      --reference=IMG error against IMG after each pass (rmse, bias)\n"
 "      --error-log=F   append time_s,passes,photons,rmse,rel_rmse,bias\n"
-"                      to the CSV file F after each pass\n""      --spectral-samples=N  minimum wavelengths per dispersive ray\n"
+"                      to the CSV file F after each pass\n""      --node-memory=SIZE  memory all MPI ranks on one machine may use\n"
+"                      together (e.g. 8G); a photon pass that would not\n"
+"                      fit its share stops with an error\n"
+"      --spectral-samples=N  minimum wavelengths per dispersive ray\n"
 "      --no-photons    render without photons\n"
 "  -q, --quiet         no progress output\n"
 "      --verbose       more detail, including the render plan\n"

@@ -43,6 +43,8 @@ struct cli_options {
     /* progressive mode (--checkpoint and --resume are in 'render') */
     const char *reference;      /* --reference IMG */
     const char *error_log;      /* --error-log FILE.csv */
+    double node_memory;         /* --node-memory: bytes all ranks on a
+                                   node may use, 0 = no such limit */
 };
 
 /*

@@ -8,16 +8,38 @@
 ** and the thread stacks already hold hundreds of MB, so what is left is
 ** RLIMIT_AS - VmSize. Sources that cannot be read are skipped (not Linux,
 ** no cgroup): the check then errs towards running.
+**
+** MemAvailable, the cgroup and --node-memory are the node's: R MPI ranks
+** on one node each read the same MemAvailable before any of them
+** allocates, and each would take all of it. Each rank's share is 1/R
+** (the ranks run their passes at the same time and pass sizes are
+** equal).
 */
 #include "config.h"
 
 #include "photon/membudget.h"
 
 #include <math.h>
+#include <stdatomic.h>
 #include <stdio.h>
 #include <string.h>
 #include <sys/resource.h>
 #include <unistd.h>
+
+/* The ranks sharing the node and the --node-memory limit (0: none). Set
+** once at start-up, read at each photon pass. */
+static _Atomic int node_ranks = 1;
+static _Atomic double node_limit = 0.0;
+
+void membudget_set_node_ranks(int ranks)
+{
+    atomic_store(&node_ranks, ranks < 1 ? 1 : ranks);
+}
+
+void membudget_set_node_limit(double bytes)
+{
+    atomic_store(&node_limit, bytes > 0.0 && isfinite(bytes) ? bytes : 0.0);
+}
 
 /* The value in kB of the line "key: N kB" of a /proc file, or -1. */
 static double proc_kb(const char *path, const char *key)
@@ -106,18 +128,33 @@ static void take(struct membudget *b, double bytes, const char *what)
     }
 }
 
+/* A node-wide limit's room: 'left' for the whole node (-1 unknown) split
+** among 'ranks' ranks. */
+static double node_share(double left, int ranks)
+{
+    return left < 0.0 ? -1.0 : left / ranks;
+}
+
 void membudget_available(struct membudget *b)
 {
     b->bytes = INFINITY;
     b->what = "no limit known";
+    const int r = atomic_load(&node_ranks);
+    /* the names say when a node's limit is shared (a static string each:
+    ** shoot.c keeps b->what) */
+    const bool shared = r > 1;
     double avail = proc_kb("/proc/meminfo", "MemAvailable");
     if (avail >= 0.0) {
-        take(b, avail * 1024.0, "MemAvailable");
+        take(b, node_share(avail * 1024.0, r),
+             shared ? "MemAvailable shared by the node's MPI ranks"
+                    : "MemAvailable");
     } else {
 #if defined(_SC_AVPHYS_PAGES) && defined(_SC_PAGESIZE)
         long pages = sysconf(_SC_AVPHYS_PAGES), psz = sysconf(_SC_PAGESIZE);
         if (pages > 0 && psz > 0)
-            take(b, (double)pages * (double)psz, "the available memory");
+            take(b, node_share((double)pages * (double)psz, r),
+                 shared ? "available memory shared by the node's MPI ranks"
+                        : "the available memory");
 #endif
     }
     take(b, rlimit_left(RLIMIT_AS, proc_kb("/proc/self/status", "VmSize")),
@@ -126,7 +163,17 @@ void membudget_available(struct membudget *b)
     take(b, rlimit_left(RLIMIT_DATA, proc_kb("/proc/self/status", "VmData")),
          "ulimit -d");
 #endif
-    take(b, cgroup_left(), "the cgroup's memory.max");
+    take(b, node_share(cgroup_left(), r),
+         shared ? "cgroup's memory.max shared by the node's MPI ranks"
+                : "the cgroup's memory.max");
+    /* --node-memory: this rank's share less what it holds already */
+    double lim = atomic_load(&node_limit);
+    if (lim > 0.0) {
+        double rss = proc_kb("/proc/self/status", "VmRSS");
+        take(b, fmax(0.0, lim / r - fmax(rss, 0.0) * 1024.0),
+             shared ? "--node-memory shared by the node's MPI ranks"
+                    : "--node-memory");
+    }
 }
 
 double membudget_photon_peak(double caustic, double global)

@@ -21,12 +21,12 @@
 /*
 ** Peak bytes of a photon pass per caustic photon emitted. Measured on
 ** bench/caustic_ball.pov (bench/memory.sh, docs/photons.md "Memory"):
-** 45 bytes per photon emitted, 49 per photon stored, from 1e6 to 1e8
-** photons. The budget allows 64: while the batches are concatenated a
-** stored photon is a 32-byte raw record twice (batch buffer and the
-** concatenated array) before the 16-byte record and the kd axis byte
-** replace one of them (pstore.c), and a scene can store about as many
-** photons as it emits.
+** 30 bytes per photon emitted, 33 per photon stored, from 1e6 to 1e7
+** photons (45 and 49 before the in-place build). The budget still allows
+** 64: a batch that stores more photons than it shoots (mirrors, several
+** caustic deposits) falls back to concatenating its batches, where a
+** stored photon is a 32-byte raw record twice (pstore.c), and a scene can
+** store about as many photons as it emits.
 */
 #define MEMBUDGET_PHOTON_BYTES 64.0
 
@@ -38,14 +38,31 @@
 struct membudget {
     double bytes;              /* INFINITY when no limit is known */
     const char *what;          /* which limit: "MemAvailable", "ulimit -v",
-                                  "ulimit -d", "the cgroup's memory.max" */
+                                  "ulimit -d", "the cgroup's memory.max",
+                                  "--node-memory", the node-wide ones with
+                                  " shared by R ranks" */
 };
 
 /* Reads the limits: MemAvailable (/proc/meminfo; sysconf's available
 ** pages without it), RLIMIT_AS less the address space in use (VmSize),
-** RLIMIT_DATA less the data in use (VmData), and the cgroup's
-** memory.max less memory.current (v2; v1's limit_in_bytes). */
+** RLIMIT_DATA less the data in use (VmData), the cgroup's memory.max
+** less memory.current (v2; v1's limit_in_bytes) and the node limit set
+** by membudget_set_node_limit() less this process's resident set.
+**
+** The ulimits are this process's own; the others belong to the node (the
+** machine, or the cgroup its ranks run in), which the MPI ranks on it
+** share: each rank's photon passes run at the same time as the others',
+** so each may use 1/R of those, R = membudget_set_node_ranks()'s. */
 void membudget_available(struct membudget *b);
+
+/* The number of processes (MPI ranks) sharing this node's memory, 1 by
+** default (render/mpi_passes.c sets it from MPI_COMM_TYPE_SHARED). */
+void membudget_set_node_ranks(int ranks);
+
+/* A limit in bytes on what all of this node's ranks together may use
+** (iris --node-memory), <= 0 for none. It counts like the cgroup's:
+** each rank gets 1/R of it, less what the rank already holds. */
+void membudget_set_node_limit(double bytes);
 
 /* The estimated peak in bytes of a photon pass that emits 'caustic'
 ** caustic photons and 'global' global ones (0 when there is no global

@@ -9,7 +9,8 @@
 ** rank 0 of 1, broadcasts and reductions leave their arguments as they
 ** are. So callers need no #ifdef.
 **
-** Depends on: MPI (optional). Used by: progressive.c, cli/main.c.
+** Depends on: MPI (optional), photon/membudget.h. Used by:
+** progressive.c, render.c, cli/main.c.
 */
 #ifndef IRIS_RENDER_MPI_PASSES_H
 #define IRIS_RENDER_MPI_PASSES_H
@@ -17,7 +18,11 @@
 #include <stddef.h>
 #include <stdint.h>
 
-/* MPI_Init (when built with MPI); call once at the start of main. */
+/* MPI_Init (when built with MPI and started by an MPI launcher); call
+** once at the start of main. When the launcher's environment gives this
+** rank, the world size and the ranks on this node, MPI_Init runs on a
+** thread of its own and the first collective waits for it. Tells
+** membudget.h how many ranks share this node's memory. */
 void mpi_passes_init(int *argc, char ***argv);
 
 /* MPI_Finalize when mpi_passes_init initialized MPI. */
@@ -34,11 +39,17 @@ void mpi_passes_bcast_int(int *v, int n);
 
 /*
 ** One decision, the same on every rank: true when rank 0's 'go_root' is
-** true and no rank has 'failed_local' set. vals[0..n-1] (n <= 4, values
-** >= 0) are rank 0's on entry and, on return, rank 0's on every rank
-** (more decisions in the same collective).
+** true and no rank has 'failed_local' > 0 (a failure code, e.g. an
+** iris_status; 0 when this rank is fine). *failed_any (when not NULL)
+** gets the largest rank's code. vals[0..n-1] (n <= 4, values >= 0) are
+** rank 0's on entry and, on return, rank 0's on every rank (more
+** decisions in the same collective). 'each' (NULL: none) has a slot per
+** rank: on entry this rank's value (>= 0) in each[rank], on return every
+** rank's value in its slot (up to 256 ranks; with more, 'each' is left
+** as it is).
 */
-int mpi_passes_agree(int go_root, int failed_local, int *vals, int n);
+int mpi_passes_agree(int go_root, int failed_local, int *vals, int n,
+                     int *each, int *failed_any);
 
 /* Rank 0 gets every rank's mine[0..n-1], rank r's at all[r·n] ('all'
 ** has room for size·n; ignored on the other ranks). */

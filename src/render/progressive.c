@@ -34,24 +34,32 @@
 ** photons; double seconds; then width·height·4 doubles (the RGBA sums,
 ** row 0 first). Written to FILE.tmp, then renamed.
 **
-** MPI (issue 8; mpi_passes.h). Under mpirun with R ranks, pass i runs on
-** rank i mod R, each rank adding its passes into its own sum buffer.
-** Passes go in rounds of R; at an agreement rank 0 decides (passes
-** left, time limit, interrupt) and every rank learns the decision, plus
-** whether any rank failed, in one collective. With a time limit that is
-** every round; with a fixed pass count after 1, 2, 4, ... rounds, at
-** most about AGREE_EVERY_S apart (next_gap() says why). At the end the
-** sums, pass and photon counts are reduced onto rank 0, which averages,
-** reports the pass callback and writes the checkpoint. During the run rank 0 also
-** gets a snapshot (the same reduction into a separate buffer) at an
-** agreement when that costs at most 1/SNAPSHOT_COST_RATIO of the time,
-** and reports it to the pass callback (error-log lines, intermediate
-** images), so a long MPI run logs as it goes, from rank 0 only. Ranks
-** other than 0 do not build pass 0's map (render.c). The image equals the
-** one-rank image up to the order of the double additions. On resume rank
-** 0 reads the checkpoint and carries its sum; the other ranks start from
-** zero at the next pass number. With R = 1 nothing of this changes the
-** run.
+** MPI (issue 8; mpi_passes.h). Under mpirun with R ranks the passes go
+** in blocks of rounds of R passes, each rank adding its passes into its
+** own sum buffer. The first block (one round, pass first + r on rank r)
+** starts at once, without an agreement, so no rank waits for MPI_Init
+** (which mpi_passes.c runs in the background) or for rank 0's pass 0
+** map. At the end of a block the ranks agree: rank 0 decides (passes
+** left, time limit, interrupt, the next block's length, a snapshot) and
+** every rank learns the decision, the largest failure code and every
+** rank's seconds per pass, in one non-blocking collective whose waiting
+** rank sleeps rather than spins. With a time limit a block is one round,
+** one pass per rank; with a fixed pass count blocks double from 1 up to
+** about AGREE_EVERY_S of rounds (next_gap() says why) and their passes
+** are shared in proportion to the ranks' speeds (block_share()). At the
+** end the sums, pass and photon counts are reduced onto rank 0, which
+** averages, reports the pass callback and writes the checkpoint. During
+** the run rank 0 also gets a snapshot (the same reduction into a
+** separate buffer) at an agreement when that costs at most
+** 1/SNAPSHOT_COST_RATIO of the time, and reports it to the pass callback
+** (error-log lines, intermediate images), so a long MPI run logs as it
+** goes, from rank 0 only. Ranks other than 0 do not build pass 0's map
+** (render.c); when rank 0's fails, rank 0 still joins the agreements to
+** stop the others. A pass is the same whichever rank runs it, so the
+** image equals the one-rank image up to the order of the double
+** additions. On resume rank 0 reads the checkpoint and carries its sum;
+** the other ranks start from zero at the next pass number. With R = 1
+** nothing of this changes the run.
 */
 #include "config.h"
 
@@ -60,6 +68,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
+#include <time.h>
 
 #include "photon/photon.h"
 #include "render/eyepass.h"
@@ -314,6 +323,69 @@ static int next_gap(const iris_render_options *opts, int gap, int base,
     return left < 1 ? 1 : g > left ? left : g;
 }
 
+/*
+** MPI: which passes of a block this rank runs. A block is 'blk' = gap·R
+** passes from 'next' (fewer past --passes). The first block, a time
+** limit (rank 0 decides round by round) and more than SHARE_MAX_RANKS
+** ranks: pass next + r + j·R on rank r, one a round. Otherwise the
+** ranks' speeds (each[r]: rank r's microseconds per pass so far, 0
+** unknown) share the block: rank r runs a contiguous run of passes in
+** proportion to 1/each[r], rounded by largest remainder (ties to the
+** lower rank), so a rank slowed by the machine's other load, or rank 0
+** by its snapshots, gets fewer passes and the ranks reach the next
+** agreement together. Every rank computes the same shares from the same
+** agreed numbers. Which rank runs a pass does not change the pass (its
+** random streams are keyed by its number), only the order in which the
+** double sums add up.
+*/
+#define SHARE_MAX_RANKS 256
+
+static void block_share(const iris_render_options *opts, int next, int blk,
+                        int rank, int nranks, const int *each, int *lo,
+                        int *n, int *stride)
+{
+    bool known = each != NULL && opts->time_limit <= 0.0 &&
+                 opts->passes > 0;
+    for (int r = 0; known && r < nranks; r++)
+        known = each[r] > 0;
+    if (!known) {
+        *lo = next + rank;
+        *n = blk / nranks;
+        *stride = nranks;
+        return;
+    }
+    int k = opts->passes - next < blk ? opts->passes - next : blk;
+    if (k < 0)
+        k = 0;
+    double vsum = 0.0;
+    for (int r = 0; r < nranks; r++)
+        vsum += 1.0 / each[r];
+    /* floors first, then the remainders by size */
+    int given = 0, start = next;
+    int cnt[SHARE_MAX_RANKS];
+    double frac[SHARE_MAX_RANKS];
+    for (int r = 0; r < nranks; r++) {
+        double x = k * (1.0 / each[r]) / vsum;
+        cnt[r] = (int)floor(x);
+        frac[r] = x - cnt[r];
+        given += cnt[r];
+    }
+    while (given < k) {
+        int best = 0;
+        for (int r = 1; r < nranks; r++)
+            if (frac[r] > frac[best])
+                best = r;
+        cnt[best]++;
+        frac[best] = -1.0;
+        given++;
+    }
+    for (int r = 0; r < rank; r++)
+        start += cnt[r];
+    *lo = start;
+    *n = cnt[rank];
+    *stride = 1;
+}
+
 /* MPI: where a rank's time went (opts->rank_times, bench/scaling.sh). */
 struct rank_times {
     double work_s;             /* its passes: maps and eye passes */
@@ -327,9 +399,20 @@ struct rank_times {
 ** With opts->rank_times set (the iris command: IRIS_RANK_TIMES in the
 ** environment), rank 0 prints every rank's times there: "iris: rank R: P
 ** passes, work W s, N agreements A s, snapshots S s, final reduce F s,
-** total T s". A rank that waits long at the final reduction finished
-** early: the load was uneven.
+** total T s, cpu C s". A rank that waits long at the final reduction
+** finished early: the load was uneven. C is the process's CPU time since
+** it started (MPI_Init, parse and build included; waits sleep, so they
+** add little): on a loaded machine, where wall times mislead, the
+** largest C is the run's critical path (bench/scaling.sh).
 */
+static double cpu_seconds(void)
+{
+    struct timespec ts;
+    if (clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts) != 0)
+        return 0.0;
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
 static void report_rank_times(FILE *to, const struct rank_times *rt,
                               int passes, double total_s)
 {
@@ -339,24 +422,25 @@ static void report_rank_times(FILE *to, const struct rank_times *rt,
     int n = mpi_passes_size();
     if (n > MAX_RANKS)
         return;
-    enum { K = 7 };
+    enum { K = 8 };
     double mine[K] = { passes, rt->work_s, rt->agreements, rt->agree_s,
-                       rt->snapshot_s, rt->reduce_s, total_s };
+                       rt->snapshot_s, rt->reduce_s, total_s, cpu_seconds() };
     double all[K * MAX_RANKS];
     mpi_passes_gather(mine, K, all);
     for (int r = 0; mpi_passes_rank() == 0 && r < n; r++) {
         const double *v = all + K * r;
         fprintf(to, "iris: rank %d: %.0f passes, work %.3f s, %.0f "
                 "agreements %.3f s, snapshots %.3f s, final reduce %.3f s, "
-                "total %.3f s\n", r, v[0], v[1], v[2], v[3], v[4], v[5],
-                v[6]);
+                "total %.3f s, cpu %.3f s\n", r, v[0], v[1], v[2], v[3],
+                v[4], v[5], v[6], v[7]);
     }
 }
 
 enum iris_status progressive_run(struct tracer *tr, const struct accel *acc,
                                  const struct mat_ctx *mat, int threads,
                                  const iris_render_options *opts,
-                                 double t_start, struct photon_map **map,
+                                 double t_start, enum iris_status pass0,
+                                 struct photon_map **map,
                                  iris_image *out, iris_render_stats *stats,
                                  double *photon_s, char *err, size_t errlen)
 {
@@ -401,6 +485,11 @@ enum iris_status progressive_run(struct tracer *tr, const struct accel *acc,
     }
     if (a.passes > 0)
         accum_average(&a, out);
+    bool failed = false;
+    if (pass0 != IRIS_OK) { /* MPI: rank 0 only stops the others */
+        st = pass0;
+        failed = true;
+    }
 
     const uint64_t seed0 = tr->seed;
     int first = a.passes;
@@ -411,30 +500,55 @@ enum iris_status progressive_run(struct tracer *tr, const struct accel *acc,
     uint64_t bytes = stats ? stats->photon_bytes : 0;
     iris_render_stats es_sum;
     memset(&es_sum, 0, sizeof es_sum);
-    bool failed = false;
     double *snap = NULL; /* rank 0's snapshot buffer (MPI) */
     if (rank == 0 && nranks > 1 && opts->on_pass)
         snap = iris_malloc(accum_len(&a) * sizeof *snap);
     double last_snap = par_now(), snap_cost = 0.0;
     struct rank_times rt = { 0, 0, 0, 0, 0 };
-    int gap = 0, rounds_left = 0; /* rounds until the next agreement */
+    /* MPI: the first block starts without an agreement. Whether it runs
+    ** depends only on --passes and 'first', which every rank knows; a
+    ** failure or an interrupt in it stops all at the next agreement. So
+    ** no rank waits for rank 0's pass 0 map (render.c) or for MPI_Init's
+    ** end (mpi_passes.c) before its first pass. */
+    int gap = 0; /* rounds of R passes in this block */
+    bool agree_now = true;
+    if (nranks > 1 && !(opts->passes > 0 && first >= opts->passes)) {
+        gap = 1;
+        agree_now = false;
+    }
+    int other_failed = 0; /* rank 0: the largest failure code of a rank */
+    /* this rank's seconds per pass, from the passes whose whole cost it
+    ** measured (rank 0's pass 0 map was built in render.c), its
+    ** snapshots included */
+    double rate_s = 0.0;
+    int rate_n = 0;
+    int each_buf[SHARE_MAX_RANKS] = { 0 };
+    /* MPI: every rank's microseconds per pass (the same on all ranks) */
+    int *each = nranks > 1 && nranks <= SHARE_MAX_RANKS ? each_buf : NULL;
     double last_agree = par_now();
-    for (int base = first;; base += nranks) {
-        if (rounds_left == 0) {
-            /* The rounds of passes base.. up to the next agreement,
-            ** decided by rank 0, and whether to report a snapshot of
-            ** the rounds before them */
+    for (int next = first;; ) {
+        if (agree_now) {
+            /* The block of passes from 'next' up to the next agreement,
+            ** decided by rank 0, whether to report a snapshot of the
+            ** blocks before it, and every rank's speed */
             double ta = par_now();
             int go = rank == 0 &&
-                     another_pass(opts, base, first, ta - t_start, last_dt);
+                     another_pass(opts, next, first, ta - t_start, last_dt);
             int vals[2] = {
-                snap && base > first &&
+                snap && next > first &&
                     ta - last_snap >= SNAPSHOT_COST_RATIO * snap_cost,
-                rank == 0 ? next_gap(opts, gap, base, nranks,
+                rank == 0 ? next_gap(opts, gap, next, nranks,
                                      (ta - last_agree) / (gap > 0 ? gap : 1))
                           : 0 };
-            int stop_here = failed || (opts->interrupt && *opts->interrupt);
-            bool more = mpi_passes_agree(go, stop_here, vals, 2);
+            /* failure codes: 1 interrupted, else 1 + the status */
+            int code = failed ? 1 + (int)(st != IRIS_OK ? st : IRIS_EINTR)
+                       : opts->interrupt && *opts->interrupt ? 1
+                                                             : 0;
+            if (each)
+                each[rank] = rate_n > 0 ? (int)fmin(1e9, fmax(1.0,
+                                 1e6 * rate_s / rate_n)) : 0;
+            bool more = mpi_passes_agree(go, code, vals, 2, each,
+                                         &other_failed);
             last_agree = par_now();
             rt.agree_s += last_agree - ta;
             rt.agreements++;
@@ -444,89 +558,119 @@ enum iris_status progressive_run(struct tracer *tr, const struct accel *acc,
                 report_snapshot(&a, snap, opts, out, t_start, &snap_cost,
                                 &last_snap);
                 rt.snapshot_s += par_now() - last_agree;
+                /* rank 0's snapshots (an image write) slow its blocks */
+                rate_s += par_now() - last_agree;
             }
-            gap = rounds_left = vals[1] > 0 ? vals[1] : 1;
+            gap = vals[1] > 0 ? vals[1] : 1;
         }
-        rounds_left--;
-        int p = base + ((rank - base) % nranks + nranks) % nranks;
-        if (nranks > 1 && !another_pass(opts, p, first, 0.0, 0.0))
-            continue; /* past --passes (or --resume's one pass) */
-        if (failed) /* this rank waits for the next agreement to stop */
-            continue;
-        double tp = par_now();
-        if (photons && (p > 0 || *map == NULL)) {
-            struct photon_stats ps;
-            st = build_map(tr, acc, mat, threads, opts->seed, p, map, &ps);
-            if (st != IRIS_OK) {
-                failed = true; /* the next round's agreement stops all */
+        agree_now = true;
+        /* this rank's passes of the block: p = lo + j·stride, j < n */
+        int blk = gap * nranks, lo, n_mine, stride;
+        block_share(opts, next, blk, rank, nranks, each, &lo, &n_mine,
+                    &stride);
+        next += blk;
+        for (int j = 0; j < n_mine; j++) {
+            int p = lo + j * stride;
+            if (nranks > 1 && !another_pass(opts, p, first, 0.0, 0.0))
+                continue; /* past --passes (or --resume's one pass) */
+            if (failed) /* this rank waits for the next agreement to stop */
                 continue;
+            double tp = par_now();
+            bool whole = !photons || p > 0 || *map == NULL;
+            if (photons && (p > 0 || *map == NULL)) {
+                struct photon_stats ps;
+                st = build_map(tr, acc, mat, threads, opts->seed, p, map,
+                               &ps);
+                if (st != IRIS_OK) {
+                    failed = true; /* the next agreement stops all */
+                    continue;
+                }
+                a.photons += (uint64_t)ps.shot;
+                stored = (uint64_t)ps.stored;
+                if ((uint64_t)ps.bytes > bytes)
+                    bytes = (uint64_t)ps.bytes;
+                *photon_s += par_now() - tp;
             }
-            a.photons += (uint64_t)ps.shot;
-            stored = (uint64_t)ps.stored;
-            if ((uint64_t)ps.bytes > bytes)
-                bytes = (uint64_t)ps.bytes;
-            *photon_s += par_now() - tp;
-        }
-        iris_render_options po = *opts;
-        po.progress = NULL;
-        po.plan_out = NULL;
-        po.seed = pass_seed(opts->seed, p);
-        if (p > 0 && po.aa == IRIS_AA_NONE) {
-            po.aa = IRIS_AA_STRATIFIED; /* one jittered sample per pixel */
-            po.aa_depth = 1;
-        }
-        tr->seed = po.seed;
-        iris_render_stats es;
-        memset(&es, 0, sizeof es);
-        st = eyepass_run(tr, &po, threads, &img, &es);
-        es_sum.rays_traced += es.rays_traced;
-        es_sum.nan_pixels += es.nan_pixels;
-        es_sum.threads = es.threads;
-        if (st != IRIS_OK) {
-            if (st == IRIS_EINTR && a.passes == 0) /* the partial image */
-                memcpy(out->pixels, img.pixels,
-                       accum_len(&a) * sizeof *img.pixels);
-            failed = true;
-            continue;
-        }
-        size_t n = accum_len(&a);
-        for (size_t i = 0; i < n; i++)
-            a.sum[i] += img.pixels[i];
-        a.passes++;
-        accum_average(&a, out);
-        double now = par_now();
-        last_dt = now - tp;
-        rt.work_s += last_dt;
-        if (opts->on_pass && nranks == 1) { /* MPI: once, at the end */
-            iris_pass_info info = { a.passes, a.seconds + (now - t_start),
-                                    a.photons,
-                                    progressive_radius_scale(p) };
-            opts->on_pass(opts->on_pass_user, out, &info);
-        }
-        if (opts->progress)
-            opts->progress(opts->progress_user, "passes",
-                           opts->passes > 0 ? (double)(p + 1) / opts->passes
-                           : opts->time_limit > 0.0
-                               ? fmin(1.0, (now - t_start) / opts->time_limit)
-                               : 1.0);
-        if (opts->checkpoint && opts->checkpoint[0] && nranks == 1 &&
-            now - last_ckpt >= CHECKPOINT_EVERY_S) {
-            double keep = a.seconds;
-            a.seconds += now - t_start;
-            enum iris_status cs = ckpt_write(&a, opts->checkpoint);
-            a.seconds = keep;
-            last_ckpt = now;
-            if (cs != IRIS_OK) {
-                set_err(err, errlen, opts->checkpoint,
-                        "cannot write the checkpoint");
-                st = cs;
+            iris_render_options po = *opts;
+            po.progress = NULL;
+            po.plan_out = NULL;
+            po.seed = pass_seed(opts->seed, p);
+            if (p > 0 && po.aa == IRIS_AA_NONE) {
+                /* one jittered sample per pixel */
+                po.aa = IRIS_AA_STRATIFIED;
+                po.aa_depth = 1;
+            }
+            tr->seed = po.seed;
+            iris_render_stats es;
+            memset(&es, 0, sizeof es);
+            st = eyepass_run(tr, &po, threads, &img, &es);
+            es_sum.rays_traced += es.rays_traced;
+            es_sum.nan_pixels += es.nan_pixels;
+            es_sum.threads = es.threads;
+            if (st != IRIS_OK) {
+                if (st == IRIS_EINTR && a.passes == 0) /* partial image */
+                    memcpy(out->pixels, img.pixels,
+                           accum_len(&a) * sizeof *img.pixels);
                 failed = true;
                 continue;
+            }
+            size_t n = accum_len(&a);
+            for (size_t i = 0; i < n; i++)
+                a.sum[i] += img.pixels[i];
+            a.passes++;
+            accum_average(&a, out);
+            double now = par_now();
+            last_dt = now - tp;
+            rt.work_s += last_dt;
+            if (whole) {
+                rate_s += last_dt;
+                rate_n++;
+            }
+            if (opts->on_pass && nranks == 1) { /* MPI: once, at the end */
+                iris_pass_info info = { a.passes,
+                                        a.seconds + (now - t_start),
+                                        a.photons,
+                                        progressive_radius_scale(p) };
+                opts->on_pass(opts->on_pass_user, out, &info);
+            }
+            if (opts->progress) {
+                double tl = opts->time_limit;
+                opts->progress(opts->progress_user, "passes",
+                               opts->passes > 0
+                                   ? (double)(p + 1) / opts->passes
+                               : tl > 0.0 ? fmin(1.0, (now - t_start) / tl)
+                                          : 1.0);
+            }
+            if (opts->checkpoint && opts->checkpoint[0] && nranks == 1 &&
+                now - last_ckpt >= CHECKPOINT_EVERY_S) {
+                double keep = a.seconds;
+                a.seconds += now - t_start;
+                enum iris_status cs = ckpt_write(&a, opts->checkpoint);
+                a.seconds = keep;
+                last_ckpt = now;
+                if (cs != IRIS_OK) {
+                    set_err(err, errlen, opts->checkpoint,
+                            "cannot write the checkpoint");
+                    st = cs;
+                    failed = true;
+                    continue;
+                }
             }
         }
     }
     tr->seed = seed0;
     iris_free(snap);
+    if (st == IRIS_OK && other_failed > 1 && rank == 0) {
+        /* another rank failed (its message went to its own log): so does
+        ** the run, with that rank's status */
+        st = (enum iris_status)(other_failed - 1);
+        set_err(err, errlen, "progressive",
+                st == IRIS_ENOMEM ? "another MPI rank ran out of memory"
+                : st == IRIS_EINVAL
+                    ? "another MPI rank's photon pass exceeded its memory "
+                      "share"
+                    : "another MPI rank failed");
+    }
     if (nranks > 1) {
         /* rank 0 gets the sum of every rank's passes */
         double tr0 = par_now();

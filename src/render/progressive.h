@@ -46,11 +46,20 @@ double progressive_radius_scale(int pass);
 ** (on IRIS_EINTR too). Returns IRIS_OK, IRIS_ENOMEM, IRIS_EINVAL (an empty
 ** window), IRIS_EIO (a checkpoint that cannot be read or written, or does
 ** not fit this render; message in 'err') or IRIS_EINTR.
+**
+** 'pass0' is the caller's status of pass 0's map. Under MPI that map is
+** rank 0's alone, and when it failed rank 0 still joins the other ranks'
+** collectives to stop them (no rank waits for ever); progressive_run
+** then returns 'pass0' with 'err' as the caller left it. Otherwise
+** IRIS_OK; with one rank the caller does not call it on a failure.
+** Rank 0 returns another rank's failure as its own status (a message in
+** 'err').
 */
 enum iris_status progressive_run(struct tracer *tr, const struct accel *acc,
                                  const struct mat_ctx *mat, int threads,
                                  const iris_render_options *opts,
-                                 double t_start, struct photon_map **map,
+                                 double t_start, enum iris_status pass0,
+                                 struct photon_map **map,
                                  iris_image *out, iris_render_stats *stats,
                                  double *photon_s, char *err, size_t errlen);
 

@@ -5,7 +5,7 @@
 # --resume, --reference, --error-log, SIGINT. Exact comparisons use
 # imgdiff (largest absolute difference of linear values, 0 = identical).
 . "$top_srcdir/tests/tap.sh"
-tap_plan 17
+tap_plan 19
 scene="$top_srcdir/tests/progressive/ball.pov"
 imgdiff="$top_builddir/tests/progressive/imgdiff"
 tmp=$(mktemp -d)
@@ -104,4 +104,17 @@ m2=$(sed -n 's/.*"peak_rss_bytes": \([0-9]*\).*/\1/p' "$tmp/m2.json")
 m8=$(sed -n 's/.*"peak_rss_bytes": \([0-9]*\).*/\1/p' "$tmp/m8.json")
 tap_ok "flat memory: peak RSS $m2 (2 passes), $m8 (8 passes)" \
     test $((m8 - m2)) -lt 1500000
+# --node-memory (the machine's limit for all MPI ranks on it; one
+# process here): a bad size is a usage error; a limit below what pass 0
+# needs stops the run with the located error (exit 2)
+"$IRIS" -q "$scene" +W8 +H8 --node-memory=12X -o "$tmp/nm.png" \
+    2>"$tmp/nm.err"
+rc=$?
+tap_ok "--node-memory=12X is a usage error naming the option" \
+    test "$rc" = 2 -a -n "$(grep -- '--node-memory=12X: expected a size' "$tmp/nm.err")"
+"$IRIS" -q "$scene" +W8 +H8 --node-memory=1M -o "$tmp/nm.png" \
+    2>"$tmp/nm.err"
+rc=$?
+tap_ok "--node-memory=1M: exit 2, the error names it (rc $rc)" \
+    test "$rc" = 2 -a -n "$(grep 'error: photons: .* --node-memory leaves' "$tmp/nm.err")"
 [ "$tap_failed" -eq 0 ]
