@@ -18,11 +18,22 @@
 ** spiral over the projected disc: stratified, and the same set at every
 ** sample, so neighbouring samples err alike and the image shows no
 ** blotches, as with POV-Ray's fixed direction pool); each is traced as an
-** ordinary ray (gi_depth 1: no highlights, no further gather, the global
-** map instead when recursion_limit >= 2). The sample is the mean of what
+** ordinary ray (gi_depth 1: no highlights; the global map when
+** recursion_limit >= 2, or another gather there when the scene has no
+** global map, see Recursion below). The sample is the mean of what
 ** they return (no cosine factor: the directions carry it), its validity
 ** radius the harmonic mean of their hit distances clamped to
 ** [minimum_reuse, maximum_reuse] x the distance to the camera.
+**
+** Recursion: with recursion_limit >= 2 the hits of gather rays gather
+** again, as POV-Ray's do, down to recursion_limit levels: everything in
+** a scene with no light that casts shadows (no global map), and beside a
+** global map, which holds only the light sources' bounces, the rest
+** (rays that see no light source: sky, emission, ambient), each with
+** POV-Ray's settings for its depth d (RadiosityRecursionSettings):
+** max(5, count / 2^d) rays, error bound and reuse radii x 2^d, reuse
+** count nearest_count, 2, then 1. Records keep their depth and serve only
+** lookups of the same depth.
 **
 ** Reuse (POV-Ray's AverageNearBlock): a record at distance d with radius
 ** r (shrunk towards its nearest hit in that direction) and normal n' has
@@ -44,7 +55,9 @@
 **
 ** The shared cache is a multi-level hash grid: a record of influence
 ** radius R sits at the level whose cells are >= 2R wide, in the (at most
-** 8) cells its sphere touches, so a lookup visits one cell per level.
+** 8) cells its sphere touches, so a lookup visits one cell per level;
+** the tiles' own lists have the same kind of grid. As in POV-Ray's
+** octree, a record is found only inside its node's cube (pov_node).
 */
 #include "config.h"
 
@@ -69,6 +82,7 @@
 #define FILL_STEP 4               /* pixels: the pretrace's finest step */
 #define GI_CAUSTIC_K 20          /* caustic photons a gather hit reads */
 #define GOLDEN_ANGLE 2.399963229728653 /* pi (3 - sqrt 5) */
+#define MAX_DEPTH 8              /* recursion levels gathered (POV-Ray: 20) */
 
 struct grec {
     vec3 p, n;                 /* point, unit normal facing the eye */
@@ -76,6 +90,9 @@ struct grec {
     double ri;                 /* harmonic mean distance, clamped */
     double near;               /* distance of the nearest hit */
     float e[3];                /* mean radiance (before brightness) */
+    int depth;                 /* the bounce it serves: 0 = eye hits */
+    vec3 nc;                   /* centre and half-size of the cube where */
+    double ns;                 /* POV-Ray's octree finds it (pov_node) */
 };
 
 struct grec_list {
@@ -83,8 +100,30 @@ struct grec_list {
     size_t n, cap;
 };
 
+/* A tile's own records, with a hash grid of the same levels and cells
+** as the shared one (grid_build), so that a lookup does not scan the
+** list: with recursion the deeper levels add thousands of records per
+** tile, and the scan was 90% of the render time. */
+struct lslot {
+    int32_t lvl;
+    int64_t ix, iy, iz;
+    uint32_t head;             /* first node; UINT32_MAX = empty slot */
+};
+
+struct lnode {
+    uint32_t rec, next;
+};
+
 struct gather_local {
     struct grec_list l;
+    struct lslot *slots;
+    size_t mask;               /* slots - 1 (a power of two), or 0 */
+    size_t *used;              /* the slots taken, to clear them */
+    size_t n_used;
+    struct lnode *nodes;
+    size_t n_nodes, cap_nodes;
+    int n_levels;
+    int levels[MAX_LEVELS * MAX_DEPTH]; /* lvl_key()s present */
 };
 
 struct gcell {
@@ -97,15 +136,19 @@ struct gather {
     const iris_scene *scene;
     iris_radiosity_settings rs;
     vec3 eye;                  /* camera location: reuse radii scale */
-    int count;
-    vec3 *dirs;                /* count directions, z = the normal */
+    int depths;                /* levels that gather: 1, or
+                                  recursion_limit when gathering recursively */
+    bool split;                /* recursing beside a global map: deeper
+                                  levels gather only the sky's light */
+    int count[MAX_DEPTH];      /* rays per sample at each level */
+    vec3 *dirs[MAX_DEPTH];     /* their directions, z = the normal */
     bool pretrace;             /* the pretrace is running */
     bool strict;               /* its POV-Ray steps (pretrace_start to
                                   pretrace_end): reuse needs nearest_count */
     double eb;                 /* the error bound of this phase */
     struct grec_list all;      /* the shared cache */
     int n_levels;
-    int levels[MAX_LEVELS];
+    int levels[MAX_LEVELS * MAX_DEPTH]; /* lvl_key()s present */
     struct gcell *cells;
     size_t cells_mask;
     uint32_t *idx;
@@ -113,9 +156,18 @@ struct gather {
     struct photon_map view_gi; /* what gather rays' hits read */
 };
 
-bool gather_pretracing(const struct gather *g)
+bool gather_at_depth(const struct gather *g, int gi_depth)
 {
-    return g && g->pretrace;
+    return g && gi_depth < g->depths;
+}
+
+bool gather_lit(const struct gather *g, int gi_depth)
+{
+    if (!g)
+        return true;
+    if (gi_depth == 0)
+        return !g->pretrace;
+    return !(g->split && gi_depth >= 2);
 }
 
 bool gather_wanted(const struct tracer *t)
@@ -142,11 +194,68 @@ static bool list_push(struct grec_list *l, const struct grec *r)
     return true;
 }
 
-/* The largest error bound a lookup uses: eb + 0.25 for the faintest
-** rays (gather_irradiance). */
-static double max_bound(const struct gather *g)
+/* The largest error bound a lookup at 'depth' uses: eb + 0.25 for the
+** faintest rays (gather_irradiance), doubled per level (POV-Ray's
+** errorBoundFactor). */
+static double max_bound(const struct gather *g, int depth)
 {
-    return g->rs.error_bound + 0.25;
+    return ldexp(g->rs.error_bound + 0.25, depth);
+}
+
+/*
+** Where POV-Ray's octree can find record 'r' (octree.cpp ot_index_sphere,
+** ot_point_in_node): the smallest power-of-two node whose cube, widened
+** by half its size on every side, holds the box of half-size
+** ri x error_bound x 2^depth / overfill about the point, with overfill 1
+** for eye hits and 8 deeper. A lookup outside that cube misses the record
+** even where its error would allow it: at depth >= 1 this makes reuse
+** about four times more local than the error bound says, which is
+** POV-Ray's choice (fewer records per lookup) and decides how many
+** deeper samples it takes.
+*/
+#define OT_BIAS 1e7              /* POV-Ray's octree origin offset */
+static void pov_node(const struct gather *g, struct grec *r)
+{
+    double rad = r->ri * ldexp(g->rs.error_bound, r->depth) /
+                 (r->depth ? 8.0 : 1.0);
+    int e;
+    (void)frexp(2.0 * rad, &e);
+    double s = 2.0 * rad > 0.0 && isfinite(rad) ? ldexp(1.0, e - 1) : 1.0;
+    const double p[3] = { r->p.x, r->p.y, r->p.z };
+    double id[3];
+    for (int k = 0; k < 3; k++)
+        id[k] = floor((p[k] + OT_BIAS) / s);
+    for (int it = 0; it < 256; it++) {
+        bool in = true;
+        for (int k = 0; k < 3 && in; k++) {
+            double c = (id[k] + 0.5) * s - OT_BIAS;
+            in = fabs(p[k] - rad - c) < s && fabs(p[k] + rad - c) < s;
+        }
+        if (in)
+            break;
+        for (int k = 0; k < 3; k++)
+            id[k] = floor(id[k] / 2.0);
+        s *= 2.0;
+    }
+    r->nc = v3((id[0] + 0.5) * s - OT_BIAS, (id[1] + 0.5) * s - OT_BIAS,
+               (id[2] + 0.5) * s - OT_BIAS);
+    r->ns = s;
+}
+
+/* The box a lookup can reuse 'r' in: its sphere of influence for the
+** largest error bound, cut by its octree cube. */
+static void rec_box(const struct gather *g, const struct grec *r,
+                    double lo[3], double hi[3])
+{
+    double R = r->ri * max_bound(g, r->depth);
+    const double p[3] = { r->p.x, r->p.y, r->p.z };
+    const double c[3] = { r->nc.x, r->nc.y, r->nc.z };
+    for (int k = 0; k < 3; k++) {
+        lo[k] = fmax(p[k] - R, c[k] - r->ns);
+        hi[k] = fmin(p[k] + R, c[k] + r->ns);
+        if (hi[k] < lo[k])
+            hi[k] = lo[k];
+    }
 }
 
 static int64_t cell_of(double v, double s)
@@ -167,6 +276,18 @@ static int rec_level(double rinf)
 {
     int l = (int)ceil(log2(fmax(2.0 * rinf, 1e-12)));
     return l < -40 ? -40 : l > 60 ? 60 : l;
+}
+
+/* Cells are keyed by level and recursion depth together, so that a
+** lookup walks only the records of its own depth. */
+static int lvl_key(int l, int depth)
+{
+    return l + MAX_LEVELS * depth;
+}
+
+static int key_depth(int key)
+{
+    return (key + MAX_LEVELS / 2) / MAX_LEVELS;
 }
 
 struct cpair {
@@ -206,26 +327,29 @@ static enum iris_status grid_build(struct gather *g)
     if (!pairs)
         return IRIS_ENOMEM;
     size_t np = 0;
-    double ebm = max_bound(g);
-    bool seen[MAX_LEVELS] = { false };
+    bool seen[MAX_DEPTH][MAX_LEVELS] = { { false } };
     for (size_t i = 0; i < n; i++) {
         const struct grec *r = &g->all.r[i];
-        double R = r->ri * ebm;
+        double bl[3], bh[3];
+        rec_box(g, r, bl, bh);
+        double R = 0.5 * fmax(bh[0] - bl[0], fmax(bh[1] - bl[1], bh[2] - bl[2]));
         int l = rec_level(R);
         double s = ldexp(1.0, l);
-        seen[l + 40] = true;
-        int64_t lo[3] = { cell_of(r->p.x - R, s), cell_of(r->p.y - R, s),
-                          cell_of(r->p.z - R, s) };
-        int64_t hi[3] = { cell_of(r->p.x + R, s), cell_of(r->p.y + R, s),
-                          cell_of(r->p.z + R, s) };
+        seen[r->depth][l + 40] = true;
+        int64_t lo[3] = { cell_of(bl[0], s), cell_of(bl[1], s),
+                          cell_of(bl[2], s) };
+        int64_t hi[3] = { cell_of(bh[0], s), cell_of(bh[1], s),
+                          cell_of(bh[2], s) };
         for (int64_t x = lo[0]; x <= hi[0] && x <= lo[0] + 1; x++)
             for (int64_t y = lo[1]; y <= hi[1] && y <= lo[1] + 1; y++)
                 for (int64_t z = lo[2]; z <= hi[2] && z <= lo[2] + 1; z++)
-                    pairs[np++] = (struct cpair){ l, x, y, z, (uint32_t)i };
+                    pairs[np++] = (struct cpair){ lvl_key(l, r->depth),
+                                                  x, y, z, (uint32_t)i };
     }
-    for (int l = 0; l < MAX_LEVELS; l++)
-        if (seen[l])
-            g->levels[g->n_levels++] = l - 40;
+    for (int d = 0; d < MAX_DEPTH; d++)
+        for (int l = 0; l < MAX_LEVELS; l++)
+            if (seen[d][l])
+                g->levels[g->n_levels++] = lvl_key(l - 40, d);
     qsort(pairs, np, sizeof *pairs, cpair_cmp);
     size_t n_cells = 0;
     for (size_t i = 0; i < np; i++)
@@ -273,12 +397,16 @@ struct lookup {
     vec3 p, n;
     double eb;
     bool smooth;               /* the final pass's weights */
+    int depth;                 /* records of this level only */
     double w, sum[3];
 };
 
 /* POV-Ray's AverageNearBlock for one record. */
 static void consider(struct lookup *q, const struct grec *r)
 {
+    if (r->depth != q->depth || fabs(q->p.x - r->nc.x) >= r->ns ||
+        fabs(q->p.y - r->nc.y) >= r->ns || fabs(q->p.z - r->nc.z) >= r->ns)
+        return;
     vec3 delta = v3_sub(q->p, r->p);
     double d2 = v3_len2(delta);
     double quick = r->ri * q->eb;
@@ -323,22 +451,139 @@ static void lookup_shared(const struct gather *g, struct lookup *q)
     if (!g->cells)
         return;
     for (int i = 0; i < g->n_levels; i++) {
-        int l = g->levels[i];
-        double s = ldexp(1.0, l);
+        int key = g->levels[i];
+        if (key_depth(key) != q->depth)
+            continue;
+        double s = ldexp(1.0, key - MAX_LEVELS * q->depth);
         int64_t ix = cell_of(q->p.x, s), iy = cell_of(q->p.y, s),
                 iz = cell_of(q->p.z, s);
-        size_t slot = cell_hash(l, ix, iy, iz) & g->cells_mask;
+        size_t slot = cell_hash(key, ix, iy, iz) & g->cells_mask;
         for (;;) {
             const struct gcell *c = &g->cells[slot];
             if (c->count == 0)
                 break;
-            if (c->lvl == l && c->ix == ix && c->iy == iy && c->iz == iz) {
+            if (c->lvl == key && c->ix == ix && c->iy == iy && c->iz == iz) {
                 for (uint32_t k = 0; k < c->count; k++)
                     consider(q, &g->all.r[g->idx[c->first + k]]);
                 break;
             }
             slot = (slot + 1) & g->cells_mask;
         }
+    }
+}
+
+static struct lslot *local_slot(struct gather_local *gl, int32_t lvl,
+                                 int64_t ix, int64_t iy, int64_t iz)
+{
+    size_t slot = cell_hash(lvl, ix, iy, iz) & gl->mask;
+    for (;;) {
+        struct lslot *c = &gl->slots[slot];
+        if (c->head == UINT32_MAX ||
+            (c->lvl == lvl && c->ix == ix && c->iy == iy && c->iz == iz))
+            return c;
+        slot = (slot + 1) & gl->mask;
+    }
+}
+
+static void local_clear(struct gather_local *gl)
+{
+    for (size_t i = 0; i < gl->n_used; i++)
+        gl->slots[gl->used[i]].head = UINT32_MAX;
+    gl->n_used = 0;
+    gl->n_nodes = 0;
+    gl->n_levels = 0;
+    gl->l.n = 0;
+}
+
+/* Files record 'i' of gl->l in the cells its sphere of influence
+** touches. Returns false when out of memory. */
+static bool local_index(const struct gather *g, struct gather_local *gl,
+                        uint32_t i);
+
+/* Rebuilds the local grid, twice as large, over gl->l. */
+static bool local_grow(const struct gather *g, struct gather_local *gl)
+{
+    size_t cap = gl->mask ? 2 * (gl->mask + 1) : 1024;
+    struct lslot *ns = iris_malloc(cap * sizeof *ns);
+    size_t *nu = iris_malloc(cap * sizeof *nu);
+    if (!ns || !nu) {
+        iris_free(ns);
+        iris_free(nu);
+        return false;
+    }
+    for (size_t k = 0; k < cap; k++)
+        ns[k].head = UINT32_MAX;
+    iris_free(gl->slots);
+    iris_free(gl->used);
+    gl->slots = ns;
+    gl->used = nu;
+    gl->mask = cap - 1;
+    gl->n_used = 0;
+    gl->n_nodes = 0;
+    gl->n_levels = 0;
+    for (size_t k = 0; k < gl->l.n; k++)
+        if (!local_index(g, gl, (uint32_t)k))
+            return false;
+    return true;
+}
+
+static bool local_index(const struct gather *g, struct gather_local *gl,
+                        uint32_t i)
+{
+    const struct grec *r = &gl->l.r[i];
+    double bl[3], bh[3];
+    rec_box(g, r, bl, bh);
+    double R = 0.5 * fmax(bh[0] - bl[0], fmax(bh[1] - bl[1], bh[2] - bl[2]));
+    int lv = rec_level(R), l = lvl_key(lv, r->depth);
+    double s = ldexp(1.0, lv);
+    int64_t lo[3] = { cell_of(bl[0], s), cell_of(bl[1], s),
+                      cell_of(bl[2], s) };
+    int64_t hi[3] = { cell_of(bh[0], s), cell_of(bh[1], s),
+                      cell_of(bh[2], s) };
+    /* at most 8 new cells: keep the table at most half full */
+    if (!gl->mask || 2 * (gl->n_used + 8) > gl->mask + 1)
+        return local_grow(g, gl);
+    if (gl->n_nodes + 8 > gl->cap_nodes) {
+        size_t cap = gl->cap_nodes ? 2 * gl->cap_nodes : 1024;
+        struct lnode *nn = iris_realloc(gl->nodes, cap * sizeof *nn);
+        if (!nn)
+            return false;
+        gl->nodes = nn;
+        gl->cap_nodes = cap;
+    }
+    bool known = false;
+    for (int k = 0; k < gl->n_levels && !known; k++)
+        known = gl->levels[k] == l;
+    if (!known)
+        gl->levels[gl->n_levels++] = l;
+    for (int64_t x = lo[0]; x <= hi[0] && x <= lo[0] + 1; x++)
+        for (int64_t y = lo[1]; y <= hi[1] && y <= lo[1] + 1; y++)
+            for (int64_t z = lo[2]; z <= hi[2] && z <= lo[2] + 1; z++) {
+                struct lslot *c = local_slot(gl, l, x, y, z);
+                if (c->head == UINT32_MAX) {
+                    *c = (struct lslot){ l, x, y, z, UINT32_MAX };
+                    gl->used[gl->n_used++] = (size_t)(c - gl->slots);
+                }
+                gl->nodes[gl->n_nodes] = (struct lnode){ i, c->head };
+                c->head = (uint32_t)gl->n_nodes++;
+            }
+    return true;
+}
+
+/* The records of gl->l that may be reused at q (each once). */
+static void lookup_local(struct gather_local *gl, struct lookup *q)
+{
+    if (!gl->mask)
+        return;
+    for (int i = 0; i < gl->n_levels; i++) {
+        int l = gl->levels[i];
+        if (key_depth(l) != q->depth)
+            continue;
+        double s = ldexp(1.0, l - MAX_LEVELS * q->depth);
+        struct lslot *c = local_slot(gl, l, cell_of(q->p.x, s),
+                                     cell_of(q->p.y, s), cell_of(q->p.z, s));
+        for (uint32_t k = c->head; k != UINT32_MAX; k = gl->nodes[k].next)
+            consider(q, &gl->l.r[gl->nodes[k].rec]);
     }
 }
 
@@ -355,15 +600,19 @@ static bool gather_sample(struct trace_ctx *c, const struct gather *g,
     const struct tracer *t = c->t;
     vec3 a, b;
     v3_basis(n, &a, &b);
-    double to_eye = v3_len(v3_sub(g->eye, h->p));
-    double min_d = to_eye * g->rs.minimum_reuse;
-    double max_d = to_eye * g->rs.maximum_reuse;
     /* what a gather ray changes in the context, restored below */
     int level = c->level, depth = c->gi_depth;
+    /* POV-Ray's settings per level: reuse radii doubled, rays halved
+    ** (at least 5), the rays' weight (brightness / 2)^(depth + 1) */
+    double to_eye = v3_len(v3_sub(g->eye, h->p));
+    double min_d = ldexp(to_eye * g->rs.minimum_reuse, depth);
+    double max_d = ldexp(to_eye * g->rs.maximum_reuse, depth);
+    const vec3 *dirs = g->dirs[depth];
+    int count = g->count[depth];
     double transm = c->transm;
     bool spectral = c->spectral;
     c->gi_depth = depth + 1;
-    double wt = fmax(t->adc + 1e-6, 0.5 * g->rs.brightness);
+    double wt = fmax(t->adc + 1e-6, pow(0.5 * g->rs.brightness, depth + 1));
     double sum[3] = { 0, 0, 0 }, inv = 0.0, nearest = HUGE_VAL;
     vec3 near_dir = n;
     struct tray gr;
@@ -371,8 +620,8 @@ static bool gather_sample(struct trace_ctx *c, const struct gather *g,
     gr.reflected = true;
     gr.r.o = h->p;
     gr.tmin = h->eps;
-    for (int i = 0; i < g->count; i++) {
-        vec3 l = g->dirs[i];
+    for (int i = 0; i < count; i++) {
+        vec3 l = dirs[i];
         gr.r.d = v3_norm(v3_add(v3_add(v3_scale(a, l.x), v3_scale(b, l.y)),
                                 v3_scale(n, l.z)));
         double col[3];
@@ -399,17 +648,19 @@ static bool gather_sample(struct trace_ctx *c, const struct gather *g,
     c->transm = transm;
     c->spectral = spectral;
     for (int k = 0; k < 3; k++)
-        e[k] = sum[k] / g->count;
+        e[k] = sum[k] / count;
     /* almost touching another surface: rays may have slipped through it
     ** (POV-Ray's rule) */
     if (!(nearest > max_d * 1e-4))
         return false;
-    double mean = inv > 0.0 ? g->count / inv : HUGE_VAL;
+    double mean = inv > 0.0 ? count / inv : HUGE_VAL;
     mean = fmin(fmax(mean, min_d), max_d);
     if (!(mean > 0.0) || !isfinite(mean))
         return false;
     *rec = (struct grec){ h->p, n, near_dir, mean, fmin(nearest, mean),
-                          { (float)e[0], (float)e[1], (float)e[2] } };
+                          { (float)e[0], (float)e[1], (float)e[2] }, depth,
+                          v3(0, 0, 0), 0.0 };
+    pov_node(g, rec);
     return true;
 }
 
@@ -426,15 +677,24 @@ void gather_irradiance(struct trace_ctx *c, const struct tray *eye,
         if (!c->gl)
             return;
     }
-    struct lookup q = { h->p, n, g->eb, !g->pretrace, 0.0, { 0, 0, 0 } };
+    int depth = c->gi_depth;
+    if (depth >= g->depths)
+        return;
+    /* the final pass's smooth weights only for eye hits (POV-Ray's) */
+    struct lookup q = { h->p, n, g->eb, !g->pretrace && depth == 0, depth,
+                        0.0, { 0, 0, 0 } };
     /* faint rays may reuse from farther (POV-Ray's weight offset) */
     if (weight < 0.25)
         q.eb += 0.25 - weight;
+    q.eb = ldexp(q.eb, depth);
     lookup_shared(g, &q);
-    for (size_t i = 0; i < c->gl->l.n; i++)
-        consider(&q, &c->gl->l.r[i]);
+    lookup_local(c->gl, &q);
     double e[3];
-    bool enough = g->strict ? 4.0 * q.w >= g->rs.nearest_count
+    /* POV-Ray's reuse count: nearest_count, then 2, then 1 */
+    int need = depth == 0 ? g->rs.nearest_count
+               : depth == 1 ? (g->rs.nearest_count < 2 ? g->rs.nearest_count : 2)
+                            : 1;
+    bool enough = g->strict ? 4.0 * q.w >= need
                             : q.w > 0.0 && !g->rs.always_sample;
     if (enough) {
         for (int k = 0; k < 3; k++)
@@ -443,8 +703,9 @@ void gather_irradiance(struct trace_ctx *c, const struct tray *eye,
         struct grec rec;
         double en[3];
         if (gather_sample(c, g, eye, h, n, en, &rec) &&
-            c->gl->l.n < LOCAL_MAX)
-            list_push(&c->gl->l, &rec);
+            c->gl->l.n < LOCAL_MAX && list_push(&c->gl->l, &rec) &&
+            !local_index(g, c->gl, (uint32_t)(c->gl->l.n - 1)))
+            c->gl->l.n--; /* out of memory: not kept */
         /* blended with what could be reused, as POV-Ray does */
         for (int k = 0; k < 3; k++)
             e[k] = (q.sum[k] + en[k]) / (q.w + 1.0);
@@ -458,13 +719,16 @@ void gather_irradiance(struct trace_ctx *c, const struct tray *eye,
 void gather_tile_begin(struct trace_ctx *c)
 {
     if (c->gl)
-        c->gl->l.n = 0;
+        local_clear(c->gl);
 }
 
 void gather_ctx_fini(struct trace_ctx *c)
 {
     if (c->gl) {
         iris_free(c->gl->l.r);
+        iris_free(c->gl->slots);
+        iris_free(c->gl->used);
+        iris_free(c->gl->nodes);
         iris_free(c->gl);
         c->gl = NULL;
     }
@@ -534,7 +798,9 @@ static void pre_tile(void *vctx, int64_t item, int thread)
     }
     /* hand the tile's records over (the list moves, nothing is copied) */
     if (c->gl) {
-        j->out[item] = c->gl->l;
+        struct grec_list l = c->gl->l;
+        local_clear(c->gl);
+        j->out[item] = l;
         memset(&c->gl->l, 0, sizeof c->gl->l);
     }
 }
@@ -632,24 +898,50 @@ enum iris_status gather_begin(struct tracer *t,
     if (g->rs.minimum_reuse > g->rs.maximum_reuse)
         g->rs.minimum_reuse = g->rs.maximum_reuse;
     g->eye = t->scene->camera.location;
-    g->count = g->rs.count;
     g->eb = g->rs.error_bound;
-    g->dirs = iris_calloc((size_t)g->count, sizeof *g->dirs);
-    if (!g->dirs) {
-        iris_free(g);
-        return IRIS_ENOMEM;
-    }
+    /* Later bounces: from the global photon map when the scene's lights
+    ** fill one; with none (light only from emission, ambient or the sky)
+    ** the map would be empty, so the gather rays' hits gather again, as
+    ** POV-Ray's do, down to recursion_limit levels. */
+    int rl = g->rs.recursion_limit;
+    /* With a global map, the map carries the light sources' further
+    ** bounces but not those of the sky, emission or (#version < 3.7)
+    ** ambient: the gather rays' hits then gather too, and their rays see
+    ** no light source (no direct light, no photons), only that light and
+    ** their own deeper gathers, so nothing is counted twice. (In a scene
+    ** with none of it those deeper gathers return 0: 81_radiosity_room
+    ** costs 25% more for them; finding emission would mean walking every
+    ** texture.) */
+    const iris_scene *sc = t->scene;
+    bool global = pmap_wants_global(sc);
+    const struct photon_map *pm = t->photon_map;
+    g->split = rl >= 2 && global && pm && pm->global;
+    g->depths = rl >= 2 && (!global || g->split)
+                    ? (rl < MAX_DEPTH ? rl : MAX_DEPTH) : 1;
     /* Malley's method over a golden-angle spiral: points spread evenly
     ** over the unit disc, lifted to the hemisphere, are cosine
     ** distributed. The spiral turns by an angle keyed by the seed, so
     ** that progressive passes (each with its own seed) average different
-    ** direction sets; cos^2 theta stays on the midpoints of its strata. */
+    ** direction sets; cos^2 theta stays on the midpoints of its strata.
+    ** Level d has POV-Ray's max(5, count / 2^d) rays, its own set. */
     double turn = 2.0 * M_PI * (double)(rng_mix64(opts->seed ^ 0x676174686572ULL)
                                         >> 11) * 0x1p-53;
-    for (int i = 0; i < g->count; i++) {
-        double u = (i + 0.5) / g->count, r = sqrt(u);
-        double ph = GOLDEN_ANGLE * i + turn;
-        g->dirs[i] = v3(r * cos(ph), r * sin(ph), sqrt(fmax(0.0, 1.0 - u)));
+    for (int d = 0; d < g->depths; d++) {
+        int cnt = (int)ldexp(g->rs.count, -d);
+        g->count[d] = cnt > 5 ? cnt : 5;
+        g->dirs[d] = iris_calloc((size_t)g->count[d], sizeof *g->dirs[d]);
+        if (!g->dirs[d]) {
+            for (int k = 0; k < d; k++)
+                iris_free(g->dirs[k]);
+            iris_free(g);
+            return IRIS_ENOMEM;
+        }
+        for (int i = 0; i < g->count[d]; i++) {
+            double u = (i + 0.5) / g->count[d], r = sqrt(u);
+            double ph = GOLDEN_ANGLE * i + turn;
+            g->dirs[d][i] = v3(r * cos(ph), r * sin(ph),
+                               sqrt(fmax(0.0, 1.0 - u)));
+        }
     }
     t->photon_map_gather = t->photon_map;
     if (t->photon_map) {
@@ -688,6 +980,7 @@ void gather_end(struct tracer *t)
         return;
     grid_free(g);
     iris_free(g->all.r);
-    iris_free(g->dirs);
+    for (int d = 0; d < g->depths; d++)
+        iris_free(g->dirs[d]);
     iris_free(g);
 }

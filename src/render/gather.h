@@ -41,9 +41,18 @@ enum iris_status gather_begin(struct tracer *t,
                               const struct interior_stack *cam);
 void gather_end(struct tracer *t);
 
-/* True while 'g' fills its cache: eye hits then need no light of their
-** own (POV-Ray's pretrace skips it too). */
-bool gather_pretracing(const struct gather *g);
+
+/* True when a hit at gather level 'gi_depth' (0: eye hits, 1: the hits
+** of their gather rays, ...) gathers: level 0 always, deeper levels when
+** the gather recurses (a scene without light sources, recursion_limit
+** >= 2; see gather_begin). */
+bool gather_at_depth(const struct gather *g, int gi_depth);
+
+/* False at a hit of level 'gi_depth' that takes no light from light
+** sources: the pretrace's eye hits (they only place samples, as in
+** POV-Ray) and, when the gather recurses beside a global map, the hits
+** of deeper gathers (the map carries that light; see gather_begin). */
+bool gather_lit(const struct gather *g, int gi_depth);
 
 /* A new tile on 'c': forgets the records 'c' made for the last tile. */
 void gather_tile_begin(struct trace_ctx *c);

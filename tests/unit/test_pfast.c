@@ -168,7 +168,7 @@ static void test_not_eligible(void **state)
 /* A diffuse room for the global map (radiosity{}): its photons bounce
 ** off the floor, the walls and a ball, through the same queries. */
 static const char *const ROOM =
-    "global_settings { radiosity { } }\n"
+    "global_settings { radiosity { recursion_limit 20 } }\n"
     "light_source { <0, 3, 0> color rgb 1 }\n"
     "plane { y, 0 pigment { color rgb 0.8 } }\n"
     "plane { -y, -4 pigment { color rgb 0.7 } }\n"
