@@ -24,13 +24,25 @@
 ** Infinite objects. Nodes whose surface has no finite box (planes,
 ** quadrics, polys, and CSG built from them) are not given to Embree at
 ** all: they sit in a separate list tested after the Embree query, with
-** the ray's far end shrunk to the nearest Embree hit. Finite boxes of
+** the ray's far end shrunk to the nearest Embree hit. An intersection
+** of planes and quadrics whose insides bound each other (a bevelled
+** frame, a hyperboloid between two planes) gets the box they leave
+** (csgbox.c) and goes to Embree like any finite object.
+**
+** Inside boxes. Each node also keeps a box holding its inside (where the
+** shape's inside lies within its surface's box: not a disc's half-space,
+** a height field's ground below its triangles, an inverse's outside), and
+** node_inside() answers 'no' outside it without a transform or a shape
+** test: CSG filtering and the interiors holding a ray's origin ask mostly
+** about far points. Finite boxes of
 ** user primitives are padded by 1e-6 of their size (plus their distance
 ** from the origin) before becoming floats, so Embree's float traversal
 ** never culls a primitive the double-precision test would hit.
 **
-** bounded_by is a hint only and is ignored: every object gets its own
-** exact box (a transformed sphere the exact box of its ellipsoid).
+** bounded_by is not used for boxes: every object gets its own exact box
+** (a transformed sphere the exact box of its ellipsoid). On the shapes
+** where POV-Ray keeps it (polys, text, unbounded quadrics) it cuts rays
+** off as POV-Ray's does (geometry/bound.c, from geom_intersect).
 **
 ** Speed. A query costs Embree's set-up and a user-geometry dispatch per
 ** candidate, which for a handful of primitives is more than testing their
@@ -65,6 +77,7 @@
 #include <string.h>
 
 #include "accel/node.h"
+#include "accel/csgbox.h"
 #include "math/transform.h"
 #include "util/mem.h"
 
@@ -235,6 +248,62 @@ static bool box_finite(struct bbox b)
            isfinite(b.hi.z);
 }
 
+/*
+** Whether the inside of analytic shape 'o' (not inverted) lies within the
+** box of its surface, so that box also bounds its inside. Not so for a
+** disc (its inside is the half-space behind it, as POV-Ray's), for the
+** unbounded kinds, nor for a blob whose threshold is not positive (its
+** density 0 far away already exceeds it).
+*/
+static bool inside_in_surface_box(const iris_object *o)
+{
+    switch (o->kind) {
+    case IRIS_OBJ_DISC:
+    case IRIS_OBJ_PLANE:
+    case IRIS_OBJ_QUADRIC:
+    case IRIS_OBJ_POLY:
+        return false;
+    case IRIS_OBJ_BLOB:
+        return o->u.blob.threshold > 0;
+    default:
+        return true;
+    }
+}
+
+/*
+** An intersection's children that have no box alone (planes, quadrics)
+** still bound its inside together (csgbox.c): each narrows the box the
+** others leave, a few rounds over them as each round can let the next
+** narrow further. Its crossings lie on the boundary of that inside, so
+** the surface box 'S' is narrowed as well.
+*/
+static void narrow_intersection(const struct anode *n, struct bbox *S,
+                                struct bbox *V)
+{
+    if (V->empty)
+        return;
+    vec3 lo = V->inf ? v3(-INFINITY, -INFINITY, -INFINITY) : V->lo;
+    vec3 hi = V->inf ? v3(INFINITY, INFINITY, INFINITY) : V->hi;
+    bool any = false;
+    for (int round = 0; round < 3; round++) {
+        for (int i = 0; i < n->n_kids; i++) {
+            const struct anode *k = n->kids[i];
+            if (k->kind != AN_SHAPE || k->inverted)
+                continue;
+            any = true;
+            if (!csgbox_narrow(k->obj, &lo, &hi)) {
+                *S = *V = box_empty();
+                return;
+            }
+        }
+        if (!any)
+            return;
+    }
+    struct bbox b = { .lo = lo, .hi = hi };
+    *V = b;
+    *S = box_meet(*S, b);
+}
+
 /* ---------------------------------------------------------------- */
 /* Building the tree                                                  */
 /* ---------------------------------------------------------------- */
@@ -394,6 +463,7 @@ static struct anode *build(struct accel *a, FILE *log, const iris_object *o,
                         b = box_meet(b, kv[j]);
                 S = box_union(S, b);
             }
+            narrow_intersection(n, &S, &V);
         } else {
             S = V = box_empty();
             for (int i = 0; i < n->n_kids; i++) {
@@ -417,7 +487,9 @@ static struct anode *build(struct accel *a, FILE *log, const iris_object *o,
         S.inf = S.empty = false;
         S.lo = lo;
         S.hi = hi;
-        V = ninv ? box_inf() : S;
+        /* A height field's inside reaches down to its y = 0 below the
+        ** lowest triangle (amesh_inside) */
+        V = ninv || o->kind == IRIS_OBJ_HEIGHT_FIELD ? box_inf() : S;
     } else if (geom_is_analytic(o->kind)) {
         n->kind = AN_SHAPE;
         n->inverted = ninv;
@@ -431,6 +503,8 @@ static struct anode *build(struct accel *a, FILE *log, const iris_object *o,
         }
         if (o->kind == IRIS_OBJ_PLANE)
             n->plane_n = v3_norm(o->u.plane.normal);
+        if (o->kind == IRIS_OBJ_BLOB)
+            n->has_blob_box = geom_blob_bounds(o, &n->blob_lo, &n->blob_hi);
         vec3 lo, hi;
         if (o->kind == IRIS_OBJ_SPHERE && o->has_transform)
             S = ellipsoid_box(o);
@@ -439,7 +513,7 @@ static struct anode *build(struct accel *a, FILE *log, const iris_object *o,
         else
             S = box_inf();
         /* A plane's or poly's inside is unbounded, as is an inverse's */
-        V = ninv ? box_inf() : S;
+        V = ninv || !inside_in_surface_box(o) ? box_inf() : S;
         if (!ninv && o->kind == IRIS_OBJ_PLANE && !o->has_transform)
             V = half_space(o);
     } else {
@@ -481,6 +555,22 @@ static struct anode *build(struct accel *a, FILE *log, const iris_object *o,
     } else if (n->bounded) {
         n->lo = S.lo;
         n->hi = S.hi;
+    }
+    /* The inside box, padded as user_bounds pads the surface box so
+    ** rounding in the transforms never rejects a point inside */
+    n->vol_bounded = box_finite(V) || V.empty;
+    if (V.empty) {
+        n->vlo = v3(1, 1, 1);
+        n->vhi = v3(-1, -1, -1);
+    } else if (n->vol_bounded) {
+        vec3 ext = v3_sub(V.hi, V.lo);
+        double mag = fmax(v3_max_comp(v3(fabs(V.lo.x), fabs(V.lo.y),
+                                         fabs(V.lo.z))),
+                          v3_max_comp(v3(fabs(V.hi.x), fabs(V.hi.y),
+                                         fabs(V.hi.z))));
+        double pad = 1e-6 * (v3_max_comp(ext) + mag);
+        n->vlo = v3_sub(V.lo, v3(pad, pad, pad));
+        n->vhi = v3_add(V.hi, v3(pad, pad, pad));
     }
     *surf = S;
     *vol = V;
@@ -954,6 +1044,20 @@ bool accel_inside(const struct accel *a, const iris_object *obj, vec3 p)
     if (n)
         return node_inside(n, p);
     return plain_inside(obj, p, 0);
+}
+
+bool accel_inside_bounds(const void *accel, const iris_object *obj,
+                         vec3 *lo, vec3 *hi)
+{
+    const struct accel *a = accel;
+    if (!a || !obj)
+        return false;
+    const struct anode *n = find_node(a, obj);
+    if (!n || !n->vol_bounded)
+        return false;
+    *lo = n->vlo;
+    *hi = n->vhi;
+    return true;
 }
 
 void accel_bounds(const struct accel *a, vec3 *lo, vec3 *hi)

@@ -78,6 +78,11 @@ bool accel_intersect(const struct accel *a, const ray *r, double tmin,
 
 /* Whether world point 'p' is inside object 'obj' (POV-Ray's Inside()). */
 bool accel_inside(const struct accel *a, const iris_object *obj, vec3 p);
+/* A world box (padded) holding every point accel_inside() finds inside
+** 'obj'; false when it has none. 'accel' is a struct accel, so the
+** function fits struct rquery (render/query.h). */
+bool accel_inside_bounds(const void *accel, const iris_object *obj,
+                         vec3 *lo, vec3 *hi);
 
 /* World bounding box of finite geometry (infinite planes excluded). */
 void accel_bounds(const struct accel *a, vec3 *lo, vec3 *hi);

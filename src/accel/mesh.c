@@ -38,6 +38,9 @@ struct amesh {
     vec3 inside_dir;               /* world, unit; zero = no inside */
     int hf_w, hf_h;                /* height field grid, object space */
     double *hf;
+    vec3 *hf_vn;                   /* smooth height field: POV-Ray's unit
+                                      normal per grid vertex (object space
+                                      while building, then world) */
 };
 
 bool amesh_kind(enum iris_object_kind kind)
@@ -60,6 +63,7 @@ void amesh_free(struct amesh *m)
     iris_free(m->cuv);
     iris_free(m->tex);
     iris_free(m->hf);
+    iris_free(m->hf_vn);
     iris_free(m);
 }
 
@@ -102,7 +106,28 @@ static bool tri_hit(const struct anode *n, unsigned prim, vec3 o, vec3 d,
 
     vec3 ng = v3_norm(v3_cross(e1, e2));
     vec3 sn = ng;
-    if (m->cn) {
+    if (m->hf_vn) {
+        /* A smooth height field's normal as POV-Ray's HField::Normal
+        ** takes it: bilinear in the cell between its four corner
+        ** normals, not across the triangle */
+        vec3 p = v3_madd(o, d, t);
+        if (n->obj->has_transform)
+            p = xf_inv_point(&n->obj->transform, p);
+        int gw = m->hf_w, gh = m->hf_h;
+        double gx = fmax(0, fmin(1, p.x)) * (gw - 1);
+        double gz = fmax(0, fmin(1, p.z)) * (gh - 1);
+        int px = (int)fmin(gx, gw - 2), pz = (int)fmin(gz, gh - 2);
+        double x = gx - px, z = gz - pz;
+        const vec3 *c0 = m->hf_vn + (size_t)pz * gw + px, *c1 = c0 + gw;
+        vec3 r0 = v3_add(v3_scale(c0[0], 1 - x), v3_scale(c0[1], x));
+        vec3 r1 = v3_add(v3_scale(c1[0], 1 - x), v3_scale(c1[1], x));
+        vec3 bl = v3_add(v3_scale(r0, 1 - z), v3_scale(r1, z));
+        if (v3_len2(bl) > 0 && isfinite(v3_len2(bl))) {
+            sn = v3_norm(bl);
+            if (v3_dot(ng, sn) < 0)
+                ng = v3_neg(ng);
+        }
+    } else if (m->cn) {
         const vec3 *c = m->cn + 3 * (size_t)prim;
         vec3 s = v3_add(v3_add(v3_scale(c[0], w), v3_scale(c[1], u)),
                         v3_scale(c[2], v));
@@ -246,7 +271,11 @@ bool amesh_inside(const struct anode *n, vec3 p)
         vec3 lp = n->obj->has_transform
                       ? xf_inv_point(&n->obj->transform, p) : p;
         double h;
-        return hf_height(m, lp.x, lp.z, &h) && lp.y < h && lp.y >= 0;
+        /* ... and under the water level (heightfield.cpp's Inside: y
+        ** below the box's floor is inside); not below y = 0, where
+        ** objects/csg/hfclip.pov shows POV-Ray's clipped column end */
+        return hf_height(m, lp.x, lp.z, &h) && lp.y >= 0 &&
+               lp.y < fmax(h, n->obj->u.height_field.water_level);
     }
     if (v3_len2(m->inside_dir) == 0)
         return false; /* POV-Ray: a mesh without inside_vector has none */
@@ -372,6 +401,25 @@ static const char *src_mesh(const iris_object *o, struct tri_src *s)
     return NULL;
 }
 
+/*
+** A function value as a height, the way POV-Ray 3.7 stores it: in a
+** 16-bit grey image, as unsigned short(float(v) * 65535), read back as
+** HF_VAL(grey * 65535) over 65536 units (image.cpp GrayImage,
+** imageutil.cpp image_height_at). The conversion does not clamp: on the
+** x86 POV-Ray runs on it truncates to 32 bits and keeps the low 16, so a
+** value of -0.1 becomes a height of 0.9 and 1.2 one of 0.2; scenes show
+** those wrapped plates, and iris draws them too.
+*/
+static double hf_gray16(double v)
+{
+    float s = (float)v * 65535.0f;
+    int32_t k = isfinite(s) && fabsf(s) < 2147483520.0f ? (int32_t)s
+                                                          : INT32_MIN;
+    uint16_t px = (uint16_t)((uint32_t)k & 0xffffu);
+    float grey = (float)px / 65535.0f;
+    return (double)(uint16_t)(grey * 65535.0f) / 65536.0;
+}
+
 /* Heights of the grid, 0..1, row j along z, column i along x. */
 static const char *hf_grid(const iris_object *o, struct amesh *m)
 {
@@ -384,12 +432,15 @@ static const char *hf_grid(const iris_object *o, struct amesh *m)
         m->hf = iris_malloc((size_t)w * h * sizeof *m->hf);
         if (!m->hf)
             return "out of memory";
+        /* POV-Ray fills image row r with F(x, r/(h-1), 0) and, as for
+        ** image files, makes row r the grid row z = h-1-r (heightfield.cpp),
+        ** so the function's y runs against z: z = 1 - y. */
         for (int j = 0; j < h; j++)
             for (int i = 0; i < w; i++) {
-                double args[3] = { (double)i / (w - 1), (double)j / (h - 1),
-                                   0 };
-                double v = iris_fn_eval(o->u.height_field.fn, args, 3);
-                m->hf[j * w + i] = isfinite(v) ? fmax(0, fmin(1, v)) : 0;
+                double args[3] = { (double)i / (w - 1),
+                                   (double)(h - 1 - j) / (h - 1), 0 };
+                m->hf[j * w + i] =
+                    hf_gray16(iris_fn_eval(o->u.height_field.fn, args, 3));
             }
     } else if (o->u.height_field.image && o->u.height_field.image->path) {
         double *px;
@@ -421,6 +472,150 @@ static const char *hf_grid(const iris_object *o, struct amesh *m)
     return NULL;
 }
 
+/* One of the four triangles POV-Ray fans around a grid vertex
+** (heightfield.cpp add_single_normal), in its raw units: x and z grid
+** steps, y 16-bit height values; its unit normal, turned up, is added. */
+static int hf_fan(const struct amesh *m, int x0, int z0, int x1, int z1,
+                  int x2, int z2, vec3 *sum)
+{
+    int w = m->hf_w, h = m->hf_h;
+    if (x0 < 0 || z0 < 0 || x1 < 0 || z1 < 0 || x2 < 0 || z2 < 0 ||
+        x0 >= w || z0 >= h || x1 >= w || z1 >= h || x2 >= w || z2 >= h)
+        return 0;
+    vec3 v0 = v3(x0, m->hf[z0 * w + x0] * 65536.0, z0);
+    vec3 v1 = v3(x1, m->hf[z1 * w + x1] * 65536.0, z1);
+    vec3 v2 = v3(x2, m->hf[z2 * w + x2] * 65536.0, z2);
+    vec3 nt = v3_cross(v3_sub(v2, v0), v3_sub(v1, v0));
+    if (!(v3_len2(nt) > 0))
+        return 0;
+    nt = v3_norm(nt);
+    if (nt.y < 0)
+        nt = v3_neg(nt);
+    *sum = v3_add(*sum, nt);
+    return 1;
+}
+
+/*
+** A smooth height field's normal at grid vertex (i, j) as POV-Ray
+** computes it (smooth_height_field): the sum of the unit normals of the
+** four triangles fanned around it in raw units, normalised and stored as
+** shorts (32767 N), then taken to the unit square (the raw-to-unit
+** scaling's inverse transpose: x (w-1), y 65536, z (h-1)).
+*/
+static vec3 hf_pov_normal(const struct amesh *m, int i, int j)
+{
+    vec3 sum = v3(0, 0, 0);
+    hf_fan(m, i, j, i + 1, j, i, j + 1, &sum);
+    hf_fan(m, i, j, i, j + 1, i - 1, j, &sum);
+    hf_fan(m, i, j, i - 1, j, i, j - 1, &sum);
+    hf_fan(m, i, j, i, j - 1, i + 1, j, &sum);
+    if (!(v3_len2(sum) > 0))
+        return v3(0, 1, 0);
+    sum = v3_norm(sum);
+    vec3 q = v3((short)(32767 * sum.x), (short)(32767 * sum.y),
+                (short)(32767 * sum.z));
+    return v3(q.x * (m->hf_w - 1), q.y * 65536.0, q.z * (m->hf_h - 1));
+}
+
+/* A height_field's triangles as they are built: the grid's vertices
+** first, then the points where water_level cuts edges; with 'smooth', one
+** normal per vertex. */
+struct hf_build {
+    vec3 *v, *vn;
+    int nv, cap_v;
+    int32_t *ix;
+    int nt, cap_t;
+};
+
+static bool hf_grow(void **p, int *cap, int need, size_t size)
+{
+    if (need <= *cap)
+        return true;
+    int c = *cap > 0 ? *cap : 1024;
+    while (c < need) {
+        if (c > INT32_MAX / 2)
+            return false;
+        c *= 2;
+    }
+    void *q = iris_realloc(*p, (size_t)c * size);
+    if (!q)
+        return false;
+    *p = q;
+    *cap = c;
+    return true;
+}
+
+/* The point where the level y = 'wl' cuts edge a-b (one end below it,
+** one at or above it), its normal interpolated the same way. Both
+** triangles of a shared edge compute it from the same ordered ends, so
+** the cut surface has no cracks. */
+static int hf_cut(struct hf_build *b, int va, int vb, double wl)
+{
+    if (va > vb) {
+        int t = va;
+        va = vb;
+        vb = t;
+    }
+    int old_cap = b->cap_v;
+    if (!hf_grow((void **)&b->v, &b->cap_v, b->nv + 1, sizeof *b->v))
+        return -1;
+    if (b->vn && b->cap_v != old_cap) {
+        void *q = iris_realloc(b->vn, (size_t)b->cap_v * sizeof *b->vn);
+        if (!q)
+            return -1;
+        b->vn = q;
+    }
+    vec3 pa = b->v[va], pb = b->v[vb];
+    double t = (wl - pa.y) / (pb.y - pa.y);
+    vec3 p = v3_add(pa, v3_scale(v3_sub(pb, pa), t));
+    p.y = wl;
+    b->v[b->nv] = p;
+    if (b->vn)
+        b->vn[b->nv] = v3_add(b->vn[va],
+                              v3_scale(v3_sub(b->vn[vb], b->vn[va]), t));
+    return b->nv++;
+}
+
+static bool hf_tri(struct hf_build *b, int a, int c, int d)
+{
+    if (!hf_grow((void **)&b->ix, &b->cap_t, 3 * (b->nt + 1), sizeof *b->ix))
+        return false;
+    b->ix[3 * b->nt] = a;
+    b->ix[3 * b->nt + 1] = c;
+    b->ix[3 * b->nt + 2] = d;
+    b->nt++;
+    return true;
+}
+
+/*
+** Triangle t[0..2] of the grid, cut at water_level 'wl'. POV-Ray clips
+** the ray to the height field's box, whose floor is the water level
+** (heightfield.cpp: bounding_corner1[Y] = 65536 * water_level), so the
+** surface below the level is not there and a triangle crossing it ends
+** at the level; there is no lid. Keeping the part at or above the level
+** (Sutherland-Hodgman against one plane) leaves 0 to 4 corners.
+*/
+static bool hf_clip_tri(struct hf_build *b, const int t[3], double wl)
+{
+    int poly[4], n = 0;
+    for (int k = 0; k < 3; k++) {
+        int p = t[k], q = t[(k + 1) % 3];
+        bool pin = b->v[p].y >= wl, qin = b->v[q].y >= wl;
+        if (pin)
+            poly[n++] = p;
+        if (pin != qin) {
+            int c = hf_cut(b, p, q, wl);
+            if (c < 0)
+                return false;
+            poly[n++] = c;
+        }
+    }
+    for (int k = 1; k + 1 < n; k++)
+        if (!hf_tri(b, poly[0], poly[k], poly[k + 1]))
+            return false;
+    return true;
+}
+
 static const char *src_height_field(const iris_object *o, struct amesh *m,
                                     struct tri_src *s)
 {
@@ -428,46 +623,63 @@ static const char *src_height_field(const iris_object *o, struct amesh *m,
     if (why)
         return why;
     int w = m->hf_w, h = m->hf_h;
-    s->nv = w * h;
-    s->vbuf = iris_malloc((size_t)s->nv * sizeof *s->vbuf);
-    s->ix = iris_malloc((size_t)(w - 1) * (h - 1) * 6 * sizeof *s->ix);
-    if (!s->vbuf || !s->ix)
+    struct hf_build b = { 0 };
+    b.nv = w * h;
+    b.cap_v = b.nv;
+    b.v = iris_malloc((size_t)b.nv * sizeof *b.v);
+    b.cap_t = (w - 1) * (h - 1) * 6;
+    b.ix = iris_malloc((size_t)b.cap_t * sizeof *b.ix);
+    bool smooth = o->u.height_field.smooth;
+    if (smooth)
+        b.vn = iris_malloc((size_t)b.nv * sizeof *b.vn);
+    s->vbuf = b.v;
+    s->ix = b.ix;
+    if (!b.v || !b.ix || (smooth && !b.vn)) {
+        iris_free(b.vn);
         return "out of memory";
-    for (int j = 0; j < h; j++)
-        for (int i = 0; i < w; i++)
-            s->vbuf[j * w + i] = v3((double)i / (w - 1), m->hf[j * w + i],
-                                    (double)j / (h - 1));
-    s->v = s->vbuf;
-    double wl = o->u.height_field.water_level;
-    int nt = 0;
-    for (int j = 0; j + 1 < h; j++)
-        for (int i = 0; i + 1 < w; i++) {
-            int a = j * w + i, b = a + 1, c = a + w, d = c + 1;
-            /* Cells wholly below water_level are not drawn (POV-Ray) */
-            if (wl > 0 && m->hf[a] <= wl && m->hf[b] <= wl &&
-                m->hf[c] <= wl && m->hf[d] <= wl)
-                continue;
-            /* POV-Ray's split: the diagonal from (i+1, j) to (i, j+1) */
-            int32_t t[6] = { a, b, c, b, d, c };
-            memcpy(s->ix + 3 * nt, t, sizeof t);
-            nt += 2;
-        }
-    s->nt = nt;
-    if (o->u.height_field.smooth && nt > 0) {
-        s->cn = iris_malloc(3 * (size_t)nt * sizeof *s->cn);
-        if (!s->cn)
-            return "out of memory";
-        for (int k = 0; k < 3 * nt; k++) {
-            int vi = s->ix[k], i = vi % w, j = vi / w;
-            int i0 = i > 0 ? i - 1 : i, i1 = i < w - 1 ? i + 1 : i;
-            int j0 = j > 0 ? j - 1 : j, j1 = j < h - 1 ? j + 1 : j;
-            double dx = (m->hf[j * w + i1] - m->hf[j * w + i0]) *
-                        (w - 1) / (i1 - i0);
-            double dz = (m->hf[j1 * w + i] - m->hf[j0 * w + i]) *
-                        (h - 1) / (j1 - j0);
-            s->cn[k] = v3(-dx, 1, -dz);
-        }
     }
+    for (int j = 0; j < h; j++)
+        for (int i = 0; i < w; i++) {
+            b.v[j * w + i] = v3((double)i / (w - 1), m->hf[j * w + i],
+                                (double)j / (h - 1));
+            if (smooth)
+                b.vn[j * w + i] = hf_pov_normal(m, i, j);
+        }
+    double wl = o->u.height_field.water_level;
+    bool ok = true;
+    for (int j = 0; ok && j + 1 < h; j++)
+        for (int i = 0; ok && i + 1 < w; i++) {
+            int a = j * w + i, bb = a + 1, c = a + w, d = c + 1;
+            /* POV-Ray's split: the diagonal from (i+1, j) to (i, j+1) */
+            int t1[3] = { a, bb, c }, t2[3] = { bb, d, c };
+            if (wl > 0)
+                ok = hf_clip_tri(&b, t1, wl) && hf_clip_tri(&b, t2, wl);
+            else
+                ok = hf_tri(&b, a, bb, c) && hf_tri(&b, bb, d, c);
+        }
+    /* hf_cut and hf_tri may have moved the buffers */
+    s->vbuf = b.v;
+    s->v = b.v;
+    s->ix = b.ix;
+    s->nv = b.nv;
+    s->nt = b.nt;
+    if (!ok) {
+        iris_free(b.vn);
+        return "out of memory";
+    }
+    if (smooth && b.nt > 0) {
+        s->cn = iris_malloc(3 * (size_t)b.nt * sizeof *s->cn);
+        if (!s->cn) {
+            iris_free(b.vn);
+            return "out of memory";
+        }
+        for (int k = 0; k < 3 * b.nt; k++)
+            s->cn[k] = b.vn[b.ix[k]];
+        /* the grid's own normals, for the bilinear shading normal */
+        m->hf_vn = iris_realloc(b.vn, (size_t)w * h * sizeof *m->hf_vn);
+        return m->hf_vn ? NULL : "out of memory";
+    }
+    iris_free(b.vn);
     return NULL;
 }
 
@@ -539,6 +751,13 @@ const char *amesh_build(struct anode *n, RTCDevice dev, bool private_scene)
         m->verts[3 * i + 2] = (float)p.z;
     }
     m->verts[3 * (size_t)s.nv] = 0;
+
+    if (m->hf_vn)
+        for (size_t k = 0; k < (size_t)m->hf_w * m->hf_h; k++) {
+            vec3 nn = xf ? xf_normal(xf, m->hf_vn[k]) : m->hf_vn[k];
+            m->hf_vn[k] = isfinite(v3_len2(nn)) && v3_len2(nn) > 0
+                              ? v3_norm(nn) : v3(0, 1, 0);
+        }
 
     /* Keep the valid, non-degenerate triangles */
     int kept = 0;

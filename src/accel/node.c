@@ -48,6 +48,18 @@ void ahit_push(struct ahit_list *l, const struct ahit *h)
     l->v[l->n++] = *h;
 }
 
+/* geom_intersect() of a shape leaf, with what the build prepared. */
+static void leaf_intersect(const struct anode *n, vec3 lo, vec3 ld,
+                           double tmin, double tmax, struct isect_list *l)
+{
+    if (n->has_blob_box && !n->obj->bounded_by) {
+        geom_blob_hits_in_box(n->obj, n->blob_lo, n->blob_hi, lo, ld, tmin,
+                              tmax, l);
+        return;
+    }
+    geom_intersect(n->obj, n->prof, lo, ld, tmin, tmax, l);
+}
+
 /* Crossings of an analytic leaf: solved in object space. */
 static void shape_hits(const struct anode *n, vec3 o, vec3 d, double tmin,
                        double tmax, struct ahit_list *out)
@@ -60,7 +72,7 @@ static void shape_hits(const struct anode *n, vec3 o, vec3 d, double tmin,
     }
     struct isect_list l;
     isect_list_init(&l);
-    geom_intersect(obj, n->prof, lo, ld, tmin, tmax, &l);
+    leaf_intersect(n, lo, ld, tmin, tmax, &l);
     for (int i = 0; i < l.n; i++) {
         struct ahit h;
         vec3 wn = obj->has_transform ? xf_normal(&obj->transform, l.v[i].n)
@@ -249,7 +261,7 @@ static bool shape_nearest(const struct anode *n, vec3 o, vec3 d,
         return plane_nearest(n, lo, ld, tmin, tmax, best);
     struct isect_list l;
     isect_list_init(&l);
-    geom_intersect(obj, n->prof, lo, ld, tmin, tmax, &l);
+    leaf_intersect(n, lo, ld, tmin, tmax, &l);
     bool found = false;
     for (;;) {
         int k = -1;
@@ -317,6 +329,13 @@ bool node_nearest_in_box(const struct anode *n, vec3 o, vec3 d, double tmin,
 
 bool node_inside(const struct anode *n, vec3 p)
 {
+    /* Outside the inside's box: no transform, no shape test. Most inside
+    ** tests (CSG filtering, the interiors holding a blur ray's origin)
+    ** are far from the object. */
+    if (n->vol_bounded &&
+        !(p.x >= n->vlo.x && p.x <= n->vhi.x && p.y >= n->vlo.y &&
+          p.y <= n->vhi.y && p.z >= n->vlo.z && p.z <= n->vhi.z))
+        return false;
     bool in = false;
     switch (n->kind) {
     case AN_SHAPE: {

@@ -39,12 +39,18 @@ struct anode {
     struct anode **clips;          /* clipped_by: keep points inside all */
     bool bounded;                  /* world box lo..hi holds every hit */
     vec3 lo, hi;
+    bool vol_bounded;              /* world box vlo..vhi (padded) holds
+                                      every point inside: node_inside
+                                      rejects the others at once */
+    vec3 vlo, vhi;
     double size;                   /* leaves: largest extent of the world
                                       box of the whole surface, before
                                       clipping; 0 = unbounded */
     struct geom_profile *prof;     /* AN_SHAPE: prism, lathe, sor, text */
     vec3 plane_n;                  /* AN_SHAPE plane: its unit normal,
                                       normalised once (shape_nearest) */
+    bool has_blob_box;             /* AN_SHAPE blob: geom_blob_bounds() */
+    vec3 blob_lo, blob_hi;         /* in object space, computed once */
     struct amesh *mesh;            /* AN_MESH */
 };
 

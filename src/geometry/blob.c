@@ -245,9 +245,16 @@ void geom_blob_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
                     double t1, struct isect_list *out)
 {
     vec3 blo, bhi;
+    if (geom_blob_bounds(o, &blo, &bhi))
+        geom_blob_hits_in_box(o, blo, bhi, ro, rd, t0, t1, out);
+}
+
+void geom_blob_hits_in_box(const iris_object *o, vec3 blo, vec3 bhi,
+                           vec3 ro, vec3 rd, double t0, double t1,
+                           struct isect_list *out)
+{
     double a = t0, b = t1;
-    if (!geom_blob_bounds(o, &blo, &bhi) ||
-        !geom_clip_box(blo, bhi, ro, rd, &a, &b))
+    if (!geom_clip_box(blo, bhi, ro, rd, &a, &b))
         return;
     /* Measure t from the box entry so the quartics stay well scaled */
     double ts = isfinite(a) ? a : 0;

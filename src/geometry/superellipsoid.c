@@ -52,17 +52,78 @@ static double fat(const iris_object *o, vec3 ro, vec3 rd, double t)
     return geom_superellipsoid_eval(o, v3_madd(ro, rd, t));
 }
 
-/* Samples (a, b) and refines each sign change by 80 bisections. */
+/* Samples per group whose sign group_sign() may settle at once. */
+#define GROUP 8
+
+/*
+** Smallest and largest |x| over the samples between x0 = o + d·ta and
+** x1 = o + d·tb, widened by 'pad': a sample's coordinate is rounded
+** (a few ulps of |o| + |d·t|), and where the power 2/e or 2/n is below 1
+** f changes fast near 0, so even that must stay inside the range.
+*/
+static void abs_range(double o, double d, double ta, double tb, double *lo,
+                      double *hi)
+{
+    double x0 = o + d * ta, x1 = o + d * tb;
+    double pad = 1e-12 + 1e-14 * (fabs(o) + fabs(d) * fmax(fabs(ta),
+                                                          fabs(tb)));
+    double a = fmin(x0, x1) - pad, b = fmax(x0, x1) + pad;
+    *lo = (a <= 0 && b >= 0) ? 0 : fmin(fabs(a), fabs(b));
+    *hi = fmax(fabs(a), fabs(b));
+}
+
+/*
+** +1 when f > 0 on the whole segment t in [ta, tb], -1 when f < 0 there,
+** 0 when unknown. f grows with each of |x|, |y|, |z| (positive powers), so
+** f at the smallest |x|, |y|, |z| over the segment bounds it below and at
+** the largest above (abs_range() covers the rounding of the points on
+** the segment, the margin of 1e-6 that of pow), so a settled sign is the
+** sign of every sample in it.
+*/
+static int group_sign(const iris_object *o, vec3 ro, vec3 rd, double ta,
+                      double tb)
+{
+    vec3 lo, hi;
+    abs_range(ro.x, rd.x, ta, tb, &lo.x, &hi.x);
+    abs_range(ro.y, rd.y, ta, tb, &lo.y, &hi.y);
+    abs_range(ro.z, rd.z, ta, tb, &lo.z, &hi.z);
+    if (geom_superellipsoid_eval(o, lo) > 1e-6)
+        return 1;
+    if (geom_superellipsoid_eval(o, hi) < -1e-6)
+        return -1;
+    return 0;
+}
+
+/* Samples (a, b) and refines each sign change by bisection to the last
+** bit. Groups of samples whose sign group_sign() settles, the same as
+** the sign at the group's start, hold no change and are not sampled:
+** the samples looked at, their signs and so the roots are the same. */
 static void piece(const iris_object *o, vec3 ro, vec3 rd, double a, double b,
                   double t0, double t1, struct isect_list *out)
 {
     double ta = a, fa = fat(o, ro, rd, a);
     for (int i = 1; i <= SAMPLES; i++) {
+        if ((i - 1) % GROUP == 0) {
+            int last = i + GROUP - 1 < SAMPLES ? i + GROUP - 1 : SAMPLES;
+            double tg = a + (b - a) * last / SAMPLES;
+            int sg = group_sign(o, ro, rd, ta, tg);
+            if (sg != 0 && (sg < 0) == (fa < 0)) {
+                /* only fa's sign is used below: sg stands for it */
+                ta = tg;
+                fa = sg;
+                i = last;
+                continue;
+            }
+        }
         double tb = a + (b - a) * i / SAMPLES, fb = fat(o, ro, rd, tb);
         if ((fa < 0) != (fb < 0)) {
             double l = ta, h = tb, fl = fa;
             for (int k = 0; k < 80 && h - l > 0; k++) {
-                double m = 0.5 * (l + h), fm = fat(o, ro, rd, m);
+                double m = 0.5 * (l + h);
+                /* l and h adjacent: further steps change neither */
+                if (m <= l || m >= h)
+                    break;
+                double fm = fat(o, ro, rd, m);
                 if ((fm < 0) == (fl < 0)) {
                     l = m;
                     fl = fm;

@@ -47,6 +47,9 @@ struct job {
     bool ortho;
     bool blur;                 /* focal blur (fb) */
     struct focal_blur fb;
+    struct containing_list blur_cl; /* the objects that may hold a blur
+                                       ray's origin (n = 0: not built) */
+    bool has_blur_cl;
     iris_image *out;
     int x0, y0, x1, y1;        /* render window, inclusive, 0-based */
     int tiles_x, tiles_y;
@@ -109,8 +112,12 @@ static bool trace_one(struct job *j, struct trace_ctx *c, double x,
     if (j->blur) {
         focal_blur_ray(&j->fb, &j->scene->camera, bx, by, nr, raw, &r.r);
         /* the aperture moves the origin: which interiors hold it is
-        ** asked again, as POV-Ray does for blurred rays */
-        trace_containing(j->tracer, r.r.o, &r.st);
+        ** asked again, as POV-Ray does for blurred rays (of the objects
+        ** near the aperture: the others cannot hold it) */
+        if (j->has_blur_cl)
+            trace_containing_from(j->tracer, &j->blur_cl, r.r.o, &r.st);
+        else
+            trace_containing(j->tracer, r.r.o, &r.st);
     } else if (j->ortho) {
         trace_containing(j->tracer, r.r.o, &r.st);
     } else {
@@ -563,6 +570,26 @@ static int clampi(int v, int lo, int hi)
     return v < lo ? lo : v > hi ? hi : v;
 }
 
+/* The objects that may hold a blur ray's origin: the camera location
+** moved by up to radius·(0.5 + 2·max_jitter) along xperp and yperp
+** (focal_blur_ray(): grid points within 0.5, jitter within 2·max_jitter
+** of the radius), padded; trace_containing_from() asks every object for
+** an origin outside the box, so the bound need only be usually right. */
+static bool blur_origins(const struct tracer *t, const struct focal_blur *fb,
+                         const iris_camera *cam, struct containing_list *cl)
+{
+    double r = fb->radius * (0.5 + 2.0 * fabs(fb->max_jitter));
+    vec3 e = v3(fabs(fb->xperp.x) + fabs(fb->yperp.x),
+                fabs(fb->xperp.y) + fabs(fb->yperp.y),
+                fabs(fb->xperp.z) + fabs(fb->yperp.z));
+    double pad = 1e-6 * (r + v3_len(cam->location)) + 1e-9;
+    e = v3_add(v3_scale(e, r), v3(pad, pad, pad));
+    if (!isfinite(e.x) || !isfinite(e.y) || !isfinite(e.z))
+        return false;
+    return trace_containing_list(t, v3_sub(cam->location, e),
+                                 v3_add(cam->location, e), cl);
+}
+
 bool eye_window(const iris_render_options *opts, int *x0, int *x1, int *y0,
                 int *y1)
 {
@@ -607,6 +634,8 @@ enum iris_status eyepass_run(const struct tracer *tr,
     j.blur = focal_blur_wanted(&scene->camera);
     if (j.blur && !focal_blur_init(&j.fb, &scene->camera))
         return IRIS_ENOMEM;
+    if (j.blur)
+        j.has_blur_cl = blur_origins(tr, &j.fb, &scene->camera, &j.blur_cl);
     j.ctx = iris_calloc((size_t)threads, sizeof *j.ctx);
     if (!j.ctx) {
         if (j.blur)
@@ -649,5 +678,7 @@ enum iris_status eyepass_run(const struct tracer *tr,
     gather_end(&gt);
     if (j.blur)
         focal_blur_fini(&j.fb);
+    if (j.has_blur_cl)
+        trace_containing_list_free(&j.blur_cl);
     return st;
 }

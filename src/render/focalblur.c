@@ -110,12 +110,10 @@ static double gamma_q(double a, double x)
     return exp(-x + a * log(x) - lg) * h;
 }
 
-double chi2_upper_inv(double df, double p)
+/* The quantile by bisection: Q(df/2, x/2) falls from 1 to 0 as x grows,
+** so bracket, then bisect to the last bit. */
+static double chi2_solve(double df, double p)
 {
-    if (!(df > 0.0) || !(p > 0.0 && p < 1.0))
-        return 0.0;
-    /* Q(df/2, x/2) falls from 1 to 0 as x grows: bracket, then bisect to
-    ** the last bit (it runs once per render) */
     double a = 0.5 * df, lo = 0.0, hi = df + 1.0;
     while (gamma_q(a, 0.5 * hi) > p && hi < 1e300)
         hi *= 2.0;
@@ -127,6 +125,32 @@ double chi2_upper_inv(double df, double p)
             hi = mid;
     }
     return 0.5 * (lo + hi);
+}
+
+/* Quantiles already solved, per thread (so without locks): media's
+** adaptive sampling asks for df = 1 .. max_samples at one confidence
+** after every sample of every interval, and each solve costs a hundred
+** incomplete gamma functions; the cache returns the same bits. */
+#define CHI2_CACHE 64
+static _Thread_local struct chi2_entry {
+    double df, p, x;
+} chi2_cache[CHI2_CACHE];
+
+double chi2_upper_inv(double df, double p)
+{
+    if (!(df > 0.0) || !(p > 0.0 && p < 1.0))
+        return 0.0;
+    if (!isfinite(df))
+        return chi2_solve(df, p);
+    struct chi2_entry *e =
+        &chi2_cache[(unsigned)fmod(df, (double)CHI2_CACHE)];
+    if (e->df == df && e->p == p)
+        return e->x;
+    double x = chi2_solve(df, p);
+    e->df = df;
+    e->p = p;
+    e->x = x;
+    return x;
 }
 
 /* ------------------------------------------------------------------ */

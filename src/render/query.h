@@ -20,6 +20,10 @@ struct rquery {
                       double tmax, unsigned skip, struct hit *h);
     bool (*inside)(const void *impl, const iris_object *obj, vec3 p);
     double eps;                /* offset for secondary rays (accel_epsilon) */
+    /* A world box holding every point inside 'obj'; false when there is
+    ** none (unbounded, or not known). May be NULL. */
+    bool (*inside_bounds)(const void *impl, const iris_object *obj,
+                          vec3 *lo, vec3 *hi);
 };
 
 #endif

@@ -262,7 +262,8 @@ static enum iris_status through_build(const iris_scene *scene,
             return st;
         th->q[th->n] = (struct rquery){ th->acc[th->n], accel_isect,
                                         accel_in,
-                                        accel_epsilon(th->acc[th->n]) };
+                                        accel_epsilon(th->acc[th->n]),
+                                        accel_inside_bounds };
         tr->lights[i].through = &th->q[th->n];
         th->n++;
     }
@@ -336,7 +337,8 @@ enum iris_status iris_render(const iris_scene *scene,
     }
     mat_ctx_set_quick_colour(mat, (trace_quality_flags(plan.quality) &
                                    TQ_QUICK_COLOUR) != 0);
-    struct rquery q = { acc, accel_isect, accel_in, accel_epsilon(acc) };
+    struct rquery q = { acc, accel_isect, accel_in, accel_epsilon(acc),
+                        accel_inside_bounds };
     struct tracer tr;
     struct through th;
     memset(&th, 0, sizeof th);
@@ -358,9 +360,12 @@ enum iris_status iris_render(const iris_scene *scene,
         set_err(err, errlen, "the photon settings ask for more than memory holds");
     double t2 = par_now();
     double more_photon_s = 0.0; /* maps of progressive passes after the first */
-    if (st == IRIS_OK && progressive_wanted(opts))
-        st = progressive_run(&tr, acc, mat, threads, opts, t0, &pmap, out,
-                             stats, &more_photon_s, err, errlen);
+    /* MPI: rank 0's failed pass 0 must still stop the other ranks,
+    ** which are rendering their passes (progressive.h) */
+    if (progressive_wanted(opts) &&
+        (st == IRIS_OK || (plan.photons && mpi_passes_size() > 1)))
+        st = progressive_run(&tr, acc, mat, threads, opts, t0, st, &pmap,
+                             out, stats, &more_photon_s, err, errlen);
     else if (st == IRIS_OK)
         st = eyepass_run(&tr, opts, threads, out, stats);
     if (stats) {

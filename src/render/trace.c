@@ -14,6 +14,7 @@
 #include "render/trace.h"
 #include "render/eyespectrum.h"
 #include "render/media.h"
+#include "render/rainbow.h"
 #include "render/gather.h"
 #include "material/noise.h"
 #include "math/transform.h"
@@ -171,23 +172,99 @@ static bool is_hollow_ray(const struct interior_stack *st)
 ** split into their children, as POV-Ray links them to the scene (not a
 ** merge, nor one clipped, bounded or with split_union off). An object
 ** without an interior{} is keyed by itself, as interior_key does. */
+static bool containing_split(const iris_object *o)
+{
+    return (o->kind == IRIS_OBJ_UNION || o->kind == IRIS_OBJ_LIGHT_GROUP) &&
+           o->split_union && o->n_clipped_by == 0 && !o->bounded_by;
+}
+
+static void containing_test(const struct tracer *t, const iris_object *o,
+                            vec3 p, struct interior_stack *st)
+{
+    if (t->q.inside(t->q.impl, o, p))
+        stack_push(st, o->interior ? (const void *)o->interior
+                                   : (const void *)o,
+                   o->interior, o->hollow);
+}
+
 static void containing_rec(const struct tracer *t, const iris_object *o,
                            vec3 p, struct interior_stack *st, int depth)
 {
     if (!o || depth > 64)
         return;
-    bool split = (o->kind == IRIS_OBJ_UNION ||
-                  o->kind == IRIS_OBJ_LIGHT_GROUP) &&
-                 o->split_union && o->n_clipped_by == 0 && !o->bounded_by;
-    if (split) {
+    if (containing_split(o)) {
         for (int i = 0; i < o->u.csg.n_children; i++)
             containing_rec(t, o->u.csg.children[i], p, st, depth + 1);
         return;
     }
-    if (t->q.inside(t->q.impl, o, p))
-        stack_push(st, o->interior ? (const void *)o->interior
-                                   : (const void *)o,
-                   o->interior, o->hollow);
+    containing_test(t, o, p, st);
+}
+
+/* Appends the objects containing_rec() would ask whose inside box meets
+** cl's box; false when out of memory. */
+static bool collect_rec(const struct tracer *t, const iris_object *o,
+                        struct containing_list *cl, int depth)
+{
+    if (!o || depth > 64)
+        return true;
+    if (containing_split(o)) {
+        for (int i = 0; i < o->u.csg.n_children; i++)
+            if (!collect_rec(t, o->u.csg.children[i], cl, depth + 1))
+                return false;
+        return true;
+    }
+    vec3 lo, hi;
+    if (t->q.inside_bounds && t->q.inside_bounds(t->q.impl, o, &lo, &hi) &&
+        !(lo.x <= cl->hi.x && hi.x >= cl->lo.x && lo.y <= cl->hi.y &&
+          hi.y >= cl->lo.y && lo.z <= cl->hi.z && hi.z >= cl->lo.z))
+        return true;
+    if (cl->n == cl->cap) {
+        int cap = cl->cap ? 2 * cl->cap : 16;
+        const iris_object **nv =
+            iris_realloc((void *)cl->o, (size_t)cap * sizeof *nv);
+        if (!nv)
+            return false;
+        cl->o = nv;
+        cl->cap = cap;
+    }
+    cl->o[cl->n++] = o;
+    return true;
+}
+
+bool trace_containing_list(const struct tracer *t, vec3 lo, vec3 hi,
+                           struct containing_list *cl)
+{
+    memset(cl, 0, sizeof *cl);
+    cl->lo = lo;
+    cl->hi = hi;
+    for (int i = 0; i < t->scene->n_objects; i++)
+        if (!collect_rec(t, t->scene->objects[i], cl, 0)) {
+            trace_containing_list_free(cl);
+            return false;
+        }
+    return true;
+}
+
+void trace_containing_list_free(struct containing_list *cl)
+{
+    iris_free((void *)cl->o);
+    memset(cl, 0, sizeof *cl);
+}
+
+void trace_containing_from(const struct tracer *t,
+                           const struct containing_list *cl, vec3 p,
+                           struct interior_stack *st)
+{
+    if (!(p.x >= cl->lo.x && p.x <= cl->hi.x && p.y >= cl->lo.y &&
+          p.y <= cl->hi.y && p.z >= cl->lo.z && p.z <= cl->hi.z)) {
+        trace_containing(t, p, st);
+        return;
+    }
+    st->n = 0;
+    if (!t->q.inside)
+        return;
+    for (int i = 0; i < cl->n; i++)
+        containing_test(t, cl->o[i], p, st);
 }
 
 void trace_containing(const struct tracer *t, vec3 p,
@@ -965,12 +1042,13 @@ static void lighted_texture(struct trace_ctx *c, const struct tray *eye,
     /* radiosity{}: an eye hit gathers (once for all layers) and reads
     ** the photon map without its global part; gather rays' hits read the
     ** global map only when recursion_limit allows a further bounce */
-    bool gi_eye = t->gather && c->gi_depth == 0, gi_done = false;
+    bool gi_eye = gather_at_depth(t->gather, c->gi_depth), gi_done = false;
     double gi_e[3] = { 0, 0, 0 };
     const void *pmap = !t->gather ? t->photon_map
-                       : gi_eye ? t->photon_map_local : t->photon_map_gather;
-    /* the pretrace's own eye hits only place samples (as in POV-Ray) */
-    bool lit = !(gi_eye && gather_pretracing(t->gather));
+                       : c->gi_depth == 0 ? t->photon_map_local : t->photon_map_gather;
+    /* the pretrace's own eye hits only place samples (as in POV-Ray);
+    ** deeper gathers beside a global map see no light source */
+    bool lit = gather_lit(t->gather, c->gi_depth);
 
     for (int i = 0; i < sk->n && trans > t->adc; i++, n_done++) {
         const struct mat_layer *l = &ev->layers[sk->first + i];
@@ -1197,9 +1275,10 @@ static double fog_turbulence(const struct tracer *t, const iris_fog *fog,
     if (fog->turbulence.x == 0 && fog->turbulence.y == 0 &&
         fog->turbulence.z == 0)
         return width;
-    struct noise_turb turb = { fog->octaves > 0 ? fog->octaves : 6,
-                               fog->omega != 0 ? fog->omega : 0.5,
-                               fog->lambda != 0 ? fog->lambda : 2.0 };
+    /* the parser sets the defaults; 0 is meant literally (POV-Ray 3.7) */
+    struct noise_turb turb = { fog->octaves < 1 ? 1 : fog->octaves > 10
+                                   ? 10 : fog->octaves,
+                               fog->omega, fog->lambda };
     p = v3_mul(p, fog->turbulence);
     double k = exp(-width / fog->distance);
     double depth = fog->turb_depth != 0 ? fog->turb_depth : 0.5;
@@ -1301,6 +1380,9 @@ double trace_ray(struct trace_ctx *c, const struct tray *r, double weight,
         texture_colour(c, r, &h, weight, rgb);
     else
         sky_colour(c, r->r.d, rgb);
+    if ((ray_quality(c) & TQ_VOLUME) && t->scene->n_rainbows > 0 &&
+        is_hollow_ray(&r->st))
+        rainbow_apply(t->scene, t->mat, r->r.d, found ? h.t : HUGE_DEPTH, rgb);
     if (ray_quality(c) & TQ_VOLUME)
         ray_media(c, r, found, found ? h.t : HUGE_DEPTH, rgb);
     if (t->scene->n_fogs > 0 && is_hollow_ray(&r->st))

@@ -168,6 +168,25 @@ void trace_containing(const struct tracer *t, vec3 p,
                       struct interior_stack *st);
 
 /*
+** The objects trace_containing() asks (unions split), left out those
+** whose inside box does not meet box lo..hi: for many rays starting in
+** that box (focal blur's aperture), most objects are far away.
+*/
+struct containing_list {
+    vec3 lo, hi;
+    int n, cap;
+    const iris_object **o;
+};
+bool trace_containing_list(const struct tracer *t, vec3 lo, vec3 hi,
+                           struct containing_list *cl);
+void trace_containing_list_free(struct containing_list *cl);
+/* trace_containing() through 'cl': the same interiors in the same order;
+** a point outside the list's box asks every object. */
+void trace_containing_from(const struct tracer *t,
+                           const struct containing_list *cl, vec3 p,
+                           struct interior_stack *st);
+
+/*
 ** Traces 'r' and writes its linear colour to rgb[3]. 'continued' rays
 ** (straight through an ior-1 interface) do not count as a trace level.
 ** Returns the hit distance, or HUGE_VAL.

@@ -24,3 +24,8 @@ tests_unit_test_julia_hcx_SOURCES = tests/unit/test_julia_hcx.c \
 	tests/testutil.h
 tests_unit_test_julia_hcx_CFLAGS = $(TEST_CFLAGS)
 tests_unit_test_julia_hcx_LDADD = $(TEST_LDADD)
+check_PROGRAMS += tests/unit/test_csgbox
+TESTS += tests/unit/test_csgbox
+tests_unit_test_csgbox_SOURCES = tests/unit/test_csgbox.c tests/testutil.h
+tests_unit_test_csgbox_CFLAGS = $(TEST_CFLAGS)
+tests_unit_test_csgbox_LDADD = $(TEST_LDADD)
