@@ -1137,7 +1137,13 @@ static void shape_body(pp_state *ps, iris_object *o, int kw, const pp_token *at)
         if (ps->tok.kind == T_FUNCTION) {
             o->u.height_field.fn_res_x = pp_int(ps); comma(ps);
             o->u.height_field.fn_res_y = pp_int(ps);
-            o->u.height_field.fn = pp_function(ps);
+            iris_fn *fn = pp_function(ps);
+            /* POV-Ray stores a pigment function as a 16-bit colour image
+            ** and takes its heights from Greyscale() (imageutil.cpp's
+            ** image_height_at), not from the red component. */
+            if (fn->n_results == 5 && fn->n_code == 1 && fn->code[0].pigment)
+                fn->code[0].arg = 5;
+            o->u.height_field.fn = fn;
         } else {
             pp_unget(ps);
             iris_image_ref *img = pp_alloc(ps, sizeof *img);

@@ -209,7 +209,13 @@ pp_value pp_rvalue(pp_state *ps)
     }
     case T_PIGMENT: return make(V_PIGMENT, pp_pigment(ps, NULL));
     case T_NORMAL: return make(V_NORMAL, pp_normal(ps, NULL));
-    case T_FINISH: return make(V_FINISH, pp_finish(ps, NULL));
+    case T_FINISH: {
+        /* a declared finish starts from the #default finish, as POV-Ray's
+        ** Parse_RValue copies the default texture's (incdemo/shapes.pov:
+        ** #default { finish { ambient 0 } } then #declare F = finish {..}) */
+        const iris_texture *d = pp_default_texture(ps);
+        return make(V_FINISH, pp_finish(ps, d ? d->finish : NULL));
+    }
     case T_INTERIOR: return make(V_INTERIOR, pp_interior(ps, NULL));
     case T_MATERIAL: return make(V_MATERIAL, pp_material_block(ps));
     case T_TRANSFORM: return make(V_TRANSFORM, pp_transform_block(ps));
@@ -236,7 +242,8 @@ pp_value pp_rvalue(pp_state *ps)
         ps->in_density--;
         return make(V_DENSITY_MAP, m);
     }
-    case T_RAINBOW: case T_PHOTONS: case T_RADIOSITY: {
+    case T_RAINBOW: return make(V_RAINBOW, pp_rainbow_block(ps));
+    case T_PHOTONS: case T_RADIOSITY: {
         pp_warn_once(ps, &at, at.kind, lex_keyword_name(at.kind));
         pp_expect(ps, T_LBRACE, "'{'");
         pp_skip_block(ps);

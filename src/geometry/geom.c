@@ -108,6 +108,8 @@ void geom_intersect(const iris_object *o, const struct geom_profile *prof,
                     vec3 ro, vec3 rd, double t0, double t1,
                     struct isect_list *out)
 {
+    if (o->bounded_by && !geom_bound_admits(o, prof, ro, rd))
+        return;
     switch (o->kind) {
     case IRIS_OBJ_SPHERE: geom_sphere_hits(o, ro, rd, t0, t1, out); break;
     case IRIS_OBJ_PLANE: geom_plane_hits(o, ro, rd, t0, t1, out); break;

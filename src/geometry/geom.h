@@ -89,6 +89,11 @@ void geom_intersect(const iris_object *obj, const struct geom_profile *prof,
                     vec3 o, vec3 d, double tmin, double tmax,
                     struct isect_list *out);
 
+/* Whether POV-Ray tests shape 'obj' for the object-space ray o + t·d at
+** all: false when its bounded_by cuts the ray off (bound.c). */
+bool geom_bound_admits(const iris_object *obj, const struct geom_profile *prof,
+                       vec3 o, vec3 d);
+
 /* Whether object-space point 'p' is inside 'obj' (not inverted). */
 bool geom_inside(const iris_object *obj, const struct geom_profile *prof,
                  vec3 p);
@@ -142,6 +147,11 @@ void geom_blob_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
                     double t1, struct isect_list *out);
 double geom_blob_density(const iris_object *o, vec3 p);
 bool geom_blob_bounds(const iris_object *o, vec3 *lo, vec3 *hi);
+/* geom_blob_hits() with the box geom_blob_bounds() gave, computed once
+** by the caller: over every component, it cost more than the crossings */
+void geom_blob_hits_in_box(const iris_object *o, vec3 blo, vec3 bhi,
+                           vec3 ro, vec3 rd, double t0, double t1,
+                           struct isect_list *out);
 /* Lathe and sor: the profile (r, y) revolved about the y axis. */
 void geom_lathe_hits(const struct geom_profile *p, vec3 ro, vec3 rd,
                      double t0, double t1, struct isect_list *out);

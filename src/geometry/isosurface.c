@@ -26,10 +26,9 @@ struct iso {
     const iris_object *o;
     vec3 ro, rd;
     double G, acc, dlen;
-    int evals, max_roots;
-    double t0, t1;
-    struct isect_list *out;
-    int found;
+    int evals;
+    double pol;  /* +1, or -1 while looking for the way out (POV's Inv3) */
+    double tl;   /* the root root_r found */
 };
 
 static double g_at(const iris_object *o, vec3 p)
@@ -46,48 +45,69 @@ static double g_t(struct iso *s, double t)
     return g_at(s->o, v3_madd(s->ro, s->rd, t));
 }
 
-/* Outward normal: the gradient by central differences of step 'h'. */
-static vec3 iso_normal(const iris_object *o, vec3 p, double h)
+/* g with the search's polarity: negative past the surface being sought */
+static double f_t(struct iso *s, double t)
 {
-    return v3(g_at(o, v3(p.x + h, p.y, p.z)) - g_at(o, v3(p.x - h, p.y, p.z)),
-              g_at(o, v3(p.x, p.y + h, p.z)) - g_at(o, v3(p.x, p.y - h, p.z)),
-              g_at(o, v3(p.x, p.y, p.z + h)) - g_at(o, v3(p.x, p.y, p.z - h)));
+    return s->pol * g_t(s, t);
 }
 
-static void search(struct iso *s, double a, double b, double ga, double gb)
+/* Outward normal as POV-Ray computes it (IsoSurface::Normal): forward
+** differences of step 'accuracy' in object space. The step is part of
+** the look: on a noisy function it smooths the normal the same way. */
+static vec3 iso_normal(const iris_object *o, vec3 p, double h)
 {
-    if (s->found >= s->max_roots || s->evals > MAX_EVALS)
-        return;
-    double len = (b - a) * s->dlen;
-    if (fabs(ga) + fabs(gb) > s->G * len)
-        return;
-    if (len <= s->acc) {
-        if ((ga < 0) == (gb < 0))
-            return;
-        /* Refine the sign change to double precision (60 halvings of an
-        ** interval below 'accuracy'): a ray leaving the surface must not
-        ** find the same root again beyond accel_epsilon() */
-        for (int k = 0; k < 60 && b - a > 4e-16 * fmax(fabs(a), fabs(b));
-             k++) {
-            double m = 0.5 * (a + b), gm = g_t(s, m);
-            if ((gm < 0) == (ga < 0)) {
-                a = m;
-                ga = gm;
-            } else {
-                b = m;
-            }
+    double g0 = g_at(o, p);
+    vec3 n = v3(g_at(o, v3(p.x + h, p.y, p.z)) - g0,
+                g_at(o, v3(p.x, p.y + h, p.z)) - g0,
+                g_at(o, v3(p.x, p.y, p.z + h)) - g0);
+    return v3_len2(n) > 0 ? n : v3(1, 0, 0);
+}
+
+/*
+** POV-Ray's Function_Find_Root_R (R. Suzuki's method): [t1, t2] with
+** polarised values f1, f2 may hold a root unless f1 + f2 >= dt, where dt
+** = max_gradient * |d| * (t2 - t1); such intervals are halved, front half
+** first, until shorter than 'accuracy' (in ray units), and the first one
+** whose far end is past the surface (f2 < 0) gives the root t2. The root
+** is thus up to 'accuracy' inside the surface, on the halving grid of
+** the container interval: the same points POV-Ray shades.
+*/
+static bool root_r(struct iso *s, double t1, double f1, double t2, double f2,
+                   double dt, double t21)
+{
+    if (s->evals > MAX_EVALS)
+        return false;
+    if (t21 < s->acc) {
+        if (f2 < 0) {
+            s->tl = t2;
+            return true;
         }
-        double t = 0.5 * (a + b);
-        if (t > s->t0 && t < s->t1) {
-            vec3 p = v3_madd(s->ro, s->rd, t);
-            isect_push(s->out, t, iso_normal(s->o, p, 1e-2 * s->acc), 0, 0);
-            s->found++;
-        }
-        return;
+        return false;
     }
-    double m = 0.5 * (a + b), gm = g_t(s, m);
-    search(s, a, m, ga, gm);
-    search(s, m, b, gm, gb);
+    if (f1 + f2 - dt >= 0)
+        return false;
+    t21 *= 0.5;
+    dt *= 0.5;
+    double tm = t1 + t21, fm = f_t(s, tm);
+    return root_r(s, t1, f1, tm, fm, dt, t21) ||
+           root_r(s, tm, fm, t2, f2, dt, t21);
+}
+
+/* POV-Ray's Function_Find_Root: the first root in [*tmin, tmax]. An open
+** isosurface that starts inside turns its polarity to look for the way
+** out. */
+static bool find_root(struct iso *s, double *tmin, double tmax)
+{
+    double f1 = f_t(s, *tmin);
+    if (s->o->open && f1 < 0) {
+        s->pol = -s->pol;
+        f1 = -f1;
+    }
+    double f2 = f_t(s, tmax), t21 = tmax - *tmin;
+    if (!root_r(s, *tmin, f1, tmax, f2, s->G * s->dlen * t21, t21))
+        return false;
+    *tmin = s->tl;
+    return true;
 }
 
 /* Container interval along the ray and the container normal function. */
@@ -133,6 +153,41 @@ static vec3 container_normal(const iris_object *o, vec3 p)
     return n;
 }
 
+/*
+** A ray starting on the surface (g0 = g at t = 0 under 4 max_gradient
+** accuracy, as a reflected or shadow ray does) or inside the container:
+** POV-Ray goes on from 5 accuracy and looks for the way out if it is
+** inside there. (The points it shades lie up to 'accuracy' inside, so a
+** ray leaving one at a grazing angle may find its own surface again; POV-
+** Ray shadows such rays, and so does iris.)
+*/
+static double step_in(struct iso *s)
+{
+    double t = s->acc * 5.0;
+    if (g_t(s, t) < 0)
+        s->pol = -1;
+    return t;
+}
+
+/* A crossing at 't' if it lies in the caller's range (t0, t1). */
+static int push_in_range(struct isect_list *out, double t, vec3 n, double t0,
+                         double t1)
+{
+    if (!(t > t0 && t < t1))
+        return 0;
+    isect_push(out, t, n, 0, 0);
+    return 1;
+}
+
+/*
+** The crossings along the ray, found as POV-Ray's All_Intersections
+** finds them (isosurface.cpp), so that the points shaded are the same:
+** the search runs over the whole container interval (from t = 0 when the
+** ray starts inside it), whatever part of it the caller wants; a ray
+** starting on the surface (|g| < 4 max_gradient accuracy) steps 5
+** accuracy in and looks for the way out if it is inside; after a root
+** the search goes on 5 accuracy further with the polarity turned.
+*/
 void geom_isosurface_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
                           double t1, struct isect_list *out)
 {
@@ -141,30 +196,54 @@ void geom_isosurface_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
     double a, b;
     if (!container(o, ro, rd, &a, &b))
         return;
-    struct iso s = { .o = o, .ro = ro, .rd = rd, .out = out, .t0 = t0,
-                     .t1 = t1 };
+    struct iso s = { .o = o, .ro = ro, .rd = rd, .pol = 1 };
     s.dlen = v3_len(rd);
     /* POV-Ray's defaults: max_gradient 1.1, accuracy 0.001 */
     s.G = o->u.isosurface.max_gradient > 0 ? o->u.isosurface.max_gradient
                                            : 1.1;
     s.acc = o->u.isosurface.accuracy > 0 ? o->u.isosurface.accuracy : 1e-3;
-    s.max_roots = o->u.isosurface.all_intersections ? 64
-                  : o->u.isosurface.max_trace > 0 ? o->u.isosurface.max_trace
-                                                  : 1;
-    double ga = g_t(&s, a), gb = g_t(&s, b);
-    /* Container walls where the function is inside */
+    int max_roots = o->u.isosurface.all_intersections ? 64
+                    : o->u.isosurface.max_trace > 0 ? o->u.isosurface.max_trace
+                                                    : 1;
+    double near_surface = s.G * s.acc * 4.0;
+    int n0 = out->n, itrace = 0;
+    if (a < 0)
+        a = 0;
     if (!o->open) {
-        if (ga < 0 && a > t0 && a < t1) {
-            isect_push(out, a, container_normal(o, v3_madd(ro, rd, a)), 0, 0);
-            s.found++;
+        double ga = g_t(&s, a);
+        if (a > s.acc) {
+            if (ga < 0) {
+                /* the container's wall, where the function is inside */
+                push_in_range(out, a,
+                              container_normal(o, v3_madd(ro, rd, a)), t0, t1);
+                itrace++;
+                s.pol = -1;
+            }
+        } else {
+            if (ga < near_surface)
+                a = step_in(&s);
+            if (g_t(&s, b) < 0)
+                push_in_range(out, b, container_normal(o, v3_madd(ro, rd, b)),
+                              t0, t1);
         }
     }
-    double sa = fmax(a, t0), sb = fmin(b, t1);
-    if (sa < sb)
-        search(&s, sa, sb, sa == a ? ga : g_t(&s, sa),
-               sb == b ? gb : g_t(&s, sb));
-    if (!o->open && gb < 0 && b > t0 && b < t1)
-        isect_push(out, b, container_normal(o, v3_madd(ro, rd, b)), 0, 0);
+    double tmax = b, tmin = fmin(a, b);
+    if (tmax - tmin < s.acc) {
+        out->n = n0; /* POV-Ray takes back the wall it found */
+        return;
+    }
+    if (tmin < s.acc && s.pol > 0 && fabs(g_t(&s, tmin)) < near_surface)
+        tmin = step_in(&s);
+    for (; itrace < max_roots; itrace++) {
+        if (!find_root(&s, &tmin, tmax))
+            break;
+        push_in_range(out, tmin,
+                      iso_normal(o, v3_madd(ro, rd, tmin), s.acc), t0, t1);
+        tmin += s.acc * 5.0;
+        if (tmax - tmin < s.acc)
+            break;
+        s.pol = -s.pol;
+    }
 }
 
 bool geom_isosurface_inside(const iris_object *o, vec3 p)

@@ -6,4 +6,4 @@ libiris_core_la_SOURCES += %reldir%/geom.c %reldir%/geom.h \
 	%reldir%/text.c %reldir%/isosurface.c %reldir%/julia.c \
 	%reldir%/julia_hcx.c %reldir%/julia_hcx.h \
 	%reldir%/ovus.c %reldir%/sphere_sweep.c %reldir%/parametric.c \
-	%reldir%/lemon.c %reldir%/bicubic.c
+	%reldir%/lemon.c %reldir%/bicubic.c %reldir%/bound.c

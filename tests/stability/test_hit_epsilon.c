@@ -136,7 +136,9 @@ static iris_scene *shapes_scene(double scale)
     iso->u.isosurface.lo = v3(-1, -1, -1);
     iso->u.isosurface.hi = v3(1, 1, 1);
     iso->u.isosurface.max_gradient = 4;
-    iso->u.isosurface.accuracy = 1e-3;
+    /* POV-Ray's accuracy is a distance along the ray, not in the shape's
+    ** units: a scene scaled by 'scale' scales it too (isosurface.c) */
+    iso->u.isosurface.accuracy = 1e-3 * scale;
     iso->u.isosurface.max_trace = 1;
     xf_translate(&x, v3(0, -2, 0));
     apply(iso, &x);

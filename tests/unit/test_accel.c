@@ -654,9 +654,16 @@ static iris_fn *sphere_fn(iris_scene *sc, double c)
     return f;
 }
 
-/* Isosurface x²+y²+z² = 1 in the box [-2,2]³ (|grad| <= 2·sqrt(12) < 7):
-** the root is refined to double precision, so t = 4 within 1e-9. With
-** x²+y²+z² = 9 the whole box is inside and its wall at z=-2 shows. */
+/* Isosurface x²+y²+z² = 1 in the box [-2,2]³ (|grad| <= 2·sqrt(12) < 7).
+** POV-Ray's root (isosurface.cpp, Function_Find_Root_R) is the far end of
+** the first interval of the halving of the container interval [3, 7]
+** shorter than accuracy 0.001 (4/4096) where the function is negative:
+** for the root t = 4 that is 3 + 1025/1024 (t = 4 itself gives exactly
+** 0, not inside), for t = 4.2 it is 3 + 1229/1024; both are exact binary
+** fractions, hence 1e-12. The normal is POV-Ray's forward difference of
+** step 0.001: its x and y parts are 0.001²/(2·0.001) = 5e-4 of the z part,
+** hence 1e-3. With x²+y²+z² = 9 the whole box is inside and its wall at
+** z=-2 shows. */
 static void test_isosurface(void **state)
 {
     (void)state;
@@ -671,10 +678,10 @@ static void test_isosurface(void **state)
     struct accel *a = build(sc);
     struct hit h;
     assert_true(shoot(a, v3(0, 0, -5), v3(0, 0, 1), &h));
-    assert_near(h.t, 4, 1e-9);
-    assert_vec(h.n, v3(0, 0, -1), 1e-5);
+    assert_near(h.t, 3 + 1025.0 / 1024, 1e-12);
+    assert_vec(h.n, v3(0, 0, -1), 1e-3);
     assert_true(shoot(a, v3(0.6, 0, -5), v3(0, 0, 1), &h));
-    assert_near(h.t, 5 - 0.8, 1e-9);
+    assert_near(h.t, 3 + 1229.0 / 1024, 1e-12);
     assert_true(accel_inside(a, iso, v3(0.5, 0.5, 0.5)));
     assert_false(accel_inside(a, iso, v3(0.5, 1, 0.5)));
     /* From the surface outwards nothing is found again */
@@ -920,6 +927,9 @@ static void self_hit_at(double scale)
     iso->u.isosurface.contained_kind = 1;
     iso->u.isosurface.max_gradient = 2.5;
     iso->u.isosurface.max_trace = 1;
+    /* POV-Ray's accuracy is a distance along the ray, not in the shape's
+    ** units: a scene scaled by 'scale' scales it too (isosurface.c) */
+    iso->u.isosurface.accuracy = 1e-3 * scale;
     xf_translate(&x, v3(-3, -2, 5));
     apply(iso, &x);
     xf_scale(&x, v3(scale, scale, scale));
