@@ -75,7 +75,7 @@ static const char *pattern_name(int k)
         "julia", "leopard", "mandel", "marble", "onion", "planar", "quilted",
         "radial", "ripples", "slope", "spherical", "spiral1", "spiral2",
         "spotted", "waves", "wood", "wrinkles", "object", "tiling",
-        "pavement", "square", "triangular", "facets",
+        "pavement", "square", "triangular", "facets", "density_file",
     };
     return k >= 0 && k < IRIS_PAT_COUNT ? n[k] : "?";
 }

@@ -460,7 +460,8 @@ static iris_image_ref *image_block(pp_state *ps, double *bump_size)
         case T_ONCE: img->once = true; break;
         case T_INTERPOLATE: img->interpolate = pp_int(ps); break;
         case T_USE_ALPHA: img->use_alpha = true; break;
-        case T_USE_COLOR: case T_USE_INDEX: break;
+        case T_USE_COLOR: img->use_index = false; break;
+        case T_USE_INDEX: img->use_index = true; break;
         case T_GAMMA: img->gamma = pp_float(ps); break;
         case T_PREMULTIPLIED: pp_bool_opt(ps); break;
         case T_BUMP_SIZE: {
@@ -475,11 +476,24 @@ static iris_image_ref *image_block(pp_state *ps, double *bump_size)
             if (pp_accept(ps, T_ALL)) {
                 *all = pp_float(ps);
             } else {
-                pp_float(ps);
+                /* POV-Ray rounds the register as (int)(N + 0.01) */
+                double reg = pp_float(ps);
                 pp_accept(ps, T_COMMA);
-                pp_float(ps);
-                pp_warn_once(ps, &at, at.kind, "per-index filter/transmit "
-                             "of palette images");
+                double v = pp_float(ps);
+                if (!(reg + 0.01 >= 0.0 && reg + 0.01 < 256.0))
+                    pp_error(ps, &at, "%s colour register value out of "
+                             "range", at.kind == T_FILTER ? "filter"
+                                                           : "transmit");
+                struct iris_palette_ft *a =
+                    pp_alloc(ps, (size_t)(img->n_palette_ft + 1) * sizeof *a);
+                if (img->n_palette_ft)
+                    memcpy(a, img->palette_ft,
+                           (size_t)img->n_palette_ft * sizeof *a);
+                a[img->n_palette_ft].index = (int)(reg + 0.01);
+                a[img->n_palette_ft].which = at.kind == T_FILTER ? 0 : 1;
+                a[img->n_palette_ft].value = v;
+                img->palette_ft = a;
+                img->n_palette_ft++;
             }
             break;
         }
@@ -488,6 +502,30 @@ static iris_image_ref *image_block(pp_state *ps, double *bump_size)
         }
         }
     }
+}
+
+/* A .df3 file's 6-byte header against its length: nx*ny*nz voxels of 1,
+** 2 or 4 bytes (POV-Ray's Read_Density_File); a located error else. */
+static void check_df3(pp_state *ps, const pp_token *at, const char *path)
+{
+    FILE *f = fopen(path, "rb");
+    unsigned char h[6];
+    if (!f)
+        pp_error(ps, at, "cannot read media density file \"%s\"", path);
+    size_t got = fread(h, 1, 6, f);
+    long end = fseek(f, 0, SEEK_END) == 0 ? ftell(f) : -1;
+    fclose(f);
+    if (got != 6 || end < 6)
+        pp_error(ps, at, "density file \"%s\" is truncated (no 6-byte "
+                 "header)", path);
+    long long n = (long long)(h[0] << 8 | h[1]) * (h[2] << 8 | h[3]) *
+                  (h[4] << 8 | h[5]);
+    long long len = end - 6;
+    if (!(n > 0 && (len == n || len == 2 * n || len == 4 * n)))
+        pp_error(ps, at, "invalid density file size: \"%s\" holds %lld "
+                 "bytes of voxels for %d x %d x %d (1, 2 or 4 bytes each)",
+                 path, len, h[0] << 8 | h[1], h[2] << 8 | h[3],
+                 h[4] << 8 | h[5]);
 }
 
 static bool list_pattern(int kind)
@@ -550,7 +588,14 @@ static bool pattern_kind(pp_state *ps, iris_pattern *p)
     case T_CYLINDRICAL: p->kind = IRIS_PAT_CYLINDRICAL; break;
     case T_DENTS: p->kind = IRIS_PAT_DENTS; break;
     case T_FACETS: p->kind = IRIS_PAT_FACETS; break;
-    case T_GRADIENT: p->kind = IRIS_PAT_GRADIENT; p->vector = pp_vector(ps); break;
+    case T_GRADIENT:
+        /* POV-Ray normalises the vector (Parse_Pattern's VNormalizeEq):
+        ** gradient x+y has stripes 1/sqrt(2) apart, not 1/2 */
+        p->kind = IRIS_PAT_GRADIENT;
+        p->vector = pp_vector(ps);
+        if (v3_len2(p->vector) > 0)
+            p->vector = v3_norm(p->vector);
+        break;
     case T_GRANITE: p->kind = IRIS_PAT_GRANITE; break;
     case T_HEXAGON: p->kind = IRIS_PAT_HEXAGON; break;
     case T_JULIA:
@@ -695,10 +740,11 @@ static bool pattern_kind(pp_state *ps, iris_pattern *p)
         break;
     }
     case T_DENSITY_FILE: {
-        /* density_file df3 "file" [interpolate n]: the file is found and
-        ** checked against the read policy, but scene.h has no voxel
-        ** data, so the pattern reads as 0 everywhere (a function
-        ** pattern without a function) */
+        /* density_file df3 "file" [interpolate n]: the voxels are read
+        ** by the renderer (src/image/df3.c); here the file must exist and
+        ** its length must fit its header, as POV-Ray reads it while
+        ** parsing ("Cannot read media density file", "Invalid density
+        ** file size"). */
         pp_next(ps);
         if (ps->tok.kind != T_DF3)
             pp_unexpected(ps, &ps->tok, "density_file (expected df3)");
@@ -706,13 +752,13 @@ static bool pattern_kind(pp_state *ps, iris_pattern *p)
         pp_token ft = ps->tok;
         pp_unget(ps);
         const char *name = pp_string(ps);
-        pp_find_file(ps, &ft, name);
+        iris_image_ref *ref = pp_alloc(ps, sizeof *ref);
+        ref->path = pp_require_file(ps, &ft, name, NULL, "density file");
+        check_df3(ps, &ft, ref->path);
         if (pp_accept(ps, T_INTERPOLATE))
-            pp_int(ps);
-        pp_warn_once(ps, &at, T_DENSITY_FILE, "density_file (the pattern "
-                     "reads as 0)");
-        p->kind = IRIS_PAT_FUNCTION;
-        p->fn = NULL;
+            ref->interpolate = pp_int(ps);
+        p->kind = IRIS_PAT_DENSITY_FILE;
+        p->image = ref;
         break;
     }
     default:
@@ -741,10 +787,10 @@ static bool pattern_mod(pp_state *ps, iris_pattern *p)
     case T_FREQUENCY: p->frequency = pp_float(ps); return true;
     case T_INTERPOLATE:
         /* density_file's interpolation (POV-Ray accepts it as a pattern
-        ** modifier); the density file itself is not rendered */
-        if (p->kind != IRIS_PAT_FUNCTION || p->fn)
+        ** modifier) */
+        if (p->kind != IRIS_PAT_DENSITY_FILE || !p->image)
             return false;
-        pp_int(ps);
+        p->image->interpolate = pp_int(ps);
         return true;
     case T_PHASE: p->phase = pp_float(ps); return true;
     case T_RAMP_WAVE: p->wave = IRIS_WAVE_RAMP; return true;
@@ -1717,6 +1763,56 @@ static iris_texture *uv_texture(pp_state *ps, iris_texture *t)
 }
 
 /* The items of a texture up to 'end'. */
+/*
+** material_map { [TYPE] "file" [map_type N] [once] [interpolate N]
+**                texture { ... } ... }
+** into 't' as an image_map map pattern whose entries are the textures in
+** order (src/material/texture.c picks one per texel). Later transforms
+** of the texture reach pattern and textures alike (pp_tex_transform).
+*/
+static void material_map(pp_state *ps, iris_texture *t)
+{
+    pp_token open = ps->tok;
+    pp_expect(ps, T_LBRACE, "'{'");
+    iris_image_ref *img = image_file(ps);
+    int n = 0, cap = 4;
+    iris_map_entry *e = pp_alloc(ps, (size_t)cap * sizeof *e);
+    for (;;) {
+        pp_next(ps);
+        pp_token at = ps->tok;
+        switch (at.kind) {
+        case T_RBRACE:
+            if (n == 0)
+                pp_error(ps, &open, "material_map needs at least one "
+                         "texture");
+            pp_pattern_init(&t->map_pattern);
+            t->map_pattern.kind = IRIS_PAT_IMAGE_MAP;
+            t->map_pattern.image = img;
+            t->n_entries = n;
+            t->entries = e;
+            return;
+        case T_MAP_TYPE: img->map_type = pp_int(ps); break;
+        case T_ONCE: img->once = true; break;
+        case T_INTERPOLATE: img->interpolate = pp_int(ps); break;
+        case T_TEXTURE:
+            if (n == cap) {
+                iris_map_entry *g = pp_alloc(ps, 2 * (size_t)cap * sizeof *g);
+                memcpy(g, e, (size_t)n * sizeof *e);
+                e = g;
+                cap *= 2;
+            }
+            e[n].value = n;
+            e[n].texture = pp_texture(ps);
+            n++;
+            break;
+        case T_EOF:
+            pp_error(ps, &open, "material_map without its closing bracket");
+        default:
+            pp_unexpected(ps, &at, "material_map");
+        }
+    }
+}
+
 static iris_texture *texture_body(pp_state *ps, int end)
 {
     pp_next(ps);
@@ -1766,16 +1862,20 @@ static iris_texture *texture_body(pp_state *ps, int end)
             continue;
         }
         case T_TILES: {
-            /* the old tiles { texture{} tile2 texture{} }: a checker */
+            /* the old tiles { texture{} tile2 texture{} }: a checker
+            ** whose first tile is checker value 1 and tile2 value 0, as
+            ** POV-Ray's Parse_Tiles keeps them (the reverse of
+            ** checker's texture order) */
             pp_expect(ps, T_LBRACE, "'{'");
             iris_map_entry *e = pp_alloc(ps, 2 * sizeof *e);
-            int cnt = 0;
+            e[1].value = 1;
+            int cnt = 1;
             for (;;) {
                 pp_next(ps);
                 if (ps->tok.kind == T_RBRACE)
                     break;
                 if (ps->tok.kind == T_TILE2) {
-                    cnt = 1;
+                    cnt = 0;
                     continue;
                 }
                 if (ps->tok.kind != T_TEXTURE)
@@ -1783,8 +1883,9 @@ static iris_texture *texture_body(pp_state *ps, int end)
                 iris_texture *tt = pp_texture(ps);
                 tt->next = e[cnt].texture;
                 e[cnt].texture = tt;
-                e[cnt].value = cnt;
             }
+            if (!e[1].texture)
+                pp_error(ps, &at, "first texture missing from tiles");
             pp_pattern_init(&t->map_pattern);
             t->map_pattern.kind = IRIS_PAT_CHECKER;
             t->n_entries = 2;
@@ -1795,9 +1896,7 @@ static iris_texture *texture_body(pp_state *ps, int end)
             uv = true;
             continue;
         case T_MATERIAL_MAP:
-            pp_warn_once(ps, &at, T_MATERIAL_MAP, "material_map");
-            pp_expect(ps, T_LBRACE, "'{'");
-            pp_skip_block(ps);
+            material_map(ps, t);
             continue;
         case T_TRANSFORM: case T_TRANSLATE: case T_ROTATE: case T_SCALE:
         case T_MATRIX: {
@@ -2098,6 +2197,111 @@ iris_fog *pp_fog(pp_state *ps)
         }
         }
     }
+}
+
+/*
+** rainbow { [RAINBOW_IDENTIFIER] [angle A] [width W] [distance D]
+**           [jitter J] [direction V] [up V] [arc_angle A] [falloff_angle A]
+**           [colour_map {...}] }
+** checked and resolved as POV-Ray's Parse_Rainbow (unit, perpendicular
+** antisolar, up and right vectors; the colour map as a gradient x pigment;
+** the arc and falloff angles halved, in radians), except 'angle' and
+** 'width', which stay in degrees as written: pp_rainbow converts them once
+** for the scene. A declared rainbow (#declare R = rainbow {...}) is this
+** value, so 'rainbow { R }' renders as R's own block would. POV-Ray 3.7
+** converts them a second time on the copy (the bow shrinks about 57 times
+** towards the antisolar point) and then aborts freeing it (free(): invalid
+** pointer); iris keeps the documented meaning.
+*/
+iris_rainbow *pp_rainbow_block(pp_state *ps)
+{
+    pp_token open = ps->tok;
+    pp_expect(ps, T_LBRACE, "'{' after rainbow");
+    iris_rainbow *r = pp_alloc(ps, sizeof *r);
+    r->loc = pp_loc(ps, &open);
+    r->distance = 1e7; /* POV-Ray's MAX_DISTANCE */
+    r->arc_angle = r->falloff_angle = 180.0;
+    r->up = v3(0, 1, 0);
+    bool has_arc = false, has_falloff = false;
+    for (bool first = true;; first = false) {
+        pp_next(ps);
+        pp_token at = ps->tok;
+        if (at.kind == T_RBRACE)
+            break;
+        if (first && at.kind == T_IDENT && at.val.kind == V_RAINBOW) {
+            *r = *(const iris_rainbow *)at.val.u.ptr;
+            r->loc = pp_loc(ps, &open);
+            continue;
+        }
+        switch (at.kind) {
+        case T_ANGLE: r->angle = pp_float(ps); break;
+        case T_WIDTH: r->width = pp_float(ps); break;
+        case T_DISTANCE: r->distance = pp_float(ps); break;
+        case T_JITTER: r->jitter = pp_float(ps); break;
+        case T_DIRECTION: r->antisolar = pp_vector(ps); break;
+        case T_UP: r->up = pp_vector(ps); break;
+        case T_ARC_ANGLE: case T_FALLOFF_ANGLE: {
+            double a = pp_float(ps);
+            if (!(a >= 0.0 && a <= 360.0))
+                pp_error(ps, &at, "illegal %s in rainbow (use a value from "
+                         "0 to 360 degrees)", at.kind == T_ARC_ANGLE
+                         ? "arc angle" : "falloff angle");
+            *(at.kind == T_ARC_ANGLE ? &r->arc_angle : &r->falloff_angle) =
+                a * M_PI / 360.0;
+            *(at.kind == T_ARC_ANGLE ? &has_arc : &has_falloff) = true;
+            break;
+        }
+        case T_COLOR_MAP: {
+            pp_map *m = pp_map_block(ps, V_COLOUR_MAP);
+            iris_pigment *p = pp_pigment_new(ps, &at);
+            p->pattern.kind = IRIS_PAT_GRADIENT;
+            p->pattern.vector = v3(1, 0, 0);
+            p->n_entries = m->n;
+            p->entries = m->e;
+            r->pigment = p;
+            break;
+        }
+        case T_EOF:
+            pp_error(ps, &open, "rainbow without its closing bracket");
+        default:
+            pp_unexpected(ps, &at, "rainbow");
+        }
+    }
+    /* Unset angles stay 180 (not halved), as POV-Ray leaves them. */
+    if (has_arc && !has_falloff)
+        r->falloff_angle = r->arc_angle;
+    if (r->arc_angle < r->falloff_angle)
+        pp_error(ps, &open, "arc angle is smaller than falloff angle in "
+                 "rainbow");
+    r->falloff_width = r->arc_angle - r->falloff_angle;
+    if (fabs(v3_dot(r->antisolar, r->antisolar)) < 1e-10)
+        pp_error(ps, &open, "rainbow's direction vector is zero");
+    if (fabs(v3_dot(r->up, r->up)) < 1e-10)
+        pp_error(ps, &open, "rainbow's up vector is zero");
+    r->antisolar = v3_norm(r->antisolar);
+    r->up = v3_norm(r->up);
+    if (fabs(1.0 - fabs(v3_dot(r->up, r->antisolar))) < 1e-10)
+        pp_error(ps, &open, "rainbow's up and direction vectors are "
+                 "co-linear");
+    r->right = v3_cross(r->up, r->antisolar);
+    r->up = v3_norm(v3_cross(r->antisolar, r->right));
+    r->right = v3_norm(r->right);
+    return r;
+}
+
+/* rainbow {...} in the scene: 'angle' lowered by half the width, both in
+** radians, appended to the scene's rainbows. */
+void pp_rainbow(pp_state *ps)
+{
+    iris_rainbow *r = pp_rainbow_block(ps); /* new, a declared one copied */
+    r->angle = (r->angle - 0.5 * r->width) * M_PI / 180.0;
+    r->width *= M_PI / 180.0;
+    iris_scene *sc = ps->scene;
+    iris_rainbow **a = pp_alloc(ps, (size_t)(sc->n_rainbows + 1) * sizeof *a);
+    if (sc->n_rainbows)
+        memcpy(a, sc->rainbows, (size_t)sc->n_rainbows * sizeof *a);
+    a[sc->n_rainbows++] = r;
+    sc->rainbows = a;
 }
 
 /* sky_sphere { [SKY_ID] pigment{}... [emission C] [transforms] } */

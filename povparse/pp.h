@@ -453,6 +453,8 @@ iris_normal *pp_nor_transform(pp_state *ps, const iris_normal *n,
 iris_texture *pp_texture_new(pp_state *ps, const pp_token *at);
 iris_pigment *pp_pigment_new(pp_state *ps, const pp_token *at);
 iris_fog *pp_fog(pp_state *ps);
+void pp_rainbow(pp_state *ps); /* rainbow { ... }, appended to the scene */
+iris_rainbow *pp_rainbow_block(pp_state *ps); /* a declared rainbow */
 iris_sky_sphere *pp_sky_sphere(pp_state *ps, const iris_sky_sphere *b);
 void pp_pattern_init(iris_pattern *p);
 /* A file resolved along the search path (scene arena); one found nowhere

@@ -254,8 +254,7 @@ iris_camera *pp_camera(pp_state *ps, const iris_camera *base)
             pp_skip_block(ps);
             break;
         case T_NORMAL:
-            pp_warn_once(ps, &at, T_CAMERA, "a camera normal");
-            pp_normal(ps, NULL);
+            c->normal = pp_normal(ps, c->normal);
             break;
         default: {
             iris_transform x;
@@ -622,9 +621,7 @@ void pp_scene_items(pp_state *ps)
             pp_add_atmosphere_media(ps, pp_media(ps));
             break;
         case T_RAINBOW:
-            pp_warn_once(ps, &at, at.kind, "rainbow");
-            pp_expect(ps, T_LBRACE, "'{'");
-            pp_skip_block(ps);
+            pp_rainbow(ps);
             break;
         case T_SEMI:
             break;

@@ -92,6 +92,7 @@ enum iris_pattern_kind {
     IRIS_PAT_WRINKLES,
     IRIS_PAT_OBJECT, IRIS_PAT_TILING, IRIS_PAT_PAVEMENT,
     IRIS_PAT_SQUARE, IRIS_PAT_TRIANGULAR, IRIS_PAT_FACETS,
+    IRIS_PAT_DENSITY_FILE,     /* image->path the .df3, ->interpolate */
     IRIS_PAT_COUNT
 };
 
@@ -126,6 +127,11 @@ typedef struct iris_image_ref {
     double gamma;          /* 0 = the file's own */
     double filter_all, transmit_all;
     bool use_alpha;
+    /* 'filter N, V' / 'transmit N, V' of a palette image, in order:
+    ** palette entry 'index' gets filter (which 0) or transmit (1) 'value' */
+    int n_palette_ft;
+    struct iris_palette_ft { int index, which; double value; } *palette_ft;
+    bool use_index;        /* bump_map use_index: palette indices as heights */
 } iris_image_ref;
 
 /*
@@ -292,7 +298,8 @@ typedef struct iris_texture {
     iris_pigment *pigment;     /* never NULL on a plain texture */
     iris_normal *normal;       /* NULL = none */
     iris_finish *finish;       /* never NULL on a plain texture */
-    /* texture_map: pattern with entries holding textures */
+    /* texture_map: pattern with entries holding textures; a material_map
+    ** is kind IMAGE_MAP, its entries the textures numbered 0, 1, ... */
     iris_pattern map_pattern;  /* kind NONE = plain texture */
     int n_entries;
     iris_map_entry *entries;
@@ -513,7 +520,26 @@ typedef struct iris_camera {
     bool mesh_smooth;          /* distribution 3: interpolated normals */
     int n_meshes;
     iris_object **meshes;
+    struct iris_normal *normal; /* normal{}: perturbs every ray's direction
+                                   (src/render/camera.c), NULL = none */
 } iris_camera;
+
+/*
+** A rainbow{} (POV-Ray's RAINBOW, resolved as Parse_Rainbow leaves it):
+** angles in radians, 'angle' already lowered by half the width, the arc
+** and falloff angles halved; antisolar, up and right unit and mutually
+** perpendicular. Applied by src/render/rainbow.c.
+*/
+typedef struct iris_rainbow {
+    iris_loc loc;
+    double angle, width;       /* the colour map spans [angle, angle+width] */
+    double distance;           /* attenuation distance, 1e7 */
+    double jitter;             /* parsed; iris does not jitter */
+    double arc_angle, falloff_angle, falloff_width;
+    iris_vec3 antisolar, up, right;
+    struct iris_pigment *pigment; /* gradient x over the colour_map; NULL:
+                                     no colour_map, the rainbow is off */
+} iris_rainbow;
 
 enum iris_fog_kind { IRIS_FOG_CONSTANT = 1, IRIS_FOG_GROUND = 2 };
 
@@ -619,6 +645,8 @@ typedef struct iris_scene {
     iris_sky_sphere *sky_sphere;
     int n_fogs;
     iris_fog **fogs;
+    int n_rainbows;
+    iris_rainbow **rainbows;
     int n_media;               /* atmospheric media{} blocks */
     iris_media **media;
 

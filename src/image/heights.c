@@ -5,6 +5,7 @@
 #include "config.h"
 
 #include "image/heights.h"
+#include "image/gif_indices.h"
 
 #include <math.h>
 #include <stdbool.h>
@@ -134,5 +135,8 @@ enum iris_status iris_image_read_heights(const char *path, double **heights,
         return IRIS_EIO;
     if (rc == 0)
         return IRIS_OK;
+    if (gif_is_gif(path)) /* palette indices, which iris_image_read loses */
+        return gif_read_heights(path, heights, width, height, err, errlen)
+                   ? IRIS_EIO : IRIS_OK;
     return other_heights(path, heights, width, height, err, errlen);
 }

@@ -7,6 +7,7 @@
 #ifndef IRIS_MATERIAL_MAT_INTERNAL_H
 #define IRIS_MATERIAL_MAT_INTERNAL_H
 
+#include "image/df3.h"
 #include "iris/image.h"
 #include "material/material.h"
 
@@ -14,6 +15,12 @@
 struct mat_image {
     const iris_image_ref *ref;
     iris_image img;            /* width 0 when it could not be loaded */
+    /* A material_map's texture numbers per texel (image/indices.h), row 0
+    ** at the top; also read for per-index filter/transmit; else NULL. */
+    int *index;
+    int index_w, index_h;
+    bool index_palette;        /* the numbers are palette indices */
+    iris_df3 df3;              /* a density_file's voxels, or none (nx 0) */
 };
 
 struct mat_ctx {
@@ -79,6 +86,17 @@ const iris_image *mat_find_image(const struct mat_ctx *ctx,
 ** pattern-space point 'q'. Returns false outside a 'once' image. */
 bool mat_image_lookup(const struct mat_ctx *ctx, const iris_image_ref *ref,
                       vec3 q, iris_colour *out);
+
+/* A material_map's texture number (before the modulo) at pattern-space
+** point 'q': the texel's palette index or red byte, 0 outside a 'once'
+** image or for an image that could not be read (POV-Ray's material_map). */
+int mat_image_index(const struct mat_ctx *ctx, const iris_image_ref *ref,
+                    vec3 q);
+
+/* The density_file pattern at pattern-space point 'q' (POV-Ray's
+** density_pattern; 0 for a file that could not be read). */
+double mat_density_file(const struct mat_ctx *ctx, const iris_pattern *pat,
+                        vec3 q);
 
 /* POV-Ray's bump_map: the normal 'n' (in pattern space) replaced by the
 ** normal of the image's grey levels around pattern-space point 'q', scaled

@@ -90,14 +90,16 @@ double pat_rand(unsigned long i)
 /* Warps                                                                */
 /* ------------------------------------------------------------------ */
 
+/* The parser fills in the defaults (octaves 6, omega 0.5, lambda 2), so the
+** values are taken as given: POV-Ray 3.7 uses `omega 0` and `lambda 0`
+** literally (omega 0 keeps only the first octave, lambda 0 samples every
+** later octave at the origin) and clamps octaves to 1..10. */
 static struct noise_turb turb_params(const iris_warp *w)
 {
     struct noise_turb t;
-    t.octaves = w->octaves > 0 ? w->octaves : 6;
-    t.omega = w->omega != 0 ? w->omega : 0.5;
-    t.lambda = w->lambda != 0 ? w->lambda : 2.0;
-    if (t.octaves > 10)
-        t.octaves = 10;
+    t.octaves = w->octaves < 1 ? 1 : w->octaves > 10 ? 10 : w->octaves;
+    t.omega = w->omega;
+    t.lambda = w->lambda;
     return t;
 }
 
@@ -913,6 +915,7 @@ static double raw_value(const struct mat_ctx *ctx, const iris_pattern *pat,
     }
     case IRIS_PAT_SLOPE: return slope(pat, p, pt);
     case IRIS_PAT_TILING: return pattern_tiling(pat->params[0], p);
+    case IRIS_PAT_DENSITY_FILE: return mat_density_file(ctx, pat, p);
     default:
         return 0.0;
     }

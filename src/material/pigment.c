@@ -16,7 +16,8 @@
 #include "iris/image.h"
 #include "material/mat_internal.h"
 
-static void image_to_working(const struct mat_ctx *ctx, iris_colour *c);
+static void image_to_working(const struct mat_ctx *ctx,
+                             const iris_image_ref *ref, iris_colour *c);
 static bool image_texel_colour(const struct mat_ctx *ctx,
                                const iris_image_ref *ref, vec3 q,
                                bool working, iris_colour *out);
@@ -328,8 +329,26 @@ static bool map_pos(const iris_image_ref *ref, int w, int h, vec3 q,
     return true;
 }
 
-static iris_colour texel(const iris_image *img, const iris_image_ref *ref,
-                         double x, double y)
+static const struct mat_image *find_entry(const struct mat_ctx *ctx,
+                                          const iris_image_ref *ref);
+
+/* POV-Ray's 'filter N, V' / 'transmit N, V': palette entry N's filter or
+** transmit replaced, wherever the texel holds index N. */
+static void palette_ft(const struct mat_image *mi, const iris_image_ref *ref,
+                       int ix, int iy, iris_colour *c)
+{
+    if (!mi || !mi->index || !mi->index_palette || ix >= mi->index_w ||
+        iy >= mi->index_h)
+        return;
+    int k = mi->index[(size_t)iy * mi->index_w + ix];
+    for (int i = 0; i < ref->n_palette_ft; i++)
+        if (ref->palette_ft[i].index == k)
+            *(ref->palette_ft[i].which ? &c->t : &c->f) =
+                ref->palette_ft[i].value;
+}
+
+static iris_colour texel(const struct mat_image *mi, const iris_image *img,
+                         const iris_image_ref *ref, double x, double y)
 {
     int ix, iy;
     if (ref->once) {
@@ -341,24 +360,43 @@ static iris_colour texel(const iris_image *img, const iris_image_ref *ref,
     }
     const float *px = &img->pixels[((size_t)iy * img->width + ix) * 4];
     iris_colour c = { px[0], px[1], px[2], 0, 1.0 - px[3] };
+    if (ref->n_palette_ft > 0)
+        palette_ft(mi, ref, ix, iy, &c);
     c.f += ref->filter_all;
     c.t += ref->transmit_all;
     return c;
 }
 
+/* A texel's colour as the file stores it (iris_image_read decodes 8-bit
+** files from sRGB): for the images POV-Ray reads without gamma handling.
+** An explicit 'gamma G' decodes the stored values as v^G (POV-Ray's
+** gammaOverride; no working-space conversion for these images). */
+static void to_stored(const iris_image_ref *ref, iris_colour *c)
+{
+    double *ch[3] = { &c->r, &c->g, &c->b };
+    for (int k = 0; k < 3; k++) {
+        double v = iris_srgb_encode(*ch[k]);
+        *ch[k] = ref->gamma > 0 && v > 0 ? pow(v, ref->gamma) : v;
+    }
+}
+
 /* The image's colour at image coordinates (x, y), interpolated as the
-** reference asks (POV-Ray's image_colour_at). */
-/* The image's colour at (x, y); with 'working' (an image_map's colours)
-** each texel is first put into the working gamma space, as POV-Ray
-** converts the image as it reads it, before any interpolation. */
-static void sample_at(const struct mat_ctx *working, const iris_image *img,
-                      const iris_image_ref *ref, double x, double y,
-                      iris_colour *out)
+** reference asks (POV-Ray's image_colour_at). With 'working' (an
+** image_map's colours) each texel is first put into the working gamma
+** space, as POV-Ray converts the image as it reads it; with 'stored' it
+** is taken as the file stores it (bump maps, image_pattern); both before
+** any interpolation. */
+static void sample_at_as(const struct mat_ctx *working,
+                         const struct mat_image *mi, const iris_image *img,
+                         const iris_image_ref *ref, double x, double y,
+                         bool stored, iris_colour *out)
 {
     if (ref->interpolate != 2 && ref->interpolate != 4) {
-        *out = texel(img, ref, x, y);
+        *out = texel(mi, img, ref, x, y);
         if (working)
-            image_to_working(working, out);
+            image_to_working(working, ref, out);
+        if (stored)
+            to_stored(ref, out);
         return;
     }
     /* Bilinear over the four texels around the sample (POV-Ray's Interp;
@@ -367,15 +405,21 @@ static void sample_at(const struct mat_ctx *working, const iris_image *img,
     y += 0.5;
     int ix = (int)x, iy = (int)y;
     double p = x - ix, qf = y - iy;
-    iris_colour c0 = texel(img, ref, ix, iy);
-    iris_colour c1 = texel(img, ref, ix - 1, iy);
-    iris_colour c2 = texel(img, ref, ix, iy - 1);
-    iris_colour c3 = texel(img, ref, ix - 1, iy - 1);
+    iris_colour c0 = texel(mi, img, ref, ix, iy);
+    iris_colour c1 = texel(mi, img, ref, ix - 1, iy);
+    iris_colour c2 = texel(mi, img, ref, ix, iy - 1);
+    iris_colour c3 = texel(mi, img, ref, ix - 1, iy - 1);
     if (working) {
-        image_to_working(working, &c0);
-        image_to_working(working, &c1);
-        image_to_working(working, &c2);
-        image_to_working(working, &c3);
+        image_to_working(working, ref, &c0);
+        image_to_working(working, ref, &c1);
+        image_to_working(working, ref, &c2);
+        image_to_working(working, ref, &c3);
+    }
+    if (stored) {
+        to_stored(ref, &c0);
+        to_stored(ref, &c1);
+        to_stored(ref, &c2);
+        to_stored(ref, &c3);
     }
     double f0 = p * qf, f1 = (1 - p) * qf, f2 = p * (1 - qf),
            f3 = (1 - p) * (1 - qf);
@@ -388,7 +432,8 @@ static void sample_at(const struct mat_ctx *working, const iris_image *img,
 
 /* The colour of image 'ref' at q, black for a missing image (reported
 ** once); texels converted into the working space when 'working' (an
-** image_map pigment), as stored otherwise. False off a `once` image. */
+** image_map pigment), as the file stores them otherwise (image_pattern:
+** POV-Ray reads it with no gamma handling). False off a `once` image. */
 static bool image_texel_colour(const struct mat_ctx *ctx,
                                const iris_image_ref *ref, vec3 q,
                                bool working, iris_colour *out)
@@ -400,7 +445,8 @@ static bool image_texel_colour(const struct mat_ctx *ctx,
     double x, y;
     if (!map_pos(ref, img->width, img->height, q, &x, &y))
         return false;
-    sample_at(working ? ctx : NULL, img, ref, x, y, out);
+    sample_at_as(working ? ctx : NULL, find_entry(ctx, ref), img, ref, x, y,
+                 !working, out);
     return true;
 }
 
@@ -410,6 +456,51 @@ bool mat_image_lookup(const struct mat_ctx *ctx, const iris_image_ref *ref,
     return image_texel_colour(ctx, ref, q, false, out);
 }
 
+/* The context's entry for the file of 'ref', or NULL. */
+static const struct mat_image *find_entry(const struct mat_ctx *ctx,
+                                          const iris_image_ref *ref)
+{
+    for (int i = 0; ctx && ref && i < ctx->n_images; i++)
+        if (ctx->images[i].ref == ref ||
+            (ctx->images[i].ref->path && ref->path &&
+             strcmp(ctx->images[i].ref->path, ref->path) == 0))
+            return &ctx->images[i];
+    return NULL;
+}
+
+double mat_density_file(const struct mat_ctx *ctx, const iris_pattern *pat,
+                        vec3 q)
+{
+    const struct mat_image *mi = find_entry(ctx, pat->image);
+    if (!mi)
+        return 0.0;
+    return iris_df3_density(&mi->df3, pat->image->interpolate, q.x, q.y,
+                            q.z);
+}
+
+int mat_image_index(const struct mat_ctx *ctx, const iris_image_ref *ref,
+                    vec3 q)
+{
+    const struct mat_image *mi = find_entry(ctx, ref);
+    if (!mi || !mi->index || mi->index_w <= 0 || mi->index_h <= 0)
+        return 0;
+    int w = mi->index_w, h = mi->index_h;
+    double x, y;
+    if (!map_pos(ref, w, h, q, &x, &y))
+        return 0;
+    /* the texel as texel() picks it, without interpolation: POV-Ray
+    ** only reads a palette index from an uninterpolated lookup */
+    int ix, iy;
+    if (ref->once) {
+        ix = x < 0 ? 0 : x >= w ? w - 1 : (int)x;
+        iy = y < 0 ? 0 : y >= h ? h - 1 : (int)y;
+    } else {
+        ix = (int)wrap(x, w);
+        iy = (int)wrap(y, h);
+    }
+    return mi->index[(size_t)iy * w + ix];
+}
+
 /* Image colours come decoded to linear light (iris_image_read), but the
 ** shading works in the scene's working gamma space (assumed_gamma,
 ** semantics §3.9), so POV-Ray 3.7 hands an image_map's colours over in
@@ -417,7 +508,8 @@ bool mat_image_lookup(const struct mat_ctx *ctx, const iris_image_ref *ref,
 ** (gamma handling off) gets the file's encoded values back, as POV-Ray 3.6
 ** read them. Without this an assumed_gamma 2.2 scene rendered its image
 ** maps darker (a test PNG texel of 64 came out as 5). */
-static void image_to_working(const struct mat_ctx *ctx, iris_colour *c)
+static void image_to_working(const struct mat_ctx *ctx,
+                             const iris_image_ref *ref, iris_colour *c)
 {
     const iris_scene *sc = ctx ? ctx->scene : NULL;
     if (!sc)
@@ -427,22 +519,31 @@ static void image_to_working(const struct mat_ctx *ctx, iris_colour *c)
     double *ch[3] = { &c->r, &c->g, &c->b };
     for (int k = 0; k < 3; k++) {
         double v = *ch[k];
-        if (g > 0 && g != 1.0)
-            *ch[k] = v > 0 ? pow(v, 1.0 / g) : v;
-        else if (!(g > 0) && legacy)
+        if (ref->gamma > 0) {
+            /* 'gamma G' (POV-Ray's gammaOverride): the stored values
+            ** decoded as v^G, then put into the working gamma */
+            double s = iris_srgb_encode(v);
+            double lin = s > 0 ? pow(s, ref->gamma) : s;
+            *ch[k] = g > 0 && g != 1.0 && lin > 0 ? pow(lin, 1.0 / g) : lin;
+        } else if (legacy)
             *ch[k] = iris_srgb_encode(v);
+        else if (g > 0 && g != 1.0)
+            *ch[k] = v > 0 ? pow(v, 1.0 / g) : v;
     }
 }
 
-/* The grey level of a bump map sample, on the decoded (linear) values as
-** POV-Ray 3.7 decodes the file's gamma for bump maps too (the encoded
-** values match textures/normals/bumpmap.pov slightly worse, 38.0 against
-** 38.6 dB). */
+/* The grey level of a bump map sample on the file's stored values:
+** POV-Ray 3.7 reads a bump_map's image with no gamma handling
+** (Parse_Image's GammaCorrect is off for bump maps, "no gamma adjustment
+** performed on input image"), so iris's decoded texels are encoded back.
+** Measured: parity scene 117's use_color panel 111.5 dB at 320x240
+** against 34.8 dB on decoded values; textures/normals/bumpmap.pov
+** (interpolated) 38.0 against 38.6 dB, its error lying elsewhere. */
 static double bump_grey(const iris_image *img, const iris_image_ref *ref,
                         double x, double y)
 {
     iris_colour c;
-    sample_at(NULL, img, ref, x, y, &c);
+    sample_at_as(NULL, NULL, img, ref, x, y, true, &c);
     const double g[3] = { c.r, c.g, c.b };
     return mat_greyscale(g);
 }
@@ -457,6 +558,28 @@ static double wrap_once(double v, double n)
     return v;
 }
 
+/* A bump_map's height at (x, y) with use_index: the texel's palette
+** index itself (POV-Ray's bump_map takes Amount * index), when the image
+** is a palette image read without interpolation (POV-Ray has an index
+** only then); false otherwise, and the grey level is used. */
+static bool bump_index(const struct mat_image *mi, const iris_image_ref *ref,
+                       double x, double y, double *out)
+{
+    if (!mi || !mi->index || !mi->index_palette ||
+        (ref->interpolate == 2 || ref->interpolate == 4))
+        return false;
+    int w = mi->index_w, h = mi->index_h, ix, iy;
+    if (ref->once) {
+        ix = x < 0 ? 0 : x >= w ? w - 1 : (int)x;
+        iy = y < 0 ? 0 : y >= h ? h - 1 : (int)y;
+    } else {
+        ix = (int)wrap(x, w);
+        iy = (int)wrap(y, h);
+    }
+    *out = mi->index[(size_t)iy * w + ix];
+    return true;
+}
+
 bool mat_image_bump(const struct mat_ctx *ctx, const iris_image_ref *ref,
                     vec3 q, double amount, vec3 n, vec3 *out)
 {
@@ -468,10 +591,17 @@ bool mat_image_bump(const struct mat_ctx *ctx, const iris_image_ref *ref,
         return false;
     double w = img->width, h = img->height;
     /* three samples: here, one pixel left and down, one right and down */
-    double g1 = bump_grey(img, ref, x, y);
     double x2 = wrap_once(x - 1.0, w), y2 = wrap_once(y + 1.0, h);
-    double g2 = bump_grey(img, ref, x2, y2);
-    double g3 = bump_grey(img, ref, wrap_once(x2 + 2.0, w), y2);
+    double x3 = wrap_once(x2 + 2.0, w);
+    double g1, g2, g3;
+    const struct mat_image *mi = ref->use_index ? find_entry(ctx, ref) : NULL;
+    if (!(mi && bump_index(mi, ref, x, y, &g1) &&
+          bump_index(mi, ref, x2, y2, &g2) &&
+          bump_index(mi, ref, x3, y2, &g3))) {
+        g1 = bump_grey(img, ref, x, y);
+        g2 = bump_grey(img, ref, x2, y2);
+        g3 = bump_grey(img, ref, x3, y2);
+    }
     /* the normal of the triangle through them, in a frame around 'n' */
     vec3 p1 = v3(0, amount * g1, 0), p2 = v3(-1, amount * g2, 1),
          p3 = v3(1, amount * g3, 1);

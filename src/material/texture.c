@@ -17,6 +17,8 @@
 #include <string.h>
 
 #include "material/mat_internal.h"
+#include "image/df3.h"
+#include "image/indices.h"
 #include "material/noise.h"
 #include "util/mem.h"
 
@@ -24,18 +26,25 @@
 /* Context                                                              */
 /* ------------------------------------------------------------------ */
 
+/* What a file is read for (a mask: one file may serve several). */
+enum { USE_COLOURS = 1, USE_INDICES = 2, USE_DF3 = 4 };
+
 struct image_list {
     int n, cap;
     const iris_image_ref **refs;
+    unsigned char *use;        /* USE_* of each file */
 };
 
-static bool add_ref(struct image_list *l, const iris_image_ref *ref)
+static bool add_ref_as(struct image_list *l, const iris_image_ref *ref,
+                       unsigned char use)
 {
     if (!ref || !ref->path)
         return true;
     for (int i = 0; i < l->n; i++)
-        if (l->refs[i] == ref || strcmp(l->refs[i]->path, ref->path) == 0)
+        if (l->refs[i] == ref || strcmp(l->refs[i]->path, ref->path) == 0) {
+            l->use[i] |= use;
             return true;
+        }
     if (l->n == l->cap) {
         int cap = l->cap ? 2 * l->cap : 8;
         const iris_image_ref **r = iris_realloc((void *)l->refs,
@@ -43,8 +52,13 @@ static bool add_ref(struct image_list *l, const iris_image_ref *ref)
         if (!r)
             return false;
         l->refs = r;
+        unsigned char *x = iris_realloc(l->use, (size_t)cap * sizeof *x);
+        if (!x)
+            return false;
+        l->use = x;
         l->cap = cap;
     }
+    l->use[l->n] = use;
     l->refs[l->n++] = ref;
     return true;
 }
@@ -58,7 +72,12 @@ static bool walk_texture(struct image_list *l, const iris_texture *t,
 
 static bool walk_pattern(struct image_list *l, const iris_pattern *p)
 {
-    return add_ref(l, p->image);
+    if (p->kind == IRIS_PAT_DENSITY_FILE)
+        return add_ref_as(l, p->image, USE_DF3);
+    /* per-index filter/transmit needs the palette indices */
+    return add_ref_as(l, p->image, USE_COLOURS |
+                      (p->image && p->image->n_palette_ft > 0 ? USE_INDICES
+                                                               : 0));
 }
 
 static bool walk_pigment(struct image_list *l, const iris_pigment *p,
@@ -78,7 +97,10 @@ static bool walk_normal(struct image_list *l, const iris_normal *n, int depth)
 {
     if (!n || depth > WALK_DEPTH)
         return true;
-    if (!walk_pattern(l, &n->pattern) || !add_ref(l, n->bump_map))
+    if (!walk_pattern(l, &n->pattern) ||
+        !add_ref_as(l, n->bump_map, USE_COLOURS |
+                    (n->bump_map && n->bump_map->use_index ? USE_INDICES
+                                                           : 0)))
         return false;
     for (int i = 0; i < n->n_entries; i++)
         if (!walk_normal(l, n->entries[i].normal, depth + 1))
@@ -92,12 +114,24 @@ static bool walk_texture(struct image_list *l, const iris_texture *t,
     for (; t && depth <= WALK_DEPTH; t = t->next, depth++) {
         if (!walk_pigment(l, t->pigment, depth) ||
             !walk_normal(l, t->normal, depth) ||
-            !walk_pattern(l, &t->map_pattern))
+            !(t->map_pattern.kind == IRIS_PAT_IMAGE_MAP
+                  ? add_ref_as(l, t->map_pattern.image, USE_INDICES)
+                  : walk_pattern(l, &t->map_pattern)))
             return false;
         for (int i = 0; i < t->n_entries; i++)
             if (!walk_texture(l, t->entries[i].texture, depth + 1))
                 return false;
     }
+    return true;
+}
+
+/* The density pigments of media blocks (density_file reads a .df3). */
+static bool walk_media(struct image_list *l, iris_media *const *m, int n)
+{
+    for (int i = 0; i < n; i++)
+        for (int j = 0; m[i] && j < m[i]->n_densities; j++)
+            if (!walk_pigment(l, m[i]->densities[j], 0))
+                return false;
     return true;
 }
 
@@ -107,6 +141,9 @@ static bool walk_object(struct image_list *l, const iris_object *o, int depth)
         return true;
     if (!walk_texture(l, o->texture, 0) ||
         !walk_texture(l, o->interior_texture, 0))
+        return false;
+    if (o->interior &&
+        !walk_media(l, o->interior->media, o->interior->n_media))
         return false;
     if (o->kind >= IRIS_OBJ_UNION && o->kind <= IRIS_OBJ_LIGHT_GROUP)
         for (int i = 0; i < o->u.csg.n_children; i++)
@@ -137,7 +174,7 @@ enum iris_status mat_ctx_create(const iris_scene *scene, FILE *log,
             ctx->n_waves = scene->settings.number_of_waves;
         ctx->legacy_opacity = scene->version > 0 && scene->version < 3.7;
     }
-    struct image_list l = { 0, 0, NULL };
+    struct image_list l = { 0, 0, NULL, NULL };
     bool ok = true;
     if (scene) {
         for (int i = 0; ok && i < scene->n_objects; i++)
@@ -145,6 +182,7 @@ enum iris_status mat_ctx_create(const iris_scene *scene, FILE *log,
         if (scene->sky_sphere)
             for (int i = 0; ok && i < scene->sky_sphere->n_pigments; i++)
                 ok = walk_pigment(&l, scene->sky_sphere->pigments[i], 0);
+        ok = ok && walk_media(&l, scene->media, scene->n_media);
     }
     if (ok && l.n > 0) {
         ctx->images = iris_calloc((size_t)l.n, sizeof *ctx->images);
@@ -154,15 +192,33 @@ enum iris_status mat_ctx_create(const iris_scene *scene, FILE *log,
         struct mat_image *mi = &ctx->images[ctx->n_images++];
         mi->ref = l.refs[i];
         char err[256] = "";
-        if (iris_image_read(&mi->img, mi->ref->path, err, sizeof err) !=
+        if ((l.use[i] & USE_COLOURS) &&
+            iris_image_read(&mi->img, mi->ref->path, err, sizeof err) !=
             IRIS_OK) {
             fprintf(log ? log : stderr,
                     "warning: cannot read image '%s'%s%s; it renders black\n",
                     mi->ref->path, err[0] ? ": " : "", err);
             memset(&mi->img, 0, sizeof mi->img);
         }
+        if ((l.use[i] & USE_DF3) &&
+            iris_df3_read(mi->ref->path, &mi->df3, err, sizeof err) !=
+            IRIS_OK)
+            fprintf(log ? log : stderr, "warning: cannot read the density "
+                    "file '%s'%s%s; its density is 0\n", mi->ref->path,
+                    err[0] ? ": " : "", err);
+        if ((l.use[i] & USE_INDICES) && iris_image_read_indices(mi->ref->path,
+                                                    &mi->index, &mi->index_w,
+                                                    &mi->index_h,
+                                                    &mi->index_palette, err,
+                                                    sizeof err) != IRIS_OK) {
+            fprintf(log ? log : stderr, "warning: cannot read the material_map "
+                    "image '%s'%s%s; its first texture is used everywhere\n",
+                    mi->ref->path, err[0] ? ": " : "", err);
+            mi->index = NULL;
+        }
     }
     iris_free((void *)l.refs);
+    iris_free(l.use);
     if (!ok) {
         mat_ctx_destroy(ctx);
         return IRIS_ENOMEM;
@@ -175,9 +231,12 @@ void mat_ctx_destroy(struct mat_ctx *ctx)
 {
     if (!ctx)
         return;
-    for (int i = 0; i < ctx->n_images; i++)
+    for (int i = 0; i < ctx->n_images; i++) {
         if (ctx->images[i].img.width > 0)
             iris_image_fini(&ctx->images[i].img);
+        iris_free(ctx->images[i].index);
+        iris_df3_fini(&ctx->images[i].df3);
+    }
     iris_free(ctx->images);
     iris_free(ctx);
 }
@@ -333,6 +392,43 @@ static void eval_average(const struct mat_ctx *ctx, const iris_texture *t,
     iris_free(alt);
 }
 
+/* A material_map layer (an image_map pattern over textures): the one
+** texture numbered by the texel's palette index or red byte, no blending.
+** POV-Ray 3.7.0's material_map takes the number modulo the texture count
+** only when it is greater than the count, and a number equal to the
+** count walks off the list's end onto its last texture (with 2 textures:
+** 2 -> 1, 3 -> 1, 4 -> 0); 3.7.1 made it a plain modulo. iris follows
+** 3.7.0, the reference it is compared with. */
+static void eval_material_map(const struct mat_ctx *ctx,
+                              const iris_texture *t,
+                              const struct mat_point *pt,
+                              const struct mat_eval *rest,
+                              struct mat_eval *out, int depth)
+{
+    const iris_pattern *pat = &t->map_pattern;
+    int k = 0;
+    if (pat->image)
+        k = mat_image_index(ctx, pat->image,
+                            pat_space(ctx, pat, pat_input(pat, pt->p, pt)));
+    int n = t->n_entries;
+    if (k > n)
+        k %= n;
+    if (k > n - 1)
+        k = n - 1;
+    struct mat_eval *alt = iris_malloc(sizeof *alt);
+    if (!alt) {
+        *out = *rest;
+        return;
+    }
+    struct mat_point wpt = *pt;
+    wpt.p = pat_warp_world(ctx, pat, pt->p);
+    eval_list(ctx, t->entries[k].texture, &wpt, alt, depth + 1);
+    const struct mat_eval *alts[1] = { alt };
+    double w[1] = { 1.0 };
+    combine(alts, w, 1, rest, out);
+    iris_free(alt);
+}
+
 /* A texture_map layer: the two neighbouring entries and their weights. */
 static void eval_map(const struct mat_ctx *ctx, const iris_texture *t,
                      const struct mat_point *pt, const struct mat_eval *rest,
@@ -340,6 +436,10 @@ static void eval_map(const struct mat_ctx *ctx, const iris_texture *t,
 {
     if (t->map_pattern.kind == IRIS_PAT_AVERAGE) {
         eval_average(ctx, t, pt, rest, out, depth);
+        return;
+    }
+    if (t->map_pattern.kind == IRIS_PAT_IMAGE_MAP) {
+        eval_material_map(ctx, t, pt, rest, out, depth);
         return;
     }
     const iris_map_entry *e = t->entries;

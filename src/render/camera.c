@@ -10,6 +10,7 @@
 
 #include <math.h>
 
+#include "material/material.h"
 #include "render/camera.h"
 #include "render/meshcam.h"
 
@@ -133,8 +134,53 @@ bool camera_ray(const iris_camera *cam, int width, int height, double x,
     return camera_ray_raw(cam, width, height, x, y, r, &raw);
 }
 
+/*
+** The camera's normal{} (POV-Ray's CreateCameraRay end): the unit ray
+** direction perturbed as a surface normal would be, by the pattern
+** evaluated at the image-plane point <x0, y0, 0> (x0, y0 in [-0.5, 0.5]
+** across the image), then normalised again. The normal's own transforms
+** place it on that plane; the camera's transforms do not reach it. No
+** material context: the pattern uses the default noise generator and an
+** image bump_map would read nothing.
+*/
+static void perturb_ray(const iris_camera *cam, double x0, double y0, ray *r,
+                        vec3 *raw)
+{
+    if (!cam->normal)
+        return;
+    struct mat_point pt = { .p = v3(x0, y0, 0.0), .n = r->d, .d = r->d };
+    vec3 d = mat_perturb_normal(NULL, cam->normal, &pt, r->d);
+    double len = v3_len(d);
+    if (!(len > 0) || !isfinite(len))
+        return;
+    double raw_len = v3_len(*raw);
+    r->d = v3_scale(d, 1.0 / len);
+    /* focal blur aims 'raw' at its focal plane: keep its length */
+    *raw = v3_scale(r->d, raw_len > 0 ? raw_len : 1.0);
+}
+
+static bool base_ray(const iris_camera *cam, int width, int height,
+                     double x, double y, ray *r, vec3 *raw);
+
 bool camera_ray_raw(const iris_camera *cam, int width, int height, double x,
                     double y, ray *r, vec3 *raw)
+{
+    if (!base_ray(cam, width, height, x, y, r, raw))
+        return false;
+    if (cam->normal && cam->kind != IRIS_CAM_MESH) {
+        /* POV-Ray's x0, y0 of the perspective and orthographic cameras;
+        ** the angular cameras scale theirs by their angles first, which
+        ** iris does not follow (a camera normal there is rare) */
+        double w = width > 0 ? width : 1, h = height > 0 ? height : 1;
+        perturb_ray(cam, (x + 0.5) / w - 0.5, ((h - 1) - (y - 0.5)) / h - 0.5,
+                    r, raw);
+    }
+    return true;
+}
+
+/* The ray before the camera's normal{}. */
+static bool base_ray(const iris_camera *cam, int width, int height,
+                     double x, double y, ray *r, vec3 *raw)
 {
     if (cam->kind == IRIS_CAM_MESH) {
         if (!meshcam_ray(cam, width, height, x, y, 0, r))
