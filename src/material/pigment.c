@@ -478,6 +478,23 @@ double mat_density_file(const struct mat_ctx *ctx, const iris_pattern *pat,
                             q.z);
 }
 
+/* The palette index of the texel at image position (x, y) as texel()
+** picks it, without interpolation (POV-Ray only reads a palette index
+** from an uninterpolated lookup): clamped for `once`, else wrapped. */
+static int index_at(const struct mat_image *mi, const iris_image_ref *ref,
+                    double x, double y)
+{
+    int w = mi->index_w, h = mi->index_h, ix, iy;
+    if (ref->once) {
+        ix = x < 0 ? 0 : x >= w ? w - 1 : (int)x;
+        iy = y < 0 ? 0 : y >= h ? h - 1 : (int)y;
+    } else {
+        ix = (int)wrap(x, w);
+        iy = (int)wrap(y, h);
+    }
+    return mi->index[(size_t)iy * w + ix];
+}
+
 int mat_image_index(const struct mat_ctx *ctx, const iris_image_ref *ref,
                     vec3 q)
 {
@@ -488,17 +505,7 @@ int mat_image_index(const struct mat_ctx *ctx, const iris_image_ref *ref,
     double x, y;
     if (!map_pos(ref, w, h, q, &x, &y))
         return 0;
-    /* the texel as texel() picks it, without interpolation: POV-Ray
-    ** only reads a palette index from an uninterpolated lookup */
-    int ix, iy;
-    if (ref->once) {
-        ix = x < 0 ? 0 : x >= w ? w - 1 : (int)x;
-        iy = y < 0 ? 0 : y >= h ? h - 1 : (int)y;
-    } else {
-        ix = (int)wrap(x, w);
-        iy = (int)wrap(y, h);
-    }
-    return mi->index[(size_t)iy * w + ix];
+    return index_at(mi, ref, x, y);
 }
 
 /* Image colours come decoded to linear light (iris_image_read), but the
@@ -568,15 +575,7 @@ static bool bump_index(const struct mat_image *mi, const iris_image_ref *ref,
     if (!mi || !mi->index || !mi->index_palette ||
         (ref->interpolate == 2 || ref->interpolate == 4))
         return false;
-    int w = mi->index_w, h = mi->index_h, ix, iy;
-    if (ref->once) {
-        ix = x < 0 ? 0 : x >= w ? w - 1 : (int)x;
-        iy = y < 0 ? 0 : y >= h ? h - 1 : (int)y;
-    } else {
-        ix = (int)wrap(x, w);
-        iy = (int)wrap(y, h);
-    }
-    *out = mi->index[(size_t)iy * w + ix];
+    *out = index_at(mi, ref, x, y);
     return true;
 }
 

@@ -145,6 +145,20 @@ static void test_knn_brute_force(void **state)
 }
 
 
+/* Photon i of a mixed test map: in the volume [-1,1]x[0,1]x[-1,1], on
+** the floor y = 0.25 (ties along y) every 3rd, a duplicate of photon
+** i - 1 (ties on every axis) every 7th. */
+static vec3 mixed_position(rng *r, const struct pstore_raw *raw, int i)
+{
+    double x = rng_uniform(r) * 2 - 1, y = rng_uniform(r),
+           z = rng_uniform(r) * 2 - 1;
+    if (i % 3 == 1)
+        y = 0.25;
+    if (i % 7 == 2)
+        x = raw[i - 1].p[0], y = raw[i - 1].p[1], z = raw[i - 1].p[2];
+    return v3(x, y, z);
+}
+
 /*
 ** The parallel build (pstore_build_mt) makes the same tree as the serial
 ** one, record for record, for any thread count, on a mix of volume,
@@ -159,14 +173,9 @@ static void test_parallel_build(void **state)
     rng r;
     rng_seed(&r, 17, 0, 0);
     for (int i = 0; i < N; i++) {
-        double x = rng_uniform(&r) * 2 - 1, y = rng_uniform(&r),
-               z = rng_uniform(&r) * 2 - 1;
-        if (i % 3 == 1)
-            y = 0.25;
-        if (i % 7 == 2)
-            x = raw[i - 1].p[0], y = raw[i - 1].p[1], z = raw[i - 1].p[2];
-        raw[i] = (struct pstore_raw){ { (float)x, (float)y, (float)z }, 1,
-                                      500, { 0, 1, 0 } };
+        vec3 p = mixed_position(&r, raw, i);
+        raw[i] = (struct pstore_raw){ { (float)p.x, (float)p.y, (float)p.z },
+                                      1, 500, { 0, 1, 0 } };
     }
     struct pstore s1, s3;
     memcpy(copy, raw, sizeof raw);
@@ -210,14 +219,9 @@ static void test_build_in_place(void **state)
     rng r;
     rng_seed(&r, 23, 0, 0);
     for (int i = 0; i < N; i++) {
-        double x = rng_uniform(&r) * 2 - 1, y = rng_uniform(&r),
-               z = rng_uniform(&r) * 2 - 1;
-        if (i % 3 == 1)
-            y = 0.25;
-        if (i % 7 == 2)
-            x = raw[i - 1].p[0], y = raw[i - 1].p[1], z = raw[i - 1].p[2];
-        if (i % 10007 == 5)
-            x = 1e5; /* far: dropped */
+        vec3 p = mixed_position(&r, raw, i);
+        /* every 10007th far away: dropped */
+        double x = i % 10007 == 5 ? 1e5 : p.x, y = p.y, z = p.z;
         vec3 d = v3_norm(v3(rng_uniform(&r) - .5, rng_uniform(&r) - .5,
                             rng_uniform(&r) - .5));
         raw[i] = (struct pstore_raw){ { (float)x, (float)y, (float)z },
