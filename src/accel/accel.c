@@ -936,6 +936,22 @@ bool accel_intersect(const struct accel *a, const ray *r, double tmin,
     q.all = NULL;
     q.accel = a;
 
+    /* Unbounded objects first, beyond Embree. POV-Ray's bounding tree
+    ** queues them at depth -MAX_DISTANCE, ahead of every finite object,
+    ** and a later object replaces the best hit only when strictly nearer:
+    ** on an exact tie (a box standing on 'plane { y, 0 }': the eye ray
+    ** leaves the box's bottom where it meets the floor) the plane is the
+    ** hit. Were the box's face kept, the ray leaving it would start on
+    ** the floor and pass through it (tests/render/scenes/106). The finite
+    ** tests below keep only t < q.tmax, so the order alone decides. */
+    for (int i = 0; i < a->n_inf; i++) {
+        if (node_nearest(a->inf[i], q.o, q.d, q.tmin, q.tmax, skip,
+                         &q.best)) {
+            q.tmax = q.best.t;
+            q.found = true;
+        }
+    }
+
     if (a->linear) {
         vec3 inv = v3(1 / q.d.x, 1 / q.d.y, 1 / q.d.z);
         for (int i = 0; i < a->n_user; i++) {
@@ -955,14 +971,6 @@ bool accel_intersect(const struct accel *a, const ray *r, double tmin,
         rtcIntersect1(a->scene, &q.ec, &rh);
     }
 
-    /* Unbounded objects, beyond Embree */
-    for (int i = 0; i < a->n_inf; i++) {
-        if (node_nearest(a->inf[i], q.o, q.d, q.tmin, q.tmax, skip,
-                         &q.best)) {
-            q.tmax = q.best.t;
-            q.found = true;
-        }
-    }
     if (!q.found)
         return false;
 

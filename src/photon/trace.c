@@ -272,6 +272,24 @@ static vec3 cosine_dir(vec3 n, rng *r)
                                  v3_scale(b, rad * sin(ph)))));
 }
 
+/*
+** Whether the stack entry 'in_stack' is the medium of the surface just hit
+** (object 'obj', interior 'interior'). Keyed by the interior, as the eye
+** tracer's stack (render/trace.c, interior_key) and POV-Ray's: the
+** children of a CSG share their parent's interior, so a photon entering
+** the outer cylinder of a glass tube (difference of two cylinders) and
+** leaving through the inner one leaves the glass. Keyed by the child hit,
+** it stayed "inside" the first child, crossed the hollow at ior 1.5 and
+** left the far wall unrefracted (eta 1), and the light through a glass's
+** walls went astray.
+*/
+static bool same_medium(const iris_object *in_stack, const iris_object *obj,
+                        const iris_interior *interior)
+{
+    return in_stack == obj ||
+           (interior != NULL && in_stack->interior == interior);
+}
+
 /* The index of the medium at the top of the stack (1 = atmosphere). */
 static double top_ior(const iris_object *const *stack, int n, double lambda)
 {
@@ -396,7 +414,7 @@ void ptrace_photon(const struct pmap_world *w, const struct ptrace_combo *c,
             /* Indices on both sides from the interior stack (§1.2) */
             int pos = -1;
             for (int i = n_stack - 1; i >= 0; i--)
-                if (stack[i] == obj) {
+                if (same_medium(stack[i], obj, h.interior)) {
                     pos = i;
                     break;
                 }

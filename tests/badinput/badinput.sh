@@ -248,6 +248,7 @@ for o in "$S/keep.pov" "$S/../scene/./keep.pov" "$tmp/link.png"; do
     st=$?
     [ "$rc" = 2 ] || st=1
     tap_result_todo $st "output $(echo "$o" | sed "s|$tmp/||") does not replace the scene (exit 2)" ""
+    [ $st = 0 ] || { echo "# exit $rc"; head -n 3 "$tmp/out" | sed 's/^/#   /'; }
 done
 
 # A failing write leaves no file behind: a file size limit of 1 block

@@ -212,12 +212,11 @@ out=$("$check" same "$tmp/thin_nosky.exr" "$tmp/thin_sky.exr" 2>&1)
 tap_result_todo $? "a 1e-4 shell renders the same inside a 1e6 sphere" ""
 [ -n "$out" ] && echo "# $out"
 # ... and with photons: the hidden sphere only collects stray photons
-# (1.1-1.7% of those stored), so the caustic under the shell must stay.
-# 8000 photons (spacing 0.015): the two renders agree to 51.6 dB; 40 dB
+# (about 4% of those stored), so the caustic under the shell must stay.
+# 8000 photons (spacing 0.015): the two renders agree to 74.6 dB; 40 dB
 # allows photon noise. When the strays widened the photons' quantisation
 # box (pstore.c robust_box) the caustic merged into a few grid points:
-# 16.8 dB. (At the stage's spacing 0.05 the two differ by ~30 dB of
-# noise alone, too close to tell.)
+# 12-17 dB.
 render thin_ph "+W$W +H$H" "$scenes/thin.pov" Declare=T=1e-2 Declare=PHOTONS=1 \
     Declare=PH_SPACING=0.015
 render thin_ph_sky "+W$W +H$H" "$scenes/thin.pov" Declare=T=1e-2 \
