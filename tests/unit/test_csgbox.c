@@ -96,6 +96,17 @@ static void test_hyperboloid_stem(void **state)
     arena_destroy(sc->arena);
 }
 
+/* chess2.pov's frame piece as five planes: -3 < y < -0.15, z > -35,
+** z < x, z < -x. */
+static void frame_planes(iris_scene *sc, iris_object *k[5])
+{
+    k[0] = plane(sc, v3(0, 1, 0), -0.15);
+    k[1] = plane(sc, v3(0, -1, 0), 3);
+    k[2] = plane(sc, v3(0, 0, -1), 35);
+    k[3] = plane(sc, v3(-1, 0, 1), 0);
+    k[4] = plane(sc, v3(1, 0, 1), 0);
+}
+
 /* chess2.pov's frame piece: -3 < y < -0.15, z > -35, z < x, z < -x, a
 ** triangular prism with x in (-35, 35), z in (-35, 0). Box narrowing
 ** axis by axis finds x exactly and a z bound of 35 (from z < x < 35),
@@ -104,11 +115,8 @@ static void test_frame_wedge(void **state)
 {
     (void)state;
     iris_scene *sc = scene_new();
-    iris_object *k[5] = { plane(sc, v3(0, 1, 0), -0.15),
-                          plane(sc, v3(0, -1, 0), 3),
-                          plane(sc, v3(0, 0, -1), 35),
-                          plane(sc, v3(-1, 0, 1), 0),
-                          plane(sc, v3(1, 0, 1), 0) };
+    iris_object *k[5];
+    frame_planes(sc, k);
     vec3 lo, hi;
     assert_true(narrow_all(k, 5, &lo, &hi));
     assert_near(lo.y, -3, 1e-12);
@@ -203,11 +211,8 @@ static void test_accel_frame(void **state)
 {
     (void)state;
     iris_scene *sc = scene_new();
-    iris_object *k[5] = { plane(sc, v3(0, 1, 0), -0.15),
-                          plane(sc, v3(0, -1, 0), 3),
-                          plane(sc, v3(0, 0, -1), 35),
-                          plane(sc, v3(-1, 0, 1), 0),
-                          plane(sc, v3(1, 0, 1), 0) };
+    iris_object *k[5];
+    frame_planes(sc, k);
     iris_object *w = add(sc, intersection(sc, k, 5));
     struct accel *a = build(sc);
     vec3 lo, hi;
