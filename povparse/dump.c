@@ -265,10 +265,14 @@ static void object(FILE *o, int d, const iris_object *ob,
         { ob->photon_refraction == IRIS_OFF, "photon_refraction_off" },
         { ob->photon_reflection == IRIS_ON, "photon_reflection_on" },
         { ob->photon_reflection == IRIS_OFF, "photon_reflection_off" },
+        { ob->no_global_lights, "no_global_lights" },
     };
     for (size_t i = 0; i < sizeof flags / sizeof flags[0]; i++)
         if (flags[i].v)
             fprintf(o, " %s", flags[i].n);
+    if (ob->light_group_count > 0)
+        fprintf(o, " group_lights %d+%d", ob->light_group_first,
+                ob->light_group_count);
     fputc('\n', o);
     ind(o, d + 1);
     switch (ob->kind) {
@@ -520,6 +524,10 @@ void iris_scene_dump(const iris_scene *s, FILE *o)
     }
     for (int i = 0; i < s->n_lights; i++)
         light(o, s->lights[i]);
+    for (int i = 0; i < s->n_group_lights; i++) {
+        fprintf(o, "group %d ", i);
+        light(o, s->group_lights[i]);
+    }
     for (int i = 0; i < s->n_objects; i++)
         object(o, 0, s->objects[i], NULL);
 }

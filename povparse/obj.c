@@ -1466,7 +1466,7 @@ static void csg_body(pp_state *ps, iris_object *o, const pp_token *open)
             continue;
         }
         if (at.kind == T_GLOBAL_LIGHTS && o->kind == IRIS_OBJ_LIGHT_GROUP) {
-            pp_bool_opt(ps);
+            ((pp_obj *)o)->global_lights = pp_bool_opt(ps);
             continue;
         }
         if (shape_kind(at.kind) >= 0 || at.kind == T_OBJECT) {
@@ -1552,15 +1552,8 @@ iris_object *pp_object(pp_state *ps)
     }
     iris_object *o = obj_new(ps, kind, &at);
     if (kind >= IRIS_OBJ_UNION) {
-        if (kind == IRIS_OBJ_LIGHT_GROUP) {
+        if (kind == IRIS_OBJ_LIGHT_GROUP)
             ((pp_obj *)o)->is_light_group = true;
-            if (!ps->warned[T_LIGHT_GROUP]) {
-                ps->warned[T_LIGHT_GROUP] = 1;
-                pp_warning(ps, &at, "light_group is not rendered as a group: "
-                           "its lights become scene lights that light every "
-                           "object");
-            }
-        }
         pp_enter(ps, &at);
         csg_body(ps, o, &open);
         pp_leave(ps);
@@ -1574,6 +1567,24 @@ iris_object *pp_object(pp_state *ps)
 }
 
 /* ---- finishing top-level objects --------------------------------- */
+
+/* The lights of light_group 'o' (POV-Ray's Promote_Local_Lights): its
+** own and, in a nested group, those of the groups around it (already in
+** o's range, from its parent), copied to one new range of the scene's
+** group lights that every object in the group gets. Its objects see the
+** scene's lights only with 'global_lights on' (3.7's default is off). */
+static void light_group_lights(pp_state *ps, iris_object *o)
+{
+    int first = ps->scene->n_group_lights, n = 0;
+    for (pp_light_node *l = ((pp_obj *)o)->lights; l; l = l->next, n++)
+        pp_add_group_light(ps, l->light);
+    for (int i = 0; i < o->light_group_count; i++, n++)
+        pp_add_group_light(ps,
+                           ps->scene->group_lights[o->light_group_first + i]);
+    o->light_group_first = first;
+    o->light_group_count = n;
+    o->no_global_lights = !((pp_obj *)o)->global_lights;
+}
 
 static void finalize(pp_state *ps, iris_object *o, iris_texture *tex,
                      iris_interior *inter, const iris_object *parent)
@@ -1595,7 +1606,12 @@ static void finalize(pp_state *ps, iris_object *o, iris_texture *tex,
             o->photon_reflection = parent->photon_reflection;
         if (!parent->photon_collect)
             o->photon_collect = false;
+        o->light_group_first = parent->light_group_first;
+        o->light_group_count = parent->light_group_count;
+        o->no_global_lights = parent->no_global_lights;
     }
+    if (((pp_obj *)o)->is_light_group)
+        light_group_lights(ps, o);
     iris_texture *t = o->texture ? o->texture : tex;
     iris_interior *in = o->interior ? o->interior : inter;
     if (o->interior == NULL && in)
@@ -1622,9 +1638,11 @@ static void finalize(pp_state *ps, iris_object *o, iris_texture *tex,
         ni->ior = o->texture->finish->legacy_ior;
         o->interior = ni;
     }
-    /* Lights inside CSG become scene lights. */
-    for (pp_light_node *l = ((pp_obj *)o)->lights; l; l = l->next)
-        pp_add_light(ps, l->light);
+    /* Lights inside CSG become scene lights (a light_group's light only
+    ** its objects, above). */
+    if (!((pp_obj *)o)->is_light_group)
+        for (pp_light_node *l = ((pp_obj *)o)->lights; l; l = l->next)
+            pp_add_light(ps, l->light);
 }
 
 void pp_finalize_object(pp_state *ps, iris_object *o)

@@ -224,6 +224,7 @@ typedef struct pp_obj {
     iris_object o;         /* first: (pp_obj *)obj is valid */
     pp_light_node *lights; /* light_sources inside a CSG */
     bool is_light_group;
+    bool global_lights;    /* light_group: global_lights on */
 } pp_obj;
 
 struct pp_state {
@@ -267,7 +268,7 @@ struct pp_state {
     iris_pigment *default_pigment;
 
     /* Growing scene lists */
-    int cap_objects, cap_lights, cap_fogs;
+    int cap_objects, cap_lights, cap_fogs, cap_group_lights;
 
     /* Once-per-keyword warnings */
     unsigned char *warned;
@@ -501,6 +502,8 @@ void pp_scene_items(pp_state *ps);     /* until EOF */
 iris_camera *pp_camera(pp_state *ps, const iris_camera *base);
 void pp_add_object(pp_state *ps, iris_object *o);
 void pp_add_light(pp_state *ps, iris_light *l);
+/* Appends 'l' to the scene's light_group lights; returns its index. */
+int pp_add_group_light(pp_state *ps, iris_light *l);
 
 /* ---- gamma.c ------------------------------------------------------ */
 double pp_srgb_decode(double c);     /* sRGB-encoded -> linear light */

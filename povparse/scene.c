@@ -40,6 +40,22 @@ void pp_add_light(pp_state *ps, iris_light *l)
     sc->lights[sc->n_lights++] = l;
 }
 
+int pp_add_group_light(pp_state *ps, iris_light *l)
+{
+    iris_scene *sc = ps->scene;
+    if (sc->n_group_lights == ps->cap_group_lights) {
+        int cap = ps->cap_group_lights ? ps->cap_group_lights * 2 : 8;
+        iris_light **a = pp_alloc(ps, (size_t)cap * sizeof *a);
+        if (sc->n_group_lights)
+            memcpy(a, sc->group_lights,
+                   (size_t)sc->n_group_lights * sizeof *a);
+        sc->group_lights = a;
+        ps->cap_group_lights = cap;
+    }
+    sc->group_lights[sc->n_group_lights] = l;
+    return sc->n_group_lights++;
+}
+
 static void add_fog(pp_state *ps, iris_fog *f)
 {
     iris_scene *sc = ps->scene;

@@ -12,3 +12,4 @@ include $(srcdir)/tests/robust.mk
 include $(srcdir)/tests/progressive.mk
 include $(srcdir)/tests/mpi.mk
 include $(srcdir)/tests/largerun.mk
+include $(srcdir)/tests/optics.mk

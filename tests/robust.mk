@@ -32,7 +32,8 @@ SAN_SHELL_TESTS = tests/parse/run.sh tests/badinput/badinput.sh \
 	tests/stability/stability.sh
 EXTRA_DIST += tests/valgrind.supp \
 	tests/fuzz/build.sh tests/fuzz/seed.sh tests/fuzz/regress.sh \
-	tests/fuzz/fuzz_parse.c tests/fuzz/fuzz_plan.c tests/fuzz/fuzz_common.h \
+	tests/fuzz/fuzz_parse.c tests/fuzz/fuzz_plan.c tests/fuzz/fuzz_render.c \
+	tests/fuzz/fuzz_common.h \
 	tests/fuzz/corpus
 check-fuzz:
 	$(MAKE) $(AM_MAKEFLAGS) check-TESTS check_PROGRAMS= TESTS='tests/fuzz/regress.sh' \

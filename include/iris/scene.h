@@ -388,6 +388,11 @@ struct iris_object {
     bool photon_collect;       /* true unless 'collect off' */
     bool photon_pass_through;
     bool split_union;          /* true unless 'split_union off' */
+    /* light_group (POV-Ray's LLights): an object in a group is lit by
+    ** scene->group_lights[light_group_first .. +light_group_count) and,
+    ** unless no_global_lights, by the scene's lights */
+    int light_group_first, light_group_count;
+    bool no_global_lights;
 
     union {
         struct { iris_vec3 centre; double radius; } sphere;
@@ -639,6 +644,8 @@ typedef struct iris_scene {
 
     int n_lights;
     iris_light **lights;
+    int n_group_lights;        /* the lights of light_groups: they light */
+    iris_light **group_lights; /* only their groups' objects (above) */
 
     iris_colour background;    /* default black, transmit 1 */
     bool has_background;

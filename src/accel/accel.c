@@ -52,7 +52,9 @@
 ** without clipping take node_nearest's short path (node.c shape_nearest):
 ** only the nearest crossing's normal is taken to world space, spheres and
 ** planes are solved inline, and a sphere's uv is computed once, for the
-** hit kept.
+** hit kept, and only when its texture may read it. An unbounded plane
+** without clipping is tested inside the query itself, its world normal
+** taken once at build time (plane_prepare).
 **
 ** Precision. Embree sees float rays; every decision (tmin, nearest hit)
 ** is taken in double by the callbacks, from the double ray kept in the
@@ -360,7 +362,8 @@ static unsigned own_skip(const iris_object *o)
 {
     return (o->no_image ? ACCEL_SKIP_NO_IMAGE : 0) |
            (o->no_shadow ? ACCEL_SKIP_NO_SHADOW : 0) |
-           (o->no_reflection ? ACCEL_SKIP_NO_REFLECTION : 0);
+           (o->no_reflection ? ACCEL_SKIP_NO_REFLECTION : 0) |
+           (o->no_radiosity ? ACCEL_SKIP_NO_RADIOSITY : 0);
 }
 
 static bool is_csg(enum iris_object_kind k)
@@ -635,6 +638,31 @@ static bool push_ptr(struct anode ***arr, int *n, int *cap, struct anode *x)
 }
 
 /* Places a top-level node: splits plain unions, routes the rest. */
+/*
+** An unbounded plane leaf without clipping is tested inline by
+** accel_intersect() (plane_nearest below): its world normal does not
+** depend on the ray, so node.c plane_nearest()'s is computed here once,
+** by the same expression, hence to the bit. A plane whose normal is not
+** valid (plane_nearest never hits it) keeps the general path.
+*/
+static void plane_prepare(struct anode *n)
+{
+    const iris_object *o = n->obj;
+    n->plane_fast = false;
+    if (n->kind != AN_SHAPE || n->n_clips != 0 || n->bounded ||
+        o->kind != IRIS_OBJ_PLANE)
+        return;
+    vec3 pn = n->plane_n;
+    if (!isfinite(pn.x) || !isfinite(pn.y) || !isfinite(pn.z))
+        return;
+    vec3 wn = o->has_transform ? xf_normal(&o->transform, pn) : pn;
+    double len = v3_len(wn);
+    if (!(len > 0) || !isfinite(len))
+        return;
+    n->plane_wn = v3_scale(wn, (n->inverted ? -1.0 : 1.0) / len);
+    n->plane_fast = true;
+}
+
 static bool place(struct accel *a, struct anode *n)
 {
     if (n->kind == AN_CSG && n->op == AN_UNION && n->n_clips == 0) {
@@ -649,6 +677,7 @@ static bool place(struct accel *a, struct anode *n)
     }
     if (n->bounded)
         return push_ptr(&a->user, &a->n_user, &a->cap_user, n);
+    plane_prepare(n);
     return push_ptr(&a->inf, &a->n_inf, &a->cap_inf, n);
 }
 
@@ -739,6 +768,37 @@ static void compute_epsilon(struct accel *a)
     a->eps = fmax(1e-9 * size, 1e-290);
 }
 
+/* Whether shading with 't' (its layers) may evaluate a pattern, and so
+** read a hit's uv (only a pattern's uv_mapping does): a texture map, a
+** normal or a patterned pigment anywhere in it. */
+static bool texture_may_read_uv(const iris_texture *t)
+{
+    for (; t; t = t->next)
+        if (t->map_pattern.kind != IRIS_PAT_NONE || t->normal ||
+            !t->pigment || t->pigment->pattern.kind != IRIS_PAT_NONE)
+            return true;
+    return false;
+}
+
+/*
+** A sphere's uv costs an atan2 and an acos per hit; most spheres have a
+** plain texture, which never reads it. accel_intersect() computes it for
+** the spheres whose hits may be shaded with a texture that does: the
+** hit's texture (the leaf's own, else its top-level object's, else the
+** default plain one) or its interior_texture. Photons and shadow rays
+** shade the same textures.
+*/
+static void sphere_uv_prepare(struct anode *n)
+{
+    if (n->kind != AN_SHAPE || !n->obj || n->obj->kind != IRIS_OBJ_SPHERE)
+        return;
+    const iris_texture *t = n->obj->texture ? n->obj->texture
+                            : n->top ? n->top->texture : NULL;
+    n->sphere_uv = texture_may_read_uv(t) ||
+                   (n->obj->interior_texture &&
+                    texture_may_read_uv(n->obj->interior_texture));
+}
+
 enum iris_status accel_build(const iris_scene *scene, struct accel **out,
                              FILE *log, char *err, size_t errlen)
 {
@@ -819,6 +879,8 @@ enum iris_status accel_build(const iris_scene *scene, struct accel **out,
         accel_destroy(a);
         return IRIS_EINVAL;
     }
+    for (int i = 0; i < a->n_nodes; i++)
+        sphere_uv_prepare(a->nodes[i]);
     a->linear = a->n_attached == 0 && a->n_user <= LINEAR_MAX;
     a->has_bounds = !all.empty && !all.inf;
     if (a->has_bounds) {
@@ -917,6 +979,39 @@ static inline bool box_may_hit(vec3 lo, vec3 hi, vec3 o, vec3 inv, double t0,
     return true;
 }
 
+/*
+** node_nearest() of a plane_fast leaf (plane_prepare): node.c
+** plane_nearest() step for step, without its calls and with the normal
+** taken once. Planes are met by nearly every query of a scene with a
+** floor, shadow rays included.
+*/
+static inline bool plane_nearest(const struct anode *n, vec3 o, vec3 d,
+                                 double tmin, double tmax, unsigned skip,
+                                 struct ahit *best)
+{
+    if (n->skip & skip)
+        return false;
+    const iris_object *obj = n->obj;
+    vec3 lo = o, ld = d;
+    if (obj->has_transform) {
+        lo = xf_inv_point(&obj->transform, o);
+        ld = xf_inv_dir(&obj->transform, d);
+    }
+    vec3 pn = n->plane_n;
+    double dn = v3_dot(pn, ld);
+    if (dn == 0)
+        return false;
+    double t = (obj->u.plane.distance - v3_dot(pn, lo)) / dn;
+    if (!(t > tmin && t < tmax) || !isfinite(t))
+        return false;
+    best->t = t;
+    best->n = best->sn = n->plane_wn;
+    best->uv.u = best->uv.v = 0;
+    best->leaf = n;
+    best->texture = NULL;
+    return true;
+}
+
 bool accel_intersect(const struct accel *a, const ray *r, double tmin,
                      double tmax, unsigned skip, struct hit *h)
 {
@@ -945,8 +1040,11 @@ bool accel_intersect(const struct accel *a, const ray *r, double tmin,
     ** the floor and pass through it (tests/render/scenes/106). The finite
     ** tests below keep only t < q.tmax, so the order alone decides. */
     for (int i = 0; i < a->n_inf; i++) {
-        if (node_nearest(a->inf[i], q.o, q.d, q.tmin, q.tmax, skip,
-                         &q.best)) {
+        const struct anode *n = a->inf[i];
+        if (n->plane_fast ? plane_nearest(n, q.o, q.d, q.tmin, q.tmax, skip,
+                                          &q.best)
+                          : node_nearest(n, q.o, q.d, q.tmin, q.tmax, skip,
+                                         &q.best)) {
             q.tmax = q.best.t;
             q.found = true;
         }
@@ -987,8 +1085,10 @@ bool accel_intersect(const struct accel *a, const ray *r, double tmin,
         h->texture = leaf->top->texture;
     if (!h->texture)
         h->texture = &a->default_texture;
-    if (leaf->kind == AN_SHAPE && leaf->obj->kind == IRIS_OBJ_SPHERE) {
-        /* Asked once, for the hit kept (geom_sphere_uv) */
+    if (leaf->kind == AN_SHAPE && leaf->obj->kind == IRIS_OBJ_SPHERE &&
+        leaf->sphere_uv) {
+        /* Asked once, for the hit kept (geom_sphere_uv), and only when
+        ** its texture may read it (sphere_uv_prepare) */
         const iris_object *o = leaf->obj;
         h->uv = geom_sphere_uv(o, o->has_transform
                                       ? xf_inv_point(&o->transform, h->p)

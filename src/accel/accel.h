@@ -31,7 +31,8 @@ enum accel_skip {
     ACCEL_SKIP_NONE = 0,
     ACCEL_SKIP_NO_IMAGE = 1,      /* camera rays and what they refract into */
     ACCEL_SKIP_NO_SHADOW = 2,     /* shadow rays; photon rays (POV-Ray) */
-    ACCEL_SKIP_NO_REFLECTION = 4  /* reflected rays */
+    ACCEL_SKIP_NO_REFLECTION = 4, /* reflected rays */
+    ACCEL_SKIP_NO_RADIOSITY = 8   /* radiosity gather rays (gather.c) */
 };
 
 /* The nearest surface a ray meets. */
@@ -43,7 +44,9 @@ struct hit {
                                      for 'inverse' and CSG difference) */
     vec3 shading_n;               /* unit shading normal (smooth
                                      triangles, meshes); = n otherwise */
-    iris_vec2 uv;                 /* surface uv where the shape has one */
+    iris_vec2 uv;                 /* surface uv where the shape has one;
+                                     a sphere's only where its texture
+                                     may read it (a pattern), else 0 */
     const iris_object *obj;       /* the primitive hit (leaf) */
     const iris_object *top;       /* the top-level scene object it is in */
     const iris_texture *texture;  /* texture at this point (never NULL) */

@@ -261,6 +261,7 @@ static bool shape_nearest(const struct anode *n, vec3 o, vec3 d,
         return plane_nearest(n, lo, ld, tmin, tmax, best);
     struct isect_list l;
     isect_list_init(&l);
+    l.first_only = true;
     leaf_intersect(n, lo, ld, tmin, tmax, &l);
     bool found = false;
     for (;;) {
@@ -341,7 +342,17 @@ bool node_inside(const struct anode *n, vec3 p)
     case AN_SHAPE: {
         vec3 lp = n->obj->has_transform
                       ? xf_inv_point(&n->obj->transform, p) : p;
-        in = geom_inside(n->obj, n->prof, lp) != n->inverted;
+        if (n->obj->kind == IRIS_OBJ_PLANE) {
+            /* POV-Ray inverts a plane by flipping its normal and offset,
+            ** and counts points within EPSILON (1e-10) of it as inside:
+            ** the plane itself is inside a plane and its inverse alike,
+            ** so a face lying on a cutting plane survives the cut. */
+            double s = v3_dot(v3_norm(n->obj->u.plane.normal), lp) -
+                       n->obj->u.plane.distance;
+            in = (n->inverted ? -s : s) < 1e-10;
+        } else {
+            in = geom_inside(n->obj, n->prof, lp) != n->inverted;
+        }
         break;
     }
     case AN_MESH:

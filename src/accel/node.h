@@ -49,6 +49,15 @@ struct anode {
     struct geom_profile *prof;     /* AN_SHAPE: prism, lathe, sor, text */
     vec3 plane_n;                  /* AN_SHAPE plane: its unit normal,
                                       normalised once (shape_nearest) */
+    bool plane_fast;               /* a plane leaf without clipping whose
+                                      world normal is valid: accel.c
+                                      tests it inline (plane_nearest's
+                                      answer, plane_wn taken once) */
+    vec3 plane_wn;                 /* its world normal as plane_nearest
+                                      returns it (sign of 'inverted') */
+    bool sphere_uv;                /* AN_SHAPE sphere: a texture of its
+                                      hits may read uv (accel_intersect
+                                      computes it only then) */
     bool has_blob_box;             /* AN_SHAPE blob: geom_blob_bounds() */
     vec3 blob_lo, blob_hi;         /* in object space, computed once */
     struct amesh *mesh;            /* AN_MESH */

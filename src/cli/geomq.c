@@ -159,8 +159,11 @@ static bool q_trace(void *user, const iris_scene *scene,
     ray r = { origin, dir };
     struct hit h;
     /* any hit in front of the origin (POV-Ray's Find_Intersection), past
-    ** accel's self-hit distance, a billionth of the object's size */
-    if (!accel_intersect(a, &r, accel_epsilon(a), INFINITY,
+    ** accel's self-hit distance, a billionth of the object's size, and
+    ** not beyond POV-Ray's MAX_DISTANCE (1e7 along the unit direction the
+    ** parser passes): its shapes drop farther hits, so a ray grazing a
+    ** plane it starts on misses it (language/tracevines) */
+    if (!accel_intersect(a, &r, accel_epsilon(a), 1.0e7,
                          ACCEL_SKIP_NONE, &h))
         return false;
     *point = h.p;

@@ -23,6 +23,7 @@
 #include "cli/report.h"
 #include "iris/iris.h"
 #include "photon/membudget.h"
+#include "render/progressive.h"
 #include "render/mpi_passes.h"
 #include "util/thread.h"
 
@@ -62,6 +63,48 @@ static int print_diags(const iris_diag_list *d, bool quiet)
         iris_diag_format(&d->items[i], stderr);
     }
     return d->n_errors;
+}
+
+/*
+** 0 when the directory 'path' would be written into exists; else -1 with
+** errno set. Checked before the parse, so that a render of hours does not
+** end in "No such file or directory".
+*/
+static int output_dir_exists(const char *path)
+{
+    const char *slash = strrchr(path, '/');
+    if (!slash)
+        return 0; /* the current directory */
+    size_t n = slash == path ? 1 : (size_t)(slash - path);
+    char *dir = malloc(n + 1);
+    if (!dir)
+        return 0; /* the write will say it */
+    memcpy(dir, path, n);
+    dir[n] = '\0';
+    struct stat st;
+    int rc = stat(dir, &st);
+    if (rc == 0 && !S_ISDIR(st.st_mode)) {
+        errno = ENOTDIR;
+        rc = -1;
+    }
+    free(dir);
+    return rc;
+}
+
+/*
+** The image buffers a render of o's size holds at once, in bytes: the
+** float RGBA image (16 bytes a pixel) and, when progressive, the pass
+** image and the double sums (16 + 32), and rank 0's snapshot of the
+** ranks' sums under MPI (32). What the scene needs besides (accel,
+** photons) is not known before the parse and is checked where it is
+** built (the photon pass's own memory check).
+*/
+static double image_bytes(const struct cli_options *o)
+{
+    double per_pixel = 16.0;
+    if (progressive_wanted(&o->render))
+        per_pixel += 48.0 + (mpi_passes_size() > 1 ? 32.0 : 0.0);
+    return per_pixel * (double)o->render.width * (double)o->render.height;
 }
 
 /* True when 'a' and 'b' name the same existing file. */
@@ -145,6 +188,33 @@ static int iris_main(int argc, char **argv)
         fprintf(stderr, "iris: %s: refusing to overwrite the scene file with the image\n", out_name);
         free(out_name);
         return EXIT_USAGE;
+    }
+    /* rank 0 alone writes (MPI) */
+    if (o.action == CLI_RENDER && mpi_passes_rank() == 0 &&
+        output_dir_exists(out_name) != 0) {
+        fprintf(stderr, "iris: %s: cannot write the image there: %s\n",
+                out_name, strerror(errno));
+        free(out_name);
+        return EXIT_RENDER;
+    }
+
+    /* A size beyond memory is said before anything is allocated (64K x
+    ** 64K is 69 GB of floats), not by the allocator or the OOM killer in
+    ** the middle of the render. Images under 64 MB are left to the
+    ** checks of what the scene builds: with a limit already used up by
+    ** the process itself (--node-memory 1M) the photon pass's located
+    ** error says more than "the image needs 1 kB". */
+    struct membudget mem;
+    membudget_available(&mem);
+    if (o.action == CLI_RENDER && image_bytes(&o) > 64e6 &&
+        image_bytes(&o) > mem.bytes) {
+        char need[32], have[32];
+        fprintf(stderr, "iris: +W%d +H%d: the image needs %s, more than "
+                "the %s %s leaves\n", o.render.width, o.render.height,
+                membudget_format(image_bytes(&o), need, sizeof need),
+                membudget_format(mem.bytes, have, sizeof have), mem.what);
+        free(out_name);
+        return EXIT_RENDER;
     }
 
     /* Progressive mode: error against a reference, images as it goes */
@@ -277,6 +347,9 @@ int main(int argc, char **argv)
             return EXIT_RENDER;
     }
     int rc = iris_main(argc, argv);
-    mpi_passes_finalize();
+    if (rc != 0) /* MPI: a rank that failed alone ends the job */
+        mpi_passes_end_failed(rc);
+    else
+        mpi_passes_finalize();
     return rc;
 }

@@ -149,9 +149,14 @@ void passlog_on_pass(void *user, const iris_image *avg,
     }
     if (l->out_name && write_due(l, info)) {
         char err[256] = "";
+        /* a failed write is said once: the run goes on (the disk may
+        ** recover), and main.c's final write reports again */
         if (iris_image_write(avg, l->out_name, l->out_bits, IRIS_ENC_SRGB,
-                             err, sizeof err) != IRIS_OK)
-            fprintf(stderr, "iris: %s\n", err);
+                             err, sizeof err) != IRIS_OK &&
+            !l->write_failed) {
+            fprintf(stderr, "iris: warning: %s\n", err);
+            l->write_failed = true;
+        }
         l->last_write_s = info->time_s;
         l->last_write_passes = info->passes;
     }

@@ -31,6 +31,7 @@ struct passlog {
     int x0, y0, x1, y1;        /* rendered window, 0-based inclusive */
     double last_write_s;       /* time_s of the last intermediate write */
     int last_write_passes;
+    bool write_failed;         /* an intermediate write failed: said once */
     int calls;                 /* passes logged */
 };
 

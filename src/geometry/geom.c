@@ -18,6 +18,7 @@ void isect_list_init(struct isect_list *l)
     l->n = 0;
     l->cap = GEOM_INLINE;
     l->overflow = false;
+    l->first_only = false;
 }
 
 void isect_list_fini(struct isect_list *l)
@@ -165,13 +166,19 @@ bool geom_inside(const iris_object *o, const struct geom_profile *prof,
         return v3_len2(v3_sub(p, o->u.sphere.centre)) <
                o->u.sphere.radius * o->u.sphere.radius;
     case IRIS_OBJ_PLANE:
-        /* POV-Ray: the half-space the normal points away from */
-        return v3_dot(v3_norm(o->u.plane.normal), p) < o->u.plane.distance;
+        /* POV-Ray: the half-space the normal points away from, the plane
+        ** itself within EPSILON (1e-10) included (node_inside inverts a
+        ** plane as POV-Ray does, by flipping it) */
+        return v3_dot(v3_norm(o->u.plane.normal), p) - o->u.plane.distance <
+               1e-10;
     case IRIS_OBJ_BOX: {
         vec3 lo = v3_min(o->u.box.lo, o->u.box.hi);
         vec3 hi = v3_max(o->u.box.lo, o->u.box.hi);
-        return p.x > lo.x && p.x < hi.x && p.y > lo.y && p.y < hi.y &&
-               p.z > lo.z && p.z < hi.z;
+        /* closed, as POV-Ray's Box::Inside: a point on a face is inside
+        ** (and outside an inverted box), so faces that coincide with
+        ** another box's in CSG are kept as POV-Ray keeps them */
+        return p.x >= lo.x && p.x <= hi.x && p.y >= lo.y && p.y <= hi.y &&
+               p.z >= lo.z && p.z <= hi.z;
     }
     case IRIS_OBJ_CYLINDER:
     case IRIS_OBJ_CONE:

@@ -38,6 +38,9 @@ struct isect_list {
     struct geom_isect *v;
     int n, cap;
     bool overflow;   /* an allocation failed: some crossings were dropped */
+    /* the caller keeps only the nearest crossing: a marching shape
+    ** (julia_fractal) may stop at its first, as POV-Ray's does */
+    bool first_only;
     struct geom_isect inline_buf[GEOM_INLINE];
 };
 

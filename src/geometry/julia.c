@@ -9,10 +9,12 @@
 ** is inside while |q|² stays below the exit value for 'max_iteration'
 ** steps. A ray marches from the bounding sphere with POV-Ray's distance
 ** estimate (never shorter than 1/precision) until inside/outside flips;
-** the crossing is then bisected to double precision (POV-Ray stops at
-** 1e-7, which a secondary ray started accel_epsilon() away would find
-** again). Normals are the gradient of |q_n|² through the iteration's
-** Jacobian, as POV-Ray computes them.
+** the crossing is then bisected to 1e-12 of the bounding radius (POV-Ray
+** stops at 1e-7, which a secondary ray started accel_epsilon() away would
+** find again). Normals are the gradient of |q_n|² through the iteration's
+** Jacobian, as POV-Ray computes them. A caller that keeps only the
+** nearest crossing (isect_list.first_only) gets the first one and the
+** march stops there, as POV-Ray's does for an object outside CSG.
 **
 ** Hypercomplex sets follow POV-Ray's hcmplx.cpp: bounding radius 4, exit
 ** value 16, a step |q|²/(2 |n·d|) from the normal n along the ray d when
@@ -119,6 +121,30 @@ static bool hcx_run(const struct jset *j, vec3 p, vec3 d, double *dist,
                     double (*z)[4], long *work);
 
 /*
+** One step q <- q² + c or q³ + c, from the closed forms of a quaternion
+** (a, v) squared, (a² - |v|², 2a v), and cubed, (a(a² - 3|v|²),
+** (3a² - |v|²) v), as POV-Ray's quaternion iteration writes them: a
+** quarter of the products of qmul().
+*/
+static void quat_step(const struct jset *j, double q[4])
+{
+    double a = q[0], v2 = q[1] * q[1] + q[2] * q[2] + q[3] * q[3];
+    double s, k;
+    if (j->cube) {
+        double a2 = a * a;
+        s = a * (a2 - 3 * v2);
+        k = 3 * a2 - v2;
+    } else {
+        s = a * a - v2;
+        k = 2 * a;
+    }
+    q[0] = s + j->c[0];
+    q[1] = k * q[1] + j->c[1];
+    q[2] = k * q[2] + j->c[2];
+    q[3] = k * q[3] + j->c[3];
+}
+
+/*
 ** Iterates from 'p'. Returns whether the orbit stays bounded; '*dist'
 ** (when not NULL) receives POV-Ray's lower bound on the distance to the
 ** set for escaping orbits (the minimum step otherwise; hypercomplex sets
@@ -135,7 +161,8 @@ static bool iterate(const struct jset *j, vec3 p, vec3 d, double *dist,
     double pw = 1;
     for (int i = 1; i <= j->iters; i++) {
         double n2 = q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3];
-        normp *= sqrt(n2);
+        if (dist)
+            normp *= sqrt(n2);  /* only the distance estimate reads it */
         if (n2 > j->exit2) {
             if (work)
                 *work += i;
@@ -150,12 +177,7 @@ static bool iterate(const struct jset *j, vec3 p, vec3 d, double *dist,
             return false;
         }
         pw /= j->cube ? 3 : 2;
-        double r[4];
-        qmul(q, q, r);
-        if (j->cube)
-            qmul(r, q, r);
-        for (int k = 0; k < 4; k++)
-            q[k] = r[k] + j->c[k];
+        quat_step(j, q);
     }
     if (work)
         *work += j->iters;
@@ -338,8 +360,12 @@ static void hcx_hits(const struct jset *j, vec3 ro, vec3 d, double dl,
         vec3 n = hcx_stack_normal(j, st.z, j->iters, 1);
         if (!(v3_len2(n) > 0) || !isfinite(v3_len2(n)))
             n = v3_scale(d, -1); /* degenerate: face the ray */
-        if (depth > t0 * dl && depth < t1 * dl)
+        if (depth > t0 * dl && depth < t1 * dl) {
+            int had = out->n;
             isect_push(out, depth / dl, n, 0, 0);
+            if (out->first_only && out->n > had)
+                break;         /* POV-Ray's exit outside CSG */
+        }
         /* POV-Ray carries on from the step's far end */
         dist = dist_next;
         cur = nxt;
@@ -456,10 +482,13 @@ void geom_julia_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
         double tn = fmin(t + fmax(dist, j.step_min), b), dn;
         bool inn = iterate(&j, v3_madd(ro, d, tn), d, &dn, &work);
         if (inn != in) {
-            /* Bisect to adjacent doubles (at most ~60 halvings) */
+            /* Bisect to 1e-12 of the set's radius, a thousandth of the
+            ** offset a secondary ray starts at (hit_epsilon, 1e-9 of
+            ** the object), or to adjacent doubles far from the origin */
             double lo = t, hi = tn;
-            for (int k = 0; k < 80 && hi - lo > 2e-16 * fmax(fabs(lo),
-                                                           fabs(hi)); k++) {
+            double tol = fmax(1e-12 * j.radius,
+                              2e-16 * fmax(fabs(lo), fabs(hi)));
+            for (int k = 0; k < 80 && hi - lo > tol; k++) {
                 double m = 0.5 * (lo + hi);
                 if (iterate(&j, v3_madd(ro, d, m), d, NULL, &work) == in)
                     lo = m;
@@ -469,8 +498,12 @@ void geom_julia_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
             /* The normal is taken on the outside of the crossing */
             vec3 n = julia_normal(&j, v3_madd(ro, d, in ? hi : lo));
             double th = 0.5 * (lo + hi);
-            if (th > t0 * dl && th < t1 * dl)
+            if (th > t0 * dl && th < t1 * dl) {
+                int had = out->n;
                 isect_push(out, th / dl, n, 0, 0);
+                if (out->first_only && out->n > had)
+                    return;    /* POV-Ray's exit outside CSG */
+            }
         }
         t = tn;
         dist = dn;

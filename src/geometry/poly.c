@@ -188,6 +188,15 @@ void geom_poly_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
     double poly[MAXO + 1] = { 0 }, xy[MAXO + 1], xyz[MAXO + 1];
     for (int i = n; i >= 0; i--)
         for (int j = n - i; j >= 0; j--) {
+            /* the terms x^i y^j z^k of this (i, j) are often all zero
+            ** (a torus quartic has 8 of its 35): no product for them */
+            bool any = false;
+            for (int k = 0; k <= n - i - j && !any; k++)
+                any = c[idx + k] != 0;
+            if (!any) {
+                idx += n - i - j + 1;
+                continue;
+            }
             pmul(X[i], i, Y[j], j, xy);
             for (int k = n - i - j; k >= 0; k--) {
                 double a = c[idx++];

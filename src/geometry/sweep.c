@@ -42,8 +42,37 @@ void geom_lathe_hits(const struct geom_profile *p, vec3 ro, vec3 rd,
     vec3 o = v3_madd(ro, d, sh);
     double lo = t0 * dl - sh, hi = t1 * dl - sh;
 
+    /*
+    ** Every crossing lies within the cylinder of the profile's largest
+    ** radius R, where the ray spans heights [ylo, yhi]: a segment wholly
+    ** above or below cannot be met. The cylinder is grown by 1e-7 of R
+    ** (a crossing's radius is rounded by ~1e-16 of it; near a grazing
+    ** ray the span's ends move fast with the radius) and the band padded
+    ** by 1e-9 of the scale, so only segments that give no crossing are
+    ** skipped.
+    */
+    double R = fmax(fabs(p->lo.u), fabs(p->hi.u)) * (1 + 1e-7);
+    double ylo = -INFINITY, yhi = INFINITY;
+    double hd2 = d.x * d.x + d.z * d.z;
+    if (hd2 > 0) {
+        double tc = -(o.x * d.x + o.z * d.z) / hd2;
+        double cx = o.x + tc * d.x, cz = o.z + tc * d.z;
+        double h2 = (R * R - (cx * cx + cz * cz)) / hd2;
+        if (h2 >= 0) {
+            double h = sqrt(h2);
+            double ya = o.y + (tc - h) * d.y, yb = o.y + (tc + h) * d.y;
+            double pad = 1e-9 * (R + fabs(ya) + fabs(yb) + fabs(p->lo.v) +
+                                 fabs(p->hi.v)) + 1e-300;
+            ylo = fmin(ya, yb) - pad;
+            yhi = fmax(ya, yb) + pad;
+        }
+        /* h2 < 0 by rounding alone is possible at a grazing ray: no band */
+    }
+
     for (int i = 0; i < p->n_seg; i++) {
         double r0 = p->a[i].u, y0 = p->a[i].v, r1 = p->b[i].u, y1 = p->b[i].v;
+        if (fmax(y0, y1) < ylo || fmin(y0, y1) > yhi)
+            continue;
         double ts[2];
         int nt = 0;
         if (y0 == y1) {

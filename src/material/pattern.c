@@ -31,6 +31,15 @@
 #define PAT_EPSILON 1e-10
 #define COORD_LIMIT 1.0e17
 
+/* fmin(fmax(v, -COORD_LIMIT), COORD_LIMIT), NaN giving -COORD_LIMIT as
+** there, in comparisons: without -ffinite-math-only GCC calls libm's
+** fmin and fmax, six calls per pattern evaluation. */
+static inline double coord_clamp(double v)
+{
+    return !(v >= -COORD_LIMIT) ? -COORD_LIMIT : v > COORD_LIMIT ? COORD_LIMIT
+                                                                 : v;
+}
+
 /* ------------------------------------------------------------------ */
 /* MT19937: POV-Ray's PatternRands table comes from its default stream.  */
 /* ------------------------------------------------------------------ */
@@ -305,9 +314,9 @@ vec3 pat_space(const struct mat_ctx *ctx, const iris_pattern *pat, vec3 p)
         q = apply_warp(&pat->warps[i], q);
     if (classic && !uses_own_turb(pat->kind))
         q = apply_warp(classic, q);
-    q.x = fmin(fmax(q.x, -COORD_LIMIT), COORD_LIMIT);
-    q.y = fmin(fmax(q.y, -COORD_LIMIT), COORD_LIMIT);
-    q.z = fmin(fmax(q.z, -COORD_LIMIT), COORD_LIMIT);
+    q.x = coord_clamp(q.x);
+    q.y = coord_clamp(q.y);
+    q.z = coord_clamp(q.z);
     return q;
 }
 
@@ -672,6 +681,21 @@ static vec3 cached_cube_point(struct crackle_cache *cc, int dx, int dy,
     return cc->pts[i];
 }
 
+/* Cube point 'c' among the three nearest so far (m1 <= m2 <= m3; 'best'
+** the nearest point). */
+static inline void crackle_keep(vec3 c, vec3 p, double metric, double *m1,
+                                double *m2, double *m3, vec3 *best)
+{
+    double s = crackle_dist(v3_sub(c, p), metric);
+    if (s < *m1) {
+        *m3 = *m2; *m2 = *m1; *m1 = s; *best = c;
+    } else if (s < *m2) {
+        *m3 = *m2; *m2 = s;
+    } else if (s < *m3) {
+        *m3 = s;
+    }
+}
+
 static double crackle(const struct mat_ctx *ctx, const iris_pattern *pat,
                       vec3 p)
 {
@@ -700,30 +724,51 @@ static double crackle(const struct mat_ctx *ctx, const iris_pattern *pat,
     ** leaves the three smallest distances exactly as the full search has
     ** them.
     */
-    for (int pass = 0; pass < 2; pass++)
-        for (int dx = -2; dx <= 2; dx++)
-            for (int dy = -2; dy <= 2; dy++)
-                for (int dz = -2; dz <= 2; dz++) {
-                    bool inner = abs(dx) <= 1 && abs(dy) <= 1 && abs(dz) <= 1;
-                    if (inner != (pass == 0))
-                        continue;
-                    int cx = fx + dx, cy = fy + dy, cz = fz + dz;
-                    if (!inner && metric > 0) {
-                        vec3 gap = v3(box_gap(p.x, cx), box_gap(p.y, cy),
-                                      box_gap(p.z, cz));
-                        if (crackle_dist(gap, metric) >= m3)
-                            continue;
-                    }
-                    vec3 c = cached_cube_point(cc, dx, dy, dz);
-                    double s = crackle_dist(v3_sub(c, p), metric);
-                    if (s < m1) {
-                        m3 = m2; m2 = m1; m1 = s; best = c;
-                    } else if (s < m2) {
-                        m3 = m2; m2 = s;
-                    } else if (s < m3) {
-                        m3 = s;
-                    }
-                }
+    for (int dx = -1; dx <= 1; dx++)
+        for (int dy = -1; dy <= 1; dy++)
+            for (int dz = -1; dz <= 1; dz++)
+                crackle_keep(cached_cube_point(cc, dx, dy, dz), p, metric,
+                             &m1, &m2, &m3, &best);
+    /*
+    ** The outer cubes, in the same order. A cube's gap per axis depends on
+    ** that axis alone (five values each). Every outer cube lies two cells
+    ** away along some axis, so its gap distance is at least that axis'
+    ** term alone (a sum of non-negative terms rounds to no less than any
+    ** of them): when the least such term is no closer than the third
+    ** distance, which the outer cubes can only lower, each of them fails
+    ** the test above and the whole shell is skipped (the usual case: the
+    ** three nearest of the 27 inner points lie within one cell).
+    */
+    double gap[3][5];
+    for (int k = 0; k < 5; k++) {
+        gap[0][k] = box_gap(p.x, fx + k - 2);
+        gap[1][k] = box_gap(p.y, fy + k - 2);
+        gap[2][k] = box_gap(p.z, fz + k - 2);
+    }
+    bool shell = true;
+    if (metric > 0) {
+        double lb = INFINITY;
+        for (int k = 0; k < 5; k += 4) {
+            double gx = crackle_dist(v3(gap[0][k], 0, 0), metric),
+                   gy = crackle_dist(v3(0, gap[1][k], 0), metric),
+                   gz = crackle_dist(v3(0, 0, gap[2][k]), metric);
+            lb = fmin(lb, fmin(gx, fmin(gy, gz)));
+        }
+        shell = !(lb >= m3);
+    }
+    for (int dx = -2; dx <= 2 && shell; dx++)
+        for (int dy = -2; dy <= 2; dy++)
+            for (int dz = -2; dz <= 2; dz++) {
+                if (abs(dx) <= 1 && abs(dy) <= 1 && abs(dz) <= 1)
+                    continue;
+                if (metric > 0 &&
+                    crackle_dist(v3(gap[0][dx + 2], gap[1][dy + 2],
+                                    gap[2][dz + 2]),
+                                 metric) >= m3)
+                    continue;
+                crackle_keep(cached_cube_point(cc, dx, dy, dz), p, metric,
+                             &m1, &m2, &m3, &best);
+            }
     if (offset != 0) {
         double o = metric == 2 ? offset * offset
                  : metric == 1 ? offset : pow(offset, metric);

@@ -270,16 +270,29 @@ static const iris_finish *default_finish(void)
     return &f;
 }
 
+/*
+** 'pn' is POV-Ray's Intersection->PNormal: the normal the patterns see
+** (slope). It starts as the raw normal at each hit, and every layer with
+** a normal{} leaves its perturbed normal there (Perturb_Normal), for the
+** layers and the texture_map entries evaluated after it: a slope map
+** whose first entry has bumps sees them in the next entry's slope
+** (textures/patterns/slopemt_37). Each layer still perturbs the raw
+** normal.
+*/
 static void eval_layer(const struct mat_ctx *ctx, const iris_texture *t,
-                       const struct mat_point *pt, struct mat_layer *l)
+                       const struct mat_point *pt, struct mat_layer *l,
+                       vec3 *pn)
 {
-    l->valid = mat_eval_pigment(ctx, t->pigment, pt, &l->pigment);
+    struct mat_point ppt = *pt;
+    ppt.n = *pn;
+    l->valid = mat_eval_pigment(ctx, t->pigment, &ppt, &l->pigment);
     l->finish = t->finish ? t->finish : default_finish();
     l->n = pt->n;
     if (t->normal && !pt->skip_normals) {
         /* POV-Ray keeps a perturbed normal as it comes, even where it
         ** tips below the surface (the light then falls on its back). */
-        l->n = mat_perturb_normal(ctx, t->normal, pt, pt->n);
+        l->n = mat_perturb_normal(ctx, t->normal, &ppt, pt->n);
+        *pn = l->n;
     }
 }
 
@@ -355,7 +368,7 @@ static void combine(const struct mat_eval *const *alts, const double *w,
 
 static void eval_list(const struct mat_ctx *ctx, const iris_texture *tex,
                       const struct mat_point *pt, struct mat_eval *out,
-                      int depth);
+                      int depth, vec3 *pn);
 
 /* The most entries of an 'average' texture_map that are shaded. */
 #define MAX_AVERAGE 16
@@ -366,7 +379,7 @@ static void eval_list(const struct mat_ctx *ctx, const iris_texture *tex,
 static void eval_average(const struct mat_ctx *ctx, const iris_texture *t,
                          const struct mat_point *pt,
                          const struct mat_eval *rest, struct mat_eval *out,
-                         int depth)
+                         int depth, vec3 *pn)
 {
     int n = t->n_entries < MAX_AVERAGE ? t->n_entries : MAX_AVERAGE;
     struct mat_eval *alt = iris_malloc((size_t)n * sizeof *alt);
@@ -384,7 +397,7 @@ static void eval_average(const struct mat_ctx *ctx, const iris_texture *t,
     struct mat_point wpt = *pt;
     wpt.p = pat_warp_world(ctx, &t->map_pattern, pt->p);
     for (int i = 0; i < n; i++) {
-        eval_list(ctx, t->entries[i].texture, &wpt, &alt[i], depth + 1);
+        eval_list(ctx, t->entries[i].texture, &wpt, &alt[i], depth + 1, pn);
         alts[i] = &alt[i];
         w[i] /= total;
     }
@@ -403,7 +416,7 @@ static void eval_material_map(const struct mat_ctx *ctx,
                               const iris_texture *t,
                               const struct mat_point *pt,
                               const struct mat_eval *rest,
-                              struct mat_eval *out, int depth)
+                              struct mat_eval *out, int depth, vec3 *pn)
 {
     const iris_pattern *pat = &t->map_pattern;
     int k = 0;
@@ -422,7 +435,7 @@ static void eval_material_map(const struct mat_ctx *ctx,
     }
     struct mat_point wpt = *pt;
     wpt.p = pat_warp_world(ctx, pat, pt->p);
-    eval_list(ctx, t->entries[k].texture, &wpt, alt, depth + 1);
+    eval_list(ctx, t->entries[k].texture, &wpt, alt, depth + 1, pn);
     const struct mat_eval *alts[1] = { alt };
     double w[1] = { 1.0 };
     combine(alts, w, 1, rest, out);
@@ -432,19 +445,21 @@ static void eval_material_map(const struct mat_ctx *ctx,
 /* A texture_map layer: the two neighbouring entries and their weights. */
 static void eval_map(const struct mat_ctx *ctx, const iris_texture *t,
                      const struct mat_point *pt, const struct mat_eval *rest,
-                     struct mat_eval *out, int depth)
+                     struct mat_eval *out, int depth, vec3 *pn)
 {
     if (t->map_pattern.kind == IRIS_PAT_AVERAGE) {
-        eval_average(ctx, t, pt, rest, out, depth);
+        eval_average(ctx, t, pt, rest, out, depth, pn);
         return;
     }
     if (t->map_pattern.kind == IRIS_PAT_IMAGE_MAP) {
-        eval_material_map(ctx, t, pt, rest, out, depth);
+        eval_material_map(ctx, t, pt, rest, out, depth, pn);
         return;
     }
     const iris_map_entry *e = t->entries;
     int n = t->n_entries, p = 0, c = 0;
-    double v = pat_value(ctx, &t->map_pattern, pt->p, pt);
+    struct mat_point ppt = *pt;
+    ppt.n = *pn;
+    double v = pat_value(ctx, &t->map_pattern, pt->p, &ppt);
     if (v >= e[n - 1].value) {
         p = c = n - 1;
     } else {
@@ -468,11 +483,11 @@ static void eval_map(const struct mat_ctx *ctx, const iris_texture *t,
     struct mat_point wpt = *pt;
     wpt.p = pat_warp_world(ctx, &t->map_pattern, pt->p);
     pt = &wpt;
-    eval_list(ctx, e[c].texture, pt, &alt[0], depth + 1);
+    eval_list(ctx, e[c].texture, pt, &alt[0], depth + 1, pn);
     alts[n_alts] = &alt[0];
     w[n_alts++] = frac;
     if (p != c) {
-        eval_list(ctx, e[p].texture, pt, &alt[1], depth + 1);
+        eval_list(ctx, e[p].texture, pt, &alt[1], depth + 1, pn);
         alts[n_alts] = &alt[1];
         w[n_alts++] = 1.0 - frac;
     }
@@ -482,7 +497,7 @@ static void eval_map(const struct mat_ctx *ctx, const iris_texture *t,
 
 static void eval_list(const struct mat_ctx *ctx, const iris_texture *tex,
                       const struct mat_point *pt, struct mat_eval *out,
-                      int depth)
+                      int depth, vec3 *pn)
 {
     set_empty(out);
     if (!tex || depth > 8)
@@ -506,7 +521,7 @@ static void eval_list(const struct mat_ctx *ctx, const iris_texture *tex,
         int used = 0;
         while (used < n) {
             struct mat_layer *l = &out->layers[used];
-            eval_layer(ctx, list[used++], pt, l);
+            eval_layer(ctx, list[used++], pt, l, pn);
             if (l->valid && l->pigment.f == 0.0 && l->pigment.t == 0.0)
                 break;
         }
@@ -521,14 +536,14 @@ static void eval_list(const struct mat_ctx *ctx, const iris_texture *tex,
             if (!rest)
                 return;
             *rest = *out;
-            eval_map(ctx, t, pt, rest, out, depth);
+            eval_map(ctx, t, pt, rest, out, depth, pn);
             iris_free(rest);
             continue;
         }
         /* A plain layer goes on top of every stack: the stacks are
         ** rebuilt from a copy of the layers only. */
         struct mat_layer l;
-        eval_layer(ctx, t, pt, &l);
+        eval_layer(ctx, t, pt, &l, pn);
         struct mat_layer prev[MAT_MAX_LAYERS];
         struct mat_stack pstack[MAT_MAX_STACKS];
         int n_prev = out->n_layers;
@@ -555,7 +570,8 @@ static void eval_list(const struct mat_ctx *ctx, const iris_texture *tex,
 void mat_eval_texture(const struct mat_ctx *ctx, const iris_texture *tex,
                       const struct mat_point *pt, struct mat_eval *out)
 {
-    eval_list(ctx, tex, pt, out, 0);
+    vec3 pn = pt->n;
+    eval_list(ctx, tex, pt, out, 0, &pn);
 }
 
 /* ------------------------------------------------------------------ */

@@ -477,8 +477,9 @@ static double cap_spacing(struct shoot *s, double spacing)
     photon_loc(s, &file, &loc);
     if (s->opts->max_photons <= 0) {
         char need[32], have[32];
-        if (s->opts->pass == 0)
-            fprintf(log, "%s:%u:%u: error: photons: spacing %g would shoot "
+        /* every pass: a failure stops the run, and an MPI rank > 0
+        ** never builds pass 0 (progressive.c sends its message on) */
+        fprintf(log, "%s:%u:%u: error: photons: spacing %g would shoot "
                     "%.3g photons, about %s at the photon pass's peak, more "
                     "than the %s %s leaves (%.3g photons); raise 'spacing' "
                     "or lower 'count'\n", file,

@@ -281,13 +281,21 @@ static vec3 cosine_dir(vec3 n, rng *r)
 ** leaving through the inner one leaves the glass. Keyed by the child hit,
 ** it stayed "inside" the first child, crossed the hollow at ior 1.5 and
 ** left the far wall unrefracted (eta 1), and the light through a glass's
-** walls went astray.
+** walls went astray. An object without interior{} is keyed by its
+** top-level object ('top', 'in_top'): POV-Ray gives a CSG without one a
+** single default interior that its children share, so entering one child
+** and leaving through another leaves it (the eye tracer does the same).
 */
-static bool same_medium(const iris_object *in_stack, const iris_object *obj,
+static bool same_medium(const iris_object *in_stack,
+                        const iris_object *in_top, const iris_object *obj,
+                        const iris_object *top,
                         const iris_interior *interior)
 {
-    return in_stack == obj ||
-           (interior != NULL && in_stack->interior == interior);
+    if (in_stack == obj)
+        return true;
+    if (interior != NULL)
+        return in_stack->interior == interior;
+    return in_stack->interior == NULL && top != NULL && in_top == top;
 }
 
 /* The index of the medium at the top of the stack (1 = atmosphere). */
@@ -300,10 +308,12 @@ void ptrace_photon(const struct pmap_world *w, const struct ptrace_combo *c,
                    vec3 o, vec3 d, double lambda, double power, rng *r,
                    struct ptrace_out *out)
 {
-    const iris_object *stack[PTRACE_MAX_STACK];
+    /* the media the photon is in, innermost last, with the top-level
+    ** object of each (the start's are top-level objects themselves) */
+    const iris_object *stack[PTRACE_MAX_STACK], *tops[PTRACE_MAX_STACK];
     int n_stack = c->n_stack;
     for (int i = 0; i < n_stack; i++)
-        stack[i] = c->stack[i];
+        stack[i] = tops[i] = c->stack[i];
     double depth = 0.0;
     struct hit h;
     bool chroma = c->chromatic; /* has lambda changed anything yet? */
@@ -414,7 +424,8 @@ void ptrace_photon(const struct pmap_world *w, const struct ptrace_combo *c,
             /* Indices on both sides from the interior stack (§1.2) */
             int pos = -1;
             for (int i = n_stack - 1; i >= 0; i--)
-                if (same_medium(stack[i], obj, h.interior)) {
+                if (same_medium(stack[i], tops[i], obj, h.top,
+                                h.interior)) {
                     pos = i;
                     break;
                 }
@@ -461,13 +472,16 @@ void ptrace_photon(const struct pmap_world *w, const struct ptrace_combo *c,
                                    v3_scale(nf, eta * cos_i - cos_t)));
                 power *= transm;
                 chroma = chroma || !sf.transm_grey;
-                if (action == 0 && n_stack < PTRACE_MAX_STACK)
+                if (action == 0 && n_stack < PTRACE_MAX_STACK) {
+                    tops[n_stack] = h.top ? h.top : obj;
                     stack[n_stack++] = obj;
-                else if (action == 1)
+                } else if (action == 1) {
                     n_stack--;
-                else if (action == 2) {
-                    for (int i = pos; i < n_stack - 1; i++)
+                } else if (action == 2) {
+                    for (int i = pos; i < n_stack - 1; i++) {
                         stack[i] = stack[i + 1];
+                        tops[i] = tops[i + 1];
+                    }
                     n_stack--;
                 }
             }

@@ -25,6 +25,7 @@
 #include "render/focalblur.h"
 #include "render/gather.h"
 #include "render/jitter.h"
+#include "render/meshcam.h"
 #include "util/mem.h"
 #include "util/thread.h"
 
@@ -48,7 +49,8 @@ struct job {
     bool blur;                 /* focal blur (fb) */
     struct focal_blur fb;
     struct containing_list blur_cl; /* the objects that may hold a blur
-                                       ray's origin (n = 0: not built) */
+                                       (orthographic, mesh camera) ray's
+                                       origin (n = 0: not built) */
     bool has_blur_cl;
     iris_image *out;
     int x0, y0, x1, y1;        /* render window, inclusive, 0-based */
@@ -119,7 +121,11 @@ static bool trace_one(struct job *j, struct trace_ctx *c, double x,
         else
             trace_containing(j->tracer, r.r.o, &r.st);
     } else if (j->ortho) {
-        trace_containing(j->tracer, r.r.o, &r.st);
+        /* every ray has its own origin: of the objects near the origins */
+        if (j->has_blur_cl)
+            trace_containing_from(j->tracer, &j->blur_cl, r.r.o, &r.st);
+        else
+            trace_containing(j->tracer, r.r.o, &r.st);
     } else {
         r.st.n = j->cam_stack.n;
         for (int i = 0; i < r.st.n; i++)
@@ -590,6 +596,40 @@ static bool blur_origins(const struct tracer *t, const struct focal_blur *fb,
                                  v3_add(cam->location, e), cl);
 }
 
+/* The objects that may hold the origin of an orthographic or mesh
+** camera's ray: the box of the orthographic origins at the window's four
+** corners (an origin is linear in the image position), or of every mesh
+** camera origin (meshcam.h), padded. An origin outside the box is still
+** asked of every object. */
+static bool eye_origins(const struct tracer *t, const struct job *j,
+                        struct containing_list *cl)
+{
+    const iris_camera *cam = &j->scene->camera;
+    vec3 lo = v3(INFINITY, INFINITY, INFINITY), hi = v3_neg(lo);
+    if (cam->kind == IRIS_CAM_MESH) {
+        if (!meshcam_origin_box(cam, &lo, &hi))
+            return false;
+    } else {
+        for (int c = 0; c < 4; c++) {
+            ray r;
+            vec3 raw;
+            if (!camera_ray_numbered(cam, j->opts->width, j->opts->height,
+                                     c & 1 ? j->x1 + 0.5 : j->x0 - 0.5,
+                                     c & 2 ? j->y1 + 0.5 : j->y0 - 0.5, 0,
+                                     &r, &raw))
+                return false;
+            lo = v3(fmin(lo.x, r.o.x), fmin(lo.y, r.o.y), fmin(lo.z, r.o.z));
+            hi = v3(fmax(hi.x, r.o.x), fmax(hi.y, r.o.y), fmax(hi.z, r.o.z));
+        }
+    }
+    double pad = 1e-6 * (v3_len(lo) + v3_len(hi) + v3_len(v3_sub(hi, lo))) +
+                 1e-9;
+    if (!isfinite(pad))
+        return false;
+    return trace_containing_list(t, v3_sub(lo, v3(pad, pad, pad)),
+                                 v3_add(hi, v3(pad, pad, pad)), cl);
+}
+
 bool eye_window(const iris_render_options *opts, int *x0, int *x1, int *y0,
                 int *y1)
 {
@@ -636,6 +676,8 @@ enum iris_status eyepass_run(const struct tracer *tr,
         return IRIS_ENOMEM;
     if (j.blur)
         j.has_blur_cl = blur_origins(tr, &j.fb, &scene->camera, &j.blur_cl);
+    else if (j.ortho)
+        j.has_blur_cl = eye_origins(tr, &j, &j.blur_cl);
     j.ctx = iris_calloc((size_t)threads, sizeof *j.ctx);
     if (!j.ctx) {
         if (j.blur)

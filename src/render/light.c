@@ -11,6 +11,7 @@
 
 #include "render/light.h"
 #include "render/query.h"
+#include "spectrum/spectrum.h"
 
 #define LIGHT_EPSILON 1e-10
 
@@ -18,6 +19,7 @@ void light_prepare(const iris_light *l, struct rlight *out)
 {
     memset(out, 0, sizeof *out);
     out->src = l;
+    spec_light_rgb(l, out->colour);
     out->centre = l->location;
     out->points_at = l->point_at;
     vec3 d = v3_sub(l->point_at, l->location);

@@ -4,7 +4,8 @@
 ** the direction and distance from a point to a light, spot and cylinder
 ** attenuation, distance fade, and the area-light sample positions.
 **
-** Depends on: math. Used by: render (trace.c), and tests.
+** Depends on: math, spectrum (a light's colour). Used by: render
+** (trace.c), and tests.
 */
 #ifndef IRIS_RENDER_LIGHT_H
 #define IRIS_RENDER_LIGHT_H
@@ -19,6 +20,8 @@ struct rquery;
 /* A light prepared for shading: POV-Ray's derived quantities. */
 struct rlight {
     const iris_light *src;
+    double colour[3];          /* src's colour times its spectrum's RGB
+                               ** (spec_light_rgb; = colour for D65) */
     vec3 centre;               /* location */
     vec3 points_at;
     vec3 dir;                  /* unit, location -> point_at */

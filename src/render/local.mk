@@ -9,6 +9,7 @@ libiris_core_la_SOURCES += %reldir%/render.c \
 	%reldir%/focalblur.c %reldir%/focalblur.h \
 	%reldir%/check_ior.c %reldir%/check_ior.h \
 	%reldir%/gather.c %reldir%/gather.h \
+	%reldir%/gather_sources.c %reldir%/gather_sources.h \
 	%reldir%/media.c %reldir%/media.h \
 	%reldir%/rainbow.c %reldir%/rainbow.h
 libiris_core_la_SOURCES += %reldir%/progressive.c %reldir%/progressive.h

@@ -187,3 +187,37 @@ bool meshcam_ray(const iris_camera *cam, int width, int height, double x,
     r->d = v3_scale(d, 1.0 / len);
     return true;
 }
+
+bool meshcam_origin_box(const iris_camera *cam, vec3 *lo, vec3 *hi)
+{
+    *lo = v3(INFINITY, INFINITY, INFINITY);
+    *hi = v3_neg(*lo);
+    /* an origin is a point of a face (a vertex blend with weights summing
+    ** to 1) moved by location.z times a normal of length <= 1 (a unit
+    ** normal, or a blend of unit normals) */
+    double off = fabs(cam->location.z);
+    for (int i = 0; i < cam->n_meshes; i++) {
+        const iris_object *ob = cam->meshes[i];
+        const iris_mesh_data *m = &ob->u.mesh;
+        vec3 a = v3(INFINITY, INFINITY, INFINITY), b = v3_neg(a);
+        for (int k = 0; k < m->n_vertices; k++) {
+            vec3 p = m->vertices[k];
+            a = v3(fmin(a.x, p.x), fmin(a.y, p.y), fmin(a.z, p.z));
+            b = v3(fmax(b.x, p.x), fmax(b.y, p.y), fmax(b.z, p.z));
+        }
+        if (!(a.x <= b.x && a.y <= b.y && a.z <= b.z))
+            continue;
+        a = v3_sub(a, v3(off, off, off));
+        b = v3_add(b, v3(off, off, off));
+        for (int c = 0; c < 8; c++) {
+            vec3 p = v3(c & 1 ? b.x : a.x, c & 2 ? b.y : a.y,
+                        c & 4 ? b.z : a.z);
+            if (ob->has_transform)
+                p = xf_point(&ob->transform, p);
+            *lo = v3(fmin(lo->x, p.x), fmin(lo->y, p.y), fmin(lo->z, p.z));
+            *hi = v3(fmax(hi->x, p.x), fmax(hi->y, p.y), fmax(hi->z, p.z));
+        }
+    }
+    return lo->x <= hi->x && lo->y <= hi->y && lo->z <= hi->z &&
+           isfinite(lo->x + lo->y + lo->z + hi->x + hi->y + hi->z);
+}

@@ -21,4 +21,9 @@
 bool meshcam_ray(const iris_camera *cam, int width, int height, double x,
                  double y, int ray_number, ray *r);
 
+/* The box holding the origin of every ray meshcam_ray() can give: each
+** camera mesh's vertex box grown by the origins' offset along the face
+** normal (|location.z|), transformed. False without such a box. */
+bool meshcam_origin_box(const iris_camera *cam, vec3 *lo, vec3 *hi);
+
 #endif

@@ -41,6 +41,9 @@
 /* True when this module called MPI_Init (and so must finalize). */
 static int mpi_owned;
 
+/* True once every rank knows the run is over (mpi_passes_end_failed). */
+static int ended_together;
+
 /* The background MPI_Init: pending until joined; what the launcher's
 ** environment said (-1: not said). */
 static pthread_t init_thread;
@@ -204,6 +207,16 @@ void mpi_passes_finalize(void)
     mpi_owned = 0;
 }
 
+void mpi_passes_end_failed(int rc)
+{
+    if (!ended_together && mpi_passes_size() > 1) {
+        mpi_ready();
+        if (mpi_active())
+            MPI_Abort(MPI_COMM_WORLD, rc);
+    }
+    mpi_passes_finalize();
+}
+
 int mpi_passes_rank(void)
 {
     if (init_pending)
@@ -295,7 +308,44 @@ int mpi_passes_agree(int go_root, int failed_local, int *vals, int n,
         each[r] = all[2 + n + r];
     if (failed_any)
         *failed_any = all[1];
+    if (all[0] || all[1]) /* every rank stops here, at the same agreement */
+        ended_together = 1;
     return !all[0] && !all[1];
+}
+
+int mpi_passes_first_error(int failed_local, char *err, size_t errlen)
+{
+    if (world_size() <= 1)
+        return failed_local ? 0 : -1;
+    /* which rank: the lowest that failed (one collective, sleeping) */
+    const int rank = mpi_passes_rank();
+    int mine = failed_local ? rank : INT_MAX, first = INT_MAX;
+    MPI_Request rq;
+    MPI_Iallreduce(&mine, &first, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD, &rq);
+    wait_gently(&rq);
+    if (first == INT_MAX)
+        return -1;
+    if (first == 0) /* rank 0's own message is in its own 'err' */
+        return rank == 0 ? 0 : -1;
+    /* a fixed-size message, so that rank 0 need not ask for its length */
+    enum { MSG = 512 };
+    char buf[MSG] = "";
+    if (rank == first) {
+        if (err && errlen)
+            snprintf(buf, sizeof buf, "%s", err);
+        MPI_Request sq;
+        MPI_Isend(buf, MSG, MPI_CHAR, 0, 0x1e7, MPI_COMM_WORLD, &sq);
+        wait_gently(&sq);
+    } else if (rank == 0) {
+        MPI_Request rr;
+        MPI_Irecv(buf, MSG, MPI_CHAR, first, 0x1e7, MPI_COMM_WORLD, &rr);
+        wait_gently(&rr);
+        buf[MSG - 1] = '\0';
+        if (err && errlen)
+            snprintf(err, errlen, "%s", buf);
+        return first;
+    }
+    return -1;
 }
 
 void mpi_passes_gather(const double *mine, int n, double *all)
@@ -339,6 +389,7 @@ void mpi_passes_reduce(double *sum, size_t n, int *passes,
         MPI_Reduce(photons, NULL, 1, MPI_UINT64_T, MPI_SUM, 0,
                    MPI_COMM_WORLD);
     }
+    ended_together = 1;
 }
 
 void mpi_passes_snapshot(const double *sum, double *total, size_t n,
@@ -374,6 +425,8 @@ void mpi_passes_init(int *argc, char ***argv)
 
 void mpi_passes_finalize(void) {}
 
+void mpi_passes_end_failed(int rc) { (void)rc; }
+
 int mpi_passes_rank(void) { return 0; }
 
 int mpi_passes_size(void) { return 1; }
@@ -393,6 +446,13 @@ int mpi_passes_agree(int go_root, int failed_local, int *vals, int n,
     if (failed_any)
         *failed_any = failed_local > 0 ? failed_local : 0;
     return go_root && failed_local <= 0;
+}
+
+int mpi_passes_first_error(int failed_local, char *err, size_t errlen)
+{
+    (void)err; /* one rank: its own message stays */
+    (void)errlen;
+    return failed_local ? 0 : -1;
 }
 
 void mpi_passes_gather(const double *mine, int n, double *all)

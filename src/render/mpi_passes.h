@@ -28,6 +28,18 @@ void mpi_passes_init(int *argc, char ***argv);
 /* MPI_Finalize when mpi_passes_init initialized MPI. */
 void mpi_passes_finalize(void);
 
+/*
+** Ends this process's part in the run after the command failed with
+** status 'rc' (not 0). When every rank knows the run is over (an
+** agreement said stop, or the final reduction ran) this is
+** mpi_passes_finalize(). Otherwise this rank left early on its own (a
+** usage error on one rank, a directory only rank 0 writes to is missing)
+** while the others will wait for it at their next collective, and
+** MPI_Finalize would wait for them: MPI_Abort ends the whole job with
+** 'rc'. Without MPI, or on one rank, it finalizes.
+*/
+void mpi_passes_end_failed(int rc);
+
 /* This process's rank, 0 when not running under MPI. */
 int mpi_passes_rank(void);
 
@@ -50,6 +62,17 @@ void mpi_passes_bcast_int(int *v, int n);
 */
 int mpi_passes_agree(int go_root, int failed_local, int *vals, int n,
                      int *each, int *failed_any);
+
+/*
+** After an agreement that reported a failure (every rank calls it, or
+** none): the message 'err' of the lowest-numbered rank whose
+** 'failed_local' is true goes to rank 0, because only rank 0 speaks
+** (main.c sends the other ranks' stderr to /dev/null). Returns that
+** rank's number on rank 0 (its 'err' then holds the message; when the
+** rank is 0 itself nothing is copied), -1 when no rank failed; the other
+** ranks get -1 and keep their 'err'.
+*/
+int mpi_passes_first_error(int failed_local, char *err, size_t errlen);
 
 /* Rank 0 gets every rank's mine[0..n-1], rank r's at all[r·n] ('all'
 ** has room for size·n; ignored on the other ranks). */

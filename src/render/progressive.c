@@ -55,7 +55,12 @@
 ** (error-log lines, intermediate images), so a long MPI run logs as it
 ** goes, from rank 0 only. Ranks other than 0 do not build pass 0's map
 ** (render.c); when rank 0's fails, rank 0 still joins the agreements to
-** stop the others. A pass is the same whichever rank runs it, so the
+** stop the others. A failure's message goes from the first failed rank
+** to rank 0, which alone prints (mpi_passes_first_error), and a failed
+** run writes no image at the end. A rank that stops before the passes
+** (main.c) ends the whole job instead (mpi_passes_end_failed): the
+** others would wait for it at their first agreement. A pass is the same
+** whichever rank runs it, so the
 ** image equals the one-rank image up to the order of the double
 ** additions. On resume rank 0 reads the checkpoint and carries its sum;
 ** the other ranks start from zero at the next pass number. With R = 1
@@ -67,6 +72,7 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <time.h>
 
@@ -225,12 +231,18 @@ static uint64_t pass_seed(uint64_t seed, int pass)
                                           (uint64_t)pass)));
 }
 
-/* Replaces *map by pass 'pass''s map. */
+/*
+** Replaces *map by pass 'pass''s map. The build reports its located
+** errors to a log; rank 0's is stderr, but the other MPI ranks' stderr is
+** /dev/null (main.c), so there the log goes to memory and its first line
+** into 'err', which rank 0 prints (mpi_passes_first_error).
+*/
 static enum iris_status build_map(struct tracer *tr, const struct accel *acc,
                                   const struct mat_ctx *mat, int threads,
                                   uint64_t seed, int pass,
                                   struct photon_map **map,
-                                  struct photon_stats *ps)
+                                  struct photon_stats *ps, char *err,
+                                  size_t errlen)
 {
     photon_map_destroy(*map);
     *map = NULL;
@@ -243,8 +255,24 @@ static enum iris_status build_map(struct tracer *tr, const struct accel *acc,
     po.radius_scale = progressive_radius_scale(pass);
     po.mat = mat;
     memset(ps, 0, sizeof *ps);
+    char *logbuf = NULL;
+    size_t loglen = 0;
+    FILE *log = mpi_passes_rank() != 0 ? open_memstream(&logbuf, &loglen)
+                                       : NULL;
+    po.log = log;
     enum iris_status st = photon_map_build(tr->scene, acc, &po, map, ps);
     tr->photon_map = *map;
+    if (log) {
+        fclose(log); /* logbuf holds the text now */
+        /* the first error line, without its newline */
+        const char *e = logbuf ? strstr(logbuf, ": error: ") : NULL;
+        if (st != IRIS_OK && e) {
+            while (e > logbuf && e[-1] != '\n')
+                e--;
+            snprintf(err, errlen, "%.*s", (int)strcspn(e, "\n"), e);
+        }
+        free(logbuf);
+    }
     return st;
 }
 
@@ -580,7 +608,7 @@ enum iris_status progressive_run(struct tracer *tr, const struct accel *acc,
             if (photons && (p > 0 || *map == NULL)) {
                 struct photon_stats ps;
                 st = build_map(tr, acc, mat, threads, opts->seed, p, map,
-                               &ps);
+                               &ps, err, errlen);
                 if (st != IRIS_OK) {
                     failed = true; /* the next agreement stops all */
                     continue;
@@ -660,16 +688,30 @@ enum iris_status progressive_run(struct tracer *tr, const struct accel *acc,
     }
     tr->seed = seed0;
     iris_free(snap);
+    /* MPI: a rank failed (codes > 1; 1 is an interrupt). Every rank knows
+    ** it from the last agreement, so all take part in sending the first
+    ** failed rank's message to rank 0, which alone can print it. */
+    int err_rank = -1;
+    if (nranks > 1 && other_failed > 1)
+        err_rank = mpi_passes_first_error(failed && st != IRIS_OK &&
+                                              st != IRIS_EINTR,
+                                          err, errlen);
     if (st == IRIS_OK && other_failed > 1 && rank == 0) {
-        /* another rank failed (its message went to its own log): so does
-        ** the run, with that rank's status */
+        /* another rank failed: so does the run, with that rank's status
+        ** and its message (located when the rank had one: a photon
+        ** pass's memory check) */
         st = (enum iris_status)(other_failed - 1);
-        set_err(err, errlen, "progressive",
-                st == IRIS_ENOMEM ? "another MPI rank ran out of memory"
-                : st == IRIS_EINVAL
-                    ? "another MPI rank's photon pass exceeded its memory "
-                      "share"
-                    : "another MPI rank failed");
+        char msg[400];
+        snprintf(msg, sizeof msg, "%s", err ? err : "");
+        if (err && errlen && msg[0])
+            snprintf(err, errlen, "%s (MPI rank %d)", msg, err_rank);
+        else
+            set_err(err, errlen, "progressive",
+                    st == IRIS_ENOMEM ? "another MPI rank ran out of memory"
+                    : st == IRIS_EINVAL
+                        ? "another MPI rank's photon pass exceeded its "
+                          "memory share"
+                        : "another MPI rank failed");
     }
     if (nranks > 1) {
         /* rank 0 gets the sum of every rank's passes */
@@ -681,7 +723,10 @@ enum iris_status progressive_run(struct tracer *tr, const struct accel *acc,
                           par_now() - t_start);
         if (rank == 0) {
             accum_average(&a, out);
-            if (opts->on_pass && a.passes > 0) {
+            /* a failed run writes no image of its own at the end (the
+            ** ones written as it went stay, as with one rank) */
+            if (opts->on_pass && a.passes > 0 &&
+                (st == IRIS_OK || st == IRIS_EINTR)) {
                 iris_pass_info info = { a.passes,
                                         a.seconds + (par_now() - t_start),
                                         a.photons,

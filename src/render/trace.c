@@ -66,12 +66,18 @@ bool tracer_init(struct tracer *t, const iris_scene *scene,
     double gam = scene->settings.assumed_gamma;
     t->working_gamma = gam > 0 ? gam : 1.0;
     t->gamma_off = !(gam > 0) && t->legacy;
-    if (scene->n_lights > 0) {
-        t->lights = iris_calloc((size_t)scene->n_lights, sizeof *t->lights);
+    /* the lights of light_groups follow the scene's in t->lights, beyond
+    ** t->n_lights: only diffuse_light() asks for them, per object */
+    int n_all = scene->n_lights + scene->n_group_lights;
+    if (n_all > 0) {
+        t->lights = iris_calloc((size_t)n_all, sizeof *t->lights);
         if (!t->lights)
             return false;
-        for (int i = 0; i < scene->n_lights; i++) {
-            light_prepare(scene->lights[i], &t->lights[i]);
+        for (int i = 0; i < n_all; i++) {
+            light_prepare(i < scene->n_lights
+                              ? scene->lights[i]
+                              : scene->group_lights[i - scene->n_lights],
+                          &t->lights[i]);
             if (t->lights[i].area) {
                 long g = (long)t->lights[i].size1 * t->lights[i].size2;
                 if (g > 1 << 20) /* a sane cap: 1024 x 1024 sub-lights */
@@ -125,9 +131,19 @@ static double ior_of(const iris_interior *in)
     return in && in->ior > 0 ? in->ior : 1.0;
 }
 
+/* The medium a hit's surface bounds. POV-Ray gives every object an
+** interior (Parser::Post_Process): a CSG without interior{} gets one
+** default interior that all its children without their own share, so
+** the walls of a hole cut in glass (difference { glass knight }) bound
+** one medium, not one per primitive of the knight. Keyed by the leaf,
+** a ray entering the knight's prism and leaving through one of its
+** cylinder cuts stayed "inside" the prism, and left the glass later
+** unrefracted (advanced/glasschess). */
 static const void *interior_key(const struct hit *h)
 {
-    return h->interior ? (const void *)h->interior : (const void *)h->obj;
+    if (h->interior)
+        return h->interior;
+    return h->top ? (const void *)h->top : (const void *)h->obj;
 }
 
 static int stack_find(const struct interior_stack *st, const void *key)
@@ -171,7 +187,8 @@ static bool is_hollow_ray(const struct interior_stack *st)
 ** inside a plane that is not hollow sees no fog and no media. Unions are
 ** split into their children, as POV-Ray links them to the scene (not a
 ** merge, nor one clipped, bounded or with split_union off). An object
-** without an interior{} is keyed by itself, as interior_key does. */
+** without an interior{} is keyed by its top-level object 'top', as
+** interior_key does. */
 static bool containing_split(const iris_object *o)
 {
     return (o->kind == IRIS_OBJ_UNION || o->kind == IRIS_OBJ_LIGHT_GROUP) &&
@@ -179,37 +196,40 @@ static bool containing_split(const iris_object *o)
 }
 
 static void containing_test(const struct tracer *t, const iris_object *o,
-                            vec3 p, struct interior_stack *st)
+                            const iris_object *top, vec3 p,
+                            struct interior_stack *st)
 {
     if (t->q.inside(t->q.impl, o, p))
         stack_push(st, o->interior ? (const void *)o->interior
-                                   : (const void *)o,
+                                   : (const void *)top,
                    o->interior, o->hollow);
 }
 
 static void containing_rec(const struct tracer *t, const iris_object *o,
-                           vec3 p, struct interior_stack *st, int depth)
+                           const iris_object *top, vec3 p,
+                           struct interior_stack *st, int depth)
 {
     if (!o || depth > 64)
         return;
     if (containing_split(o)) {
         for (int i = 0; i < o->u.csg.n_children; i++)
-            containing_rec(t, o->u.csg.children[i], p, st, depth + 1);
+            containing_rec(t, o->u.csg.children[i], top, p, st, depth + 1);
         return;
     }
-    containing_test(t, o, p, st);
+    containing_test(t, o, top, p, st);
 }
 
 /* Appends the objects containing_rec() would ask whose inside box meets
 ** cl's box; false when out of memory. */
 static bool collect_rec(const struct tracer *t, const iris_object *o,
-                        struct containing_list *cl, int depth)
+                        const iris_object *top, struct containing_list *cl,
+                        int depth)
 {
     if (!o || depth > 64)
         return true;
     if (containing_split(o)) {
         for (int i = 0; i < o->u.csg.n_children; i++)
-            if (!collect_rec(t, o->u.csg.children[i], cl, depth + 1))
+            if (!collect_rec(t, o->u.csg.children[i], top, cl, depth + 1))
                 return false;
         return true;
     }
@@ -225,8 +245,14 @@ static bool collect_rec(const struct tracer *t, const iris_object *o,
         if (!nv)
             return false;
         cl->o = nv;
+        const iris_object **nt =
+            iris_realloc((void *)cl->top, (size_t)cap * sizeof *nt);
+        if (!nt)
+            return false;
+        cl->top = nt;
         cl->cap = cap;
     }
+    cl->top[cl->n] = top;
     cl->o[cl->n++] = o;
     return true;
 }
@@ -238,7 +264,8 @@ bool trace_containing_list(const struct tracer *t, vec3 lo, vec3 hi,
     cl->lo = lo;
     cl->hi = hi;
     for (int i = 0; i < t->scene->n_objects; i++)
-        if (!collect_rec(t, t->scene->objects[i], cl, 0)) {
+        if (!collect_rec(t, t->scene->objects[i], t->scene->objects[i], cl,
+                         0)) {
             trace_containing_list_free(cl);
             return false;
         }
@@ -248,6 +275,7 @@ bool trace_containing_list(const struct tracer *t, vec3 lo, vec3 hi,
 void trace_containing_list_free(struct containing_list *cl)
 {
     iris_free((void *)cl->o);
+    iris_free((void *)cl->top);
     memset(cl, 0, sizeof *cl);
 }
 
@@ -264,7 +292,7 @@ void trace_containing_from(const struct tracer *t,
     if (!t->q.inside)
         return;
     for (int i = 0; i < cl->n; i++)
-        containing_test(t, cl->o[i], p, st);
+        containing_test(t, cl->o[i], cl->top[i], p, st);
 }
 
 void trace_containing(const struct tracer *t, vec3 p,
@@ -274,7 +302,8 @@ void trace_containing(const struct tracer *t, vec3 p,
     if (!t->q.inside)
         return;
     for (int i = 0; i < t->scene->n_objects; i++)
-        containing_rec(t, t->scene->objects[i], p, st, 0);
+        containing_rec(t, t->scene->objects[i], t->scene->objects[i], p,
+                       st, 0);
 }
 
 /* The quality flags of the rays 'c' traces: a radiosity gather ray
@@ -622,9 +651,9 @@ bool trace_media_light(struct trace_ctx *c, const struct interior_stack *st,
     double depth;
     light_ray(l, p, v3(0, 0, 0), L, &depth);
     double a = light_attenuation(l, p, *L, depth);
-    lc[0] = l->src->colour.r * a;
-    lc[1] = l->src->colour.g * a;
-    lc[2] = l->src->colour.b * a;
+    lc[0] = l->colour[0] * a;
+    lc[1] = l->colour[1] * a;
+    lc[2] = l->colour[2] * a;
     if (rgb_zero(lc))
         return false;
     if ((t->quality & TQ_SHADOW) && (!l->fill || l->through)) {
@@ -727,7 +756,7 @@ struct light_cache {
 static void full_area_light(struct trace_ctx *c, const struct layer_shade *s,
                             const struct rlight *l, double out[3])
 {
-    const iris_colour *col = &l->src->colour;
+    const double *col = l->colour;
     int n1 = l->size1, n2 = l->size2;
     vec3 a1, a2;
     area_axes(l, s->h->p, &a1, &a2);
@@ -743,7 +772,7 @@ static void full_area_light(struct trace_ctx *c, const struct layer_shade *s,
             light_ray(l, s->h->p, light_area_offset(l, a1, a2, ju, jv), &L,
                       &depth);
             double a = light_attenuation(l, s->h->p, L, depth) / (n1 * n2);
-            double lc[3] = { col->r * a, col->g * a, col->b * a };
+            double lc[3] = { col[0] * a, col[1] * a, col[2] * a };
             if (rgb_zero(lc))
                 continue;
             if ((c->t->quality & TQ_SHADOW) && !l->fill) {
@@ -775,7 +804,13 @@ static void diffuse_light(struct trace_ctx *c, const struct layer_shade *s,
     const iris_finish *f = s->l->finish;
     vec3 p = s->h->p;
     bool dbl = s->h->obj && s->h->obj->double_illuminate;
-    for (int i = 0; i < t->n_lights; i++) {
+    /* POV-Ray's ComputeDiffuseLight: the scene's lights unless the object
+    ** is in a light_group without global_lights, then its group's */
+    const iris_object *ob = s->h->obj;
+    int j0 = ob && ob->no_global_lights ? t->n_lights : 0;
+    int j1 = t->n_lights + (ob ? ob->light_group_count : 0);
+    for (int j = j0; j < j1; j++) {
+        int i = j < t->n_lights ? j : j + ob->light_group_first;
         const struct rlight *l = &t->lights[i];
         bool full_area = l->area && l->src->area_illumination &&
                          (ray_quality(c) & TQ_AREA_LIGHT);
@@ -783,8 +818,8 @@ static void diffuse_light(struct trace_ctx *c, const struct layer_shade *s,
         double depth;
         light_ray(l, p, v3(0, 0, 0), &L, &depth);
         double a = full_area ? 1.0 : light_attenuation(l, p, L, depth);
-        double lc[3] = { l->src->colour.r * a, l->src->colour.g * a,
-                         l->src->colour.b * a };
+        double lc[3] = { l->colour[0] * a, l->colour[1] * a,
+                         l->colour[2] * a };
         if (rgb_zero(lc))
             continue;
         bool backside = false;
@@ -1037,7 +1072,8 @@ static void lighted_texture(struct trace_ctx *c, const struct tray *eye,
     const double amb_light[3] = { sc->settings.ambient_light.r,
                                   sc->settings.ambient_light.g,
                                   sc->settings.ambient_light.b };
-    bool use_ambient = !sc->settings.radiosity || t->legacy;
+    /* POV-Ray 3.7 drops ambient only where radiosity runs (+Q9) */
+    bool use_ambient = !gather_wanted(t) || t->legacy;
     double fres_n = relative_ior(eye, h);
     /* radiosity{}: an eye hit gathers (once for all layers) and reads
     ** the photon map without its global part; gather rays' hits read the
@@ -1370,8 +1406,11 @@ double trace_ray(struct trace_ctx *c, const struct tray *r, double weight,
         return HUGE_VAL;
     struct hit h;
     c->rays++;
+    /* gather rays and what they spawn pass no_radiosity objects */
+    unsigned skip = skip_flags(r) |
+                    (c->gi_depth > 0 ? ACCEL_SKIP_NO_RADIOSITY : 0);
     bool found = t->q.intersect(t->q.impl, &r->r, leave_eps(t, r->tmin),
-                                t->max_distance, skip_flags(r), &h);
+                                t->max_distance, skip, &h);
     if (found && !(h.t > 0 && isfinite(h.t)))
         found = false;
     if (!continued)

@@ -150,6 +150,13 @@ struct trace_ctx {
     bool *grid_set;
     int gi_depth;              /* > 0 inside a radiosity gather ray */
     struct gather_local *gl;   /* the gather's tile-local records */
+    /* Never touched: one cache line between this context's fields and
+    ** the next one's in an array of contexts (one per thread). Without
+    ** it thread 1's writes (rng, level, transm, rays at every ray) and
+    ** thread 0's reads (gi_depth at every ray) could share a line,
+    ** which then moves between the cores at every ray; whether they did
+    ** depended on where malloc put the array. */
+    char false_sharing_pad[64];
 };
 
 /* Prepares 't' (lights) for 'scene'; 'q', 'mat' borrowed. Returns false
@@ -176,6 +183,8 @@ struct containing_list {
     vec3 lo, hi;
     int n, cap;
     const iris_object **o;
+    const iris_object **top;   /* o[i]'s top-level object (its key when
+                                  o[i] has no interior{}) */
 };
 bool trace_containing_list(const struct tracer *t, vec3 lo, vec3 hi,
                            struct containing_list *cl);

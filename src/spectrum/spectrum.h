@@ -94,6 +94,14 @@ struct spec_emitter {
 void spec_emitter_init(struct spec_emitter *e, const iris_light *l);
 double spec_emitter_eval(const struct spec_emitter *e, double lambda);
 
+/*
+** The linear sRGB that light 'l' gives a white diffuse surface: its
+** colour unchanged for the default D65 shape (POV-Ray's shading), else
+** the domain mean of spec_light() x spec_lambda_rgb_weight() (what its
+** photons give a white surface). For the lighting that stays RGB.
+*/
+void spec_light_rgb(const iris_light *l, double rgb[3]);
+
 /* Maps u in [0,1) to a wavelength, uniform over the domain (pdf 1/400). */
 static inline double spec_sample_uniform(double u)
 {

@@ -10,7 +10,7 @@
 # (imgdiff: largest absolute difference; imgtool stats: the largest value).
 . "$top_srcdir/tests/tap.sh"
 [ -n "$MPIRUN" ] || tap_skip_all "iris was built without MPI"
-tap_plan 17
+tap_plan 24
 scene="$top_srcdir/tests/progressive/ball.pov"
 imgdiff="$top_builddir/tests/progressive/imgdiff"
 imgtool="$top_builddir/tests/cli/imgtool"
@@ -127,4 +127,51 @@ tap_ok "... 2 ranks: exit non-zero, no hang (rc $rc)" \
 tap_is "... one located error, from rank 0" \
     "$(grep -c 'caustic_ball.pov:23:23: error: photons: .* 56.9 MB .* shared by the node.s MPI ranks' "$tmp/m2.err")" "1"
 tap_ok "... and no image" test ! -e "$tmp/m2.png"
+
+# Another rank fails. MPMD launches ('-n 1 A : -n 1 B') give rank 1
+# arguments or limits of its own, as a node with less memory would.
+# (a) rank 1's photon pass exceeds its memory: --node-memory 60M on rank
+# 1 alone leaves it 30 MB (less its resident set) for the 56.9 MB pass 1
+# map, while rank 0 (no limit but the machine's) builds pass 0. Rank 1
+# never builds pass 0, so its located error is the pass 1 one, which
+# only rank 1 could print; rank 0 prints it, naming the rank, once;
+# exit 2 (a scene's photon settings, as on one rank), no image.
+mpmd() { # mpmd 'RANK0 ARGS' 'RANK1 PREFIX' 'RANK1 ARGS'
+    timeout 120 "$MPIRUN" --oversubscribe --allow-run-as-root \
+        -n 1 "$IRIS" $1 : -n 1 $2 "$IRIS" $1 $3; }
+ballargs="-q $ball +W32 +H24 --threads 1 Declare=Photons=2000000 --passes 4 -o $tmp/f1.png"
+mpmd "$ballargs" "" "--node-memory 60M" 2>"$tmp/f1.err"
+rc=$?
+sed 's/^/# /' "$tmp/f1.err" | head -3
+tap_is "rank 1 over its memory share: exit 2, no hang (124)" "$rc" "2"
+tap_is "... one located error from rank 0, naming rank 1" \
+    "$(grep -c 'caustic_ball.pov:23:23: error: photons: .* 56.9 MB .*--node-memory shared by the node.s MPI ranks.*(MPI rank 1)$' "$tmp/f1.err")" "1"
+tap_ok "... and no image" test ! -e "$tmp/f1.png"
+# (b) rank 1 dies of a signal: 'ulimit -t 1' ends it (SIGXCPU, then
+# SIGKILL) after 1 s of CPU, well inside its share of 400 passes of
+# 24x24 (~0.03 s each). mpirun ends the job: non-zero exit, not a hang,
+# and its report names rank 1 and the signal (nothing else can: rank 1
+# is gone, and rank 0 waits at an agreement until mpirun ends it).
+sargs="-q $scene +W24 +H24 --threads 1 --passes 400 --seed 3 -o $tmp/f2.png"
+printf '#!/bin/sh\nulimit -t 1\nexec "$@"\n' >"$tmp/cpu1"
+chmod +x "$tmp/cpu1"
+mpmd "$sargs" "$tmp/cpu1" "" >"$tmp/f2.out" 2>&1
+rc=$?
+grep -v '^ *$\|^---' "$tmp/f2.out" | sed 's/^/# /' | head -4
+tap_ok "rank 1 killed by a signal: exit non-zero, no hang (rc $rc)" \
+    test "$rc" -ne 0 -a "$rc" -ne 124
+tap_ok "... mpirun names rank 1 and the signal" \
+    grep -q 'rank 1 .*exited on signal' "$tmp/f2.out"
+# (c) rank 0 cannot write the image: the directory does not exist. It is
+# checked before the parse (a render of hours must not end so), once;
+# rank 1, which writes nothing, does not check and goes on to its first
+# agreement, where rank 0 will never come: rank 0, leaving alone, must
+# end the job (MPI_Abort; MPI_Finalize would wait for rank 1 for ever).
+timeout 120 "$MPIRUN" --oversubscribe --allow-run-as-root -n 2 "$IRIS" -q \
+    "$scene" +W24 +H24 --threads 1 --passes 4 -o "$tmp/none/w.png" \
+    2>"$tmp/f3.err"
+rc=$?
+tap_is "rank 0's image directory is missing: exit 1, no hang (124)" "$rc" "1"
+tap_is "... said once, before the render" \
+    "$(grep -c "^iris: $tmp/none/w.png: cannot write the image there: No such file or directory" "$tmp/f3.err")" "1"
 [ "$tap_failed" -eq 0 ]

@@ -20,7 +20,7 @@ within() { awk -v v="$1" -v e="$2" -v t="$3" \
 "$IRIS" --plan "$scene" >"$tmp/plan" 2>/dev/null
 tap_ok "--plan keeps the global map" grep -q "global photon map (radiosity): yes" "$tmp/plan"
 
-# +Q8 has no radiosity (POV-Ray's rule), and ambient is off under it
+# +Q8 has no radiosity (POV-Ray's rule); the furnace has ambient 0
 r -o "$tmp/direct.exr" +Q8
 set -- $("$imgstat" "$tmp/direct.exr")
 tap_ok "direct light alone is a = 0.4 (got $1)" within "$1" 0.4 0.001

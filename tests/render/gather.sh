@@ -7,7 +7,7 @@
 # over the cosine-weighted hemisphere (POV-Ray 3.7's radiosity; POV-Ray
 # renders open_sky and glow identically and graded_sky within 63 dB).
 . "$top_srcdir/tests/tap.sh"
-tap_plan 11
+tap_plan 14
 dir="$top_srcdir/tests/render/gather"
 imgstat="$top_builddir/tests/progressive/imgstat"
 imgdiff="$top_builddir/tests/progressive/imgdiff"
@@ -40,6 +40,19 @@ r "$dir/glow.pov" -o "$tmp/glow.exr"
 set -- $("$imgstat" "$tmp/glow.exr")
 tap_ok "emission lights the plane: 0.7 x 0.5 = 0.35 (got $1)" \
     within "$1" 0.35 0.00003
+
+# Ambient where radiosity does not run: POV-Ray 3.7 drops finish ambient
+# under radiosity{} at +Q9 only; at +Q8 the block is inert and ambient
+# lights the plane (ambient_sky.pov: 0.56 and 0.35, exact up to float
+# rounding, 1e-5).
+r "$dir/ambient_sky.pov" -o "$tmp/amb9.exr"
+set -- $("$imgstat" "$tmp/amb9.exr")
+tap_ok "+Q9: radiosity term 0.7 x 0.8 = 0.56, ambient dropped (got $1)" \
+    within "$1" 0.56 0.00001
+r "$dir/ambient_sky.pov" -o "$tmp/amb8.exr" +Q8
+set -- $("$imgstat" "$tmp/amb8.exr")
+tap_ok "+Q8: no radiosity, ambient 0.7 x 0.5 = 0.35 (got $1)" \
+    within "$1" 0.35 0.00001
 
 # No light source, so no global photon map: the gather recurses down to
 # recursion_limit L as POV-Ray's radiosity does, and the glowing furnace
@@ -79,5 +92,20 @@ for s in 80_radiosity_sky 81_radiosity_room 82_radiosity_emissive_room; do
     tap_is "$s: thread count does not change the image" \
         "$("$imgdiff" "$tmp/t1.exr" "$tmp/t3.exr")" "0"
 done
+
+# A lit scene whose only light is its light sources' (no emission, sky,
+# fog, ... : gather_sources.c proves it) skips the deeper gathers beside
+# the global map, which would all return 0. Skipping must not change a
+# pixel: the same room with a glowing sphere no ray can see (no_image,
+# no_reflection, no_shadow: the proof fails, every level is traced)
+# renders the same image exactly.
+room="$top_srcdir/tests/render/scenes/81_radiosity_room.pov"
+{ cat "$room"
+  echo 'sphere { <0, 2.5, 0>, 0.1 pigment { rgb 1 } finish { emission 1 }'
+  echo '  no_image no_reflection no_shadow }'; } > "$tmp/hidden.pov"
+"$IRIS" -q "$room" +W96 +H64 --threads=1 -o "$tmp/skip.exr" 2>/dev/null
+"$IRIS" -q "$tmp/hidden.pov" +W96 +H64 --threads=1 -o "$tmp/full.exr" 2>/dev/null
+tap_is "81_radiosity_room: skipping the zero deeper gathers changes no pixel" \
+    "$("$imgdiff" "$tmp/skip.exr" "$tmp/full.exr")" "0"
 
 exit $((tap_failed > 0))

@@ -37,6 +37,13 @@ tests_unit_test_media_SOURCES = tests/unit/test_media.c \
 tests_unit_test_media_CFLAGS = $(TEST_CFLAGS)
 tests_unit_test_media_LDADD = $(TEST_LDADD)
 
+check_PROGRAMS += tests/unit/test_gather_sources
+TESTS += tests/unit/test_gather_sources
+tests_unit_test_gather_sources_SOURCES = tests/unit/test_gather_sources.c \
+	tests/unit/parse_util.h tests/testutil.h
+tests_unit_test_gather_sources_CFLAGS = $(TEST_CFLAGS)
+tests_unit_test_gather_sources_LDADD = $(TEST_LDADD)
+
 # The POV-Ray parity suite: iris against POV-Ray, scene by scene.
 check_PROGRAMS += tests/render/psnr
 tests_render_psnr_SOURCES = tests/render/psnr.c

@@ -1087,6 +1087,34 @@ static void test_fast_paths(void **state)
     accel_destroy(au);
     scene_free(uvs);
 
+    /* The uv is computed only where the texture may read it: a plain
+    ** pigment never does (uv stays 0), a checker pigment may (POV-Ray's
+    ** uv again: +x on the equator is (0, 1/2)) */
+    static iris_pigment plain_pig, checker_pig;
+    static iris_texture plain_tex, checker_tex;
+    checker_pig.pattern.kind = IRIS_PAT_CHECKER;
+    checker_pig.pattern.uv_mapping = true;
+    plain_tex.pigment = &plain_pig;
+    checker_tex.pigment = &checker_pig;
+    for (int k = 0; k < 2; k++) {
+        iris_scene *ps = scene_new();
+        iris_object *s = add(ps, ellipsoid(ps, v3(0, 0, 0), 1, v3(2, 2, 2),
+                                           v3(0, 0, 0), v3(0, 1, 0)));
+        s->texture = k ? &checker_tex : &plain_tex;
+        struct accel *ap = build(ps);
+        assert_true(shoot(ap, v3(10, 1, 0), v3(-1, 0, 0), &h));
+        assert_near(h.t, 8, 1e-12);
+        assert_ptr_equal(h.texture, s->texture);
+        if (k) {
+            assert_near(h.uv.u, 0, 1e-12);
+            assert_near(h.uv.v, 0.5, 1e-12);
+        } else {
+            assert_true(h.uv.u == 0 && h.uv.v == 0);
+        }
+        accel_destroy(ap);
+        scene_free(ps);
+    }
+
     const int counts[2] = { 6, 24 };
     for (int k = 0; k < 2; k++) {
         iris_scene *sc = scene_new();

@@ -7,6 +7,7 @@
 
 #include "testutil.h"
 
+#include <stdint.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -599,6 +600,99 @@ static void test_superellipsoid(void **state)
     assert_dir(h[0].n, v3(0, 0, -1), 1e-6);
 }
 
+/*
+** isect_list.first_only (the accel's nearest-hit query): a shape that
+** honours it returns one crossing, the nearest of those the full search
+** gives for the same ray and interval, bit for bit (the search up to it
+** is the same). Rays from outside, and from inside the box with t0 past
+** the entry (a secondary ray), over superellipsoids (whole powers by
+** squaring and pow) and julia_fractal sets (quaternion sqr and cube,
+** hypercomplex sqr).
+*/
+static int first_only_multi; /* checks where the full search found more */
+
+static void check_first_only(const iris_object *o, vec3 ro, vec3 rd,
+                             double t0)
+{
+    struct isect_list all, first;
+    isect_list_init(&all);
+    isect_list_init(&first);
+    first.first_only = true;
+    geom_intersect(o, NULL, ro, rd, t0, INFINITY, &all);
+    geom_intersect(o, NULL, ro, rd, t0, INFINITY, &first);
+    if (all.n == 0) {
+        assert_int_equal(first.n, 0);
+    } else {
+        int k = 0;
+        for (int i = 1; i < all.n; i++)
+            if (all.v[i].t < all.v[k].t)
+                k = i;
+        first_only_multi += all.n > 1;
+        assert_int_equal(first.n, 1);
+        assert_true(first.v[0].t == all.v[k].t);
+        assert_true(first.v[0].n.x == all.v[k].n.x &&
+                    first.v[0].n.y == all.v[k].n.y &&
+                    first.v[0].n.z == all.v[k].n.z);
+    }
+    isect_list_fini(&all);
+    isect_list_fini(&first);
+}
+
+static void test_first_only(void **state)
+{
+    (void)state;
+    iris_object se[3] = { mk(IRIS_OBJ_SUPERELLIPSOID),
+                          mk(IRIS_OBJ_SUPERELLIPSOID),
+                          mk(IRIS_OBJ_SUPERELLIPSOID) };
+    se[0].u.superellipsoid.e = 0.05;   /* powers 40 and 1 */
+    se[0].u.superellipsoid.n = 0.05;
+    se[1].u.superellipsoid.e = 0.3;    /* pow */
+    se[1].u.superellipsoid.n = 2.5;
+    se[2].u.superellipsoid.e = 1;      /* powers 2 and 1: the sphere */
+    se[2].u.superellipsoid.n = 1;
+    iris_object ju[3] = { mk(IRIS_OBJ_JULIA_FRACTAL),
+                          mk(IRIS_OBJ_JULIA_FRACTAL),
+                          mk(IRIS_OBJ_JULIA_FRACTAL) };
+    const double c[3][4] = { { -0.083, 0.0, -0.83, -0.025 },
+                             { -0.2, 0.0, 0.5, 0.0 },
+                             { 0.2, 0.1, 0.59, -0.2 } };
+    for (int j = 0; j < 3; j++) {
+        for (int k = 0; k < 4; k++)
+            ju[j].u.julia.data[k] = c[j][k];
+        ju[j].u.julia.iterations = 8;
+        ju[j].u.julia.precision = 20;
+        ju[j].u.julia.fn = j == 1 ? IRIS_JULIA_CUBE : IRIS_JULIA_SQR;
+        ju[j].u.julia.type = j == 2;   /* 1: hypercomplex */
+    }
+    uint64_t r = 12345;
+    for (int i = 0; i < 200; i++) {
+        double u[6];
+        for (int k = 0; k < 6; k++) {
+            r = r * 6364136223846793005u + 1442695040888963407u;
+            u[k] = (double)(r >> 11) / 9007199254740992.0 * 2 - 1;
+        }
+        vec3 ro = v3(6 * u[0], 6 * u[1], -6);
+        vec3 rd = v3_sub(v3(0.8 * u[3], 0.8 * u[4], 0.8 * u[5]), ro);
+        for (int j = 0; j < 3; j++) {
+            check_first_only(&se[j], ro, rd, 0);
+            check_first_only(&ju[j], ro, rd, 0);
+            /* a ray starting inside the box, past a first crossing */
+            check_first_only(&se[j], ro, rd, 0.99);
+            check_first_only(&ju[j], ro, rd, 0.99);
+        }
+    }
+    /* not vacuous: many rays cross a shape more than once */
+    print_message("# %d of 2400 checks had several crossings\n",
+                  first_only_multi);
+    assert_true(first_only_multi >= 200);
+    /* <0.05, 0.05> along x: |x|^40 = 1 at x = -1 exactly, t = 4 (the
+    ** squaring is within a few ulps; the bisection goes to the last bit) */
+    struct geom_isect h[8];
+    assert_int_equal(hits(&se[0], NULL, v3(-5, 0, 0), v3(1, 0, 0), h, 8), 2);
+    assert_near(h[0].t, 4, 1e-12);
+    assert_near(h[1].t, 6, 1e-12);
+}
+
 /* Lathe, sor and prism that are all the unit cylinder of height 1. */
 static void test_sweeps(void **state)
 {
@@ -813,6 +907,7 @@ int main(void)
         cmocka_unit_test(test_poly),
         cmocka_unit_test(test_blob),
         cmocka_unit_test(test_superellipsoid),
+        cmocka_unit_test(test_first_only),
         cmocka_unit_test(test_sweeps),
         cmocka_unit_test(test_conic_prism),
         cmocka_unit_test(test_spline_lathe),

@@ -253,6 +253,35 @@ static void test_trace_inside(void **state)
     iris_scene_destroy(sc);
 }
 
+/*
+** trace() misses a hit beyond POV-Ray's MAX_DISTANCE, 1e7 along the unit
+** direction (its shapes drop deeper intersections): plane y = -1 traced
+** from the origin along <1, -1e-8, 0> would meet it at x = 1e8 (depth
+** 1e8) and gives <0,0,0> with normal <0,0,0>; along <1, -1e-6, 0> it is
+** met at x = 1e6, depth 1e6 < 1e7: <1e6, -1, 0>, normal +y. A grazing
+** ray from a point on a plane so hit it 1e15 away (language/tracevines).
+** The hit's x is (1/1e-6) up to a relative 1e-12 (a few float ops).
+*/
+static void test_trace_max_distance(void **state)
+{
+    (void)state;
+    iris_scene *sc = scene_with_geometry(
+        "#declare G = plane { y, -1 }\n"
+        "#declare N = <9,9,9>;\n"
+        "#declare P = trace(G, 0, <1, -1e-8, 0>, N);\n"
+        "sphere { P, 1 } sphere { N, 1 }\n"
+        "#declare Q = trace(G, 0, <1, -1e-6, 0>, N);\n"
+        "sphere { Q, 1 } sphere { N, 1 }\n");
+    assert_int_equal(sc->n_objects, 4);
+    assert_near(centre(sc, 0).x, 0, 0);
+    assert_near(centre(sc, 0).y, 0, 0);
+    assert_near(centre(sc, 1).y, 0, 0);
+    assert_near(centre(sc, 2).x, 1e6, 1e-6);
+    assert_near(centre(sc, 2).y, -1, 1e-9);
+    assert_near(centre(sc, 3).y, 1, 1e-9);
+    iris_scene_destroy(sc);
+}
+
 /* Without the renderer's queries, trace() and inside() are located
 ** errors (the parser alone cannot intersect). */
 static void test_trace_without_renderer(void **state)
@@ -441,6 +470,58 @@ static void test_not_rendered_warnings(void **state)
     assert_near(rb->falloff_width, 0.0, 0);
     assert_int_equal(rb->pigment->n_entries, 2);
     iris_diag_list_fini(&d);
+    iris_scene_destroy(sc);
+}
+
+/*
+** light_group (POV-Ray 3.7: Parse_Light_Group marks its lights as group
+** lights, kept out of the scene's list; Promote_Local_Lights gives them
+** to every object of the group, nested groups' objects getting the outer
+** group's too; NO_GLOBAL_LIGHTS_FLAG is set unless 'global_lights on').
+** Here: one scene light, a group of one light (global_lights off) holding
+** a sphere and a group of one light with global_lights on, and a plain
+** sphere. Expected: 1 scene light; group lights [0] outer (its own), [1]
+** inner (its own), [2] inner's copy of the outer one; the outer sphere
+** lit by range 0+1 only, the inner sphere by 1+2 and the scene's light,
+** the plain sphere by the scene's light only. The group's translate
+** moves its light (x = 1 + 10). Exact: counts, and one addition.
+*/
+static void test_light_group(void **state)
+{
+    (void)state;
+    iris_scene *sc = scene_of(
+        "light_source { <0, 9, 0> rgb 1 }\n"
+        "light_group {\n"
+        "  light_source { <1, 5, 0> rgb <1, 0, 0> }\n"
+        "  sphere { 0, 1 }\n"
+        "  light_group { light_source { <2, 5, 0> rgb -1 } sphere { x, 1 }\n"
+        "                global_lights on }\n"
+        "  translate 10*x\n"
+        "}\n"
+        "sphere { -x, 1 }\n");
+    assert_int_equal(sc->n_lights, 1);
+    assert_int_equal(sc->n_group_lights, 3);
+    assert_near(sc->lights[0]->location.y, 9.0, 0);
+    assert_near(sc->group_lights[0]->location.x, 11.0, 0);
+    assert_near(sc->group_lights[0]->colour.g, 0.0, 0);
+    assert_near(sc->group_lights[1]->location.x, 12.0, 0);
+    assert_near(sc->group_lights[1]->colour.r, -1.0, 0);
+    assert_ptr_equal(sc->group_lights[2], sc->group_lights[0]);
+    assert_int_equal(sc->n_objects, 2);
+    const iris_object *g = sc->objects[0];
+    assert_int_equal(g->kind, IRIS_OBJ_LIGHT_GROUP);
+    assert_int_equal(g->u.csg.n_children, 2);
+    const iris_object *outer = g->u.csg.children[0];
+    const iris_object *inner = g->u.csg.children[1]->u.csg.children[0];
+    assert_int_equal(outer->light_group_first, 0);
+    assert_int_equal(outer->light_group_count, 1);
+    assert_true(outer->no_global_lights);
+    assert_int_equal(inner->light_group_first, 1);
+    assert_int_equal(inner->light_group_count, 2);
+    assert_false(inner->no_global_lights);
+    const iris_object *plain = sc->objects[1];
+    assert_int_equal(plain->light_group_count, 0);
+    assert_false(plain->no_global_lights);
     iris_scene_destroy(sc);
 }
 
@@ -704,6 +785,8 @@ int main(void)
         cmocka_unit_test(test_macro_reference_last_line),
         cmocka_unit_test(test_transform_before_map),
         cmocka_unit_test(test_function_noise_generator),
+        cmocka_unit_test(test_light_group),
+        cmocka_unit_test(test_trace_max_distance),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -1,0 +1,605 @@
+#!/bin/sh
+# SPDX-License-Identifier: MIT
+# tests/optics/optics.sh: independent optics checks, end to end (issue 5).
+# Each check renders a scene of tests/optics/scenes with the iris command,
+# measures a number in the image with tests/optics/imgprobe, and compares
+# it with a prediction computed here from textbook optics and the data/
+# tables (tests/optics/optics.awk), never from iris's own code. The
+# checks, their predictions, tolerances and measured values are listed in
+# docs/optics.md.
+. "$top_srcdir/tests/tap.sh"
+tap_plan 42
+scenes="$top_srcdir/tests/optics/scenes"
+lib="$top_srcdir/tests/optics/optics.awk"
+probe="$top_builddir/tests/optics/imgprobe"
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+# calc 'awk expression using optics.awk': prints its value
+calc() { awk -f "$lib" -f /dev/stdin <<EOF_CALC
+BEGIN { $1 }
+EOF_CALC
+}
+# within VALUE EXPECTED ABS_TOLERANCE
+within() { awk -v v="$1" -v e="$2" -v t="$3" \
+    'BEGIN { d = v - e; if (d < 0) d = -d; exit !(d <= t) }'; }
+# within_xy X Y EXPECTED_X EXPECTED_Y ABS_TOLERANCE (each coordinate)
+within_xy() { within "$1" "$3" "$5" && within "$2" "$4" "$5"; }
+# within3 "R G B" "R G B" ABS_TOLERANCE (each channel)
+within3() { awk -v a="$1" -v b="$2" -v t="$3" 'BEGIN {
+    split(a, x, " "); split(b, y, " ")
+    for (k = 1; k <= 3; k++) { d = x[k] - y[k]; if (d < 0) d = -d
+        if (!(d <= t)) exit 1 } }'; }
+
+# ---------------------------------------------------------------------
+# 1. Longitudinal chromatic aberration (scenes/lens_spectrum.pov)
+# The lens: radii 4 on centres y = -1.3 (top surface) and 6.1 (bottom),
+# vertices 2.7 and 2.1, thickness 0.6. First the prediction's own check:
+# a ray 1e-4 off the axis must cross it where the thick-lens formula puts
+# the paraxial focus (2.1 - BFD), to 1e-6 (the paraxial error ~ (a/r)^2).
+set -- $(calc 'n = n_bk7(546.07)
+    printf "%.7f %.7f\n", lens_trace(1e-4, n, -1.3, 6.1, 4), \
+        2.1 - thick_bfd(n, 4, -4, 0.6)')
+tap_ok "lens prediction: exact trace at 1e-4 = thick-lens focus ($1 vs $2)" \
+    within "$1" "$2" 1e-6
+"$IRIS" -q "$scenes/lens_spectrum.pov" +W8 +H300 -o "$tmp/lens.exr"
+"$probe" rows "$tmp/lens.exr" 0 7 >"$tmp/lens.rows"
+# Rows run along x from -0.625 (top edge) down by 0.0005 a row. For each
+# F11 line (its centroid wavelength from data/, about 435.3, 544.9 and
+# 610.7 nm) the pencil's centre ray, traced to the floor y = -3.7, gives
+# the predicted row; the measured row is the half-maximum centroid of the
+# channel the line dominates (B, G, R). Tolerance 2 rows (0.001): the spot
+# (the pencil's 0.004 width shrunk to ~0.003, and the photon gather's
+# radius) is symmetric, its half-maximum centroid is its centre to about
+# half a row; the lines' asymmetric wings move it < 1 nm (< 0.7 row). One
+# row is an index error of 1.4e-4 (the spots move 3.5 units a unit of n).
+awk -f "$lib" -f /dev/stdin "$top_srcdir/data/cie_illuminant_f_5nm.csv" \
+    "$tmp/lens.rows" >"$tmp/lens.out" <<'EOF_LENS'
+FNR == 1 { file++ }
+file == 1 && FNR > 1 { split($0, f, ","); F[f[1] + 0] = f[12]; next }
+file == 2 { PROF[$1, 2] = $2; PROF[$1, 3] = $3; PROF[$1, 4] = $4; n = FNR }
+END {
+    split("610 545 435", line, " "); split("2 3 4", col, " ")
+    for (k = 1; k <= 3; k++) {
+        l = line_centroid(F, line[k])
+        axis = lens_trace(1, n_bk7(l), -1.3, 6.1, 4)
+        x = PX + (-3.7 - PY) * DX / DY
+        want = (-0.625 - x) / 0.0005 - 0.5
+        got = peak_row(col[k], n)
+        # the focus this spot implies: the exit ray moved to pass through
+        # the measured spot, where it crosses the axis
+        xm = -0.625 - (got + 0.5) * 0.0005
+        focus = PY - PX * (-3.7 - PY) / (xm - PX)
+        printf "%s %.2f %.3f %.3f %.4f %.4f\n", line[k], l, want, got, \
+            axis, focus
+    }
+}
+EOF_LENS
+ok=0
+while read -r l lc want got axis focus; do
+    tap_comment "F11 line $lc nm: row $got, predicted $want;" \
+        "its focus (1-unit zone) y = $focus, predicted $axis"
+    within "$got" "$want" 2 || ok=1
+done <"$tmp/lens.out"
+tap_result $ok "lens: the 610/545/435 nm spots within 2 rows of Snell's law"
+set -- $(awk '{ printf "%s ", $4 }' "$tmp/lens.out")
+tap_ok "lens: red lands nearest the axis, blue farthest ($1 < $2 < $3)" \
+    awk -v r="$1" -v g="$2" -v b="$3" 'BEGIN { exit !(r < g && g < b) }'
+
+# ---------------------------------------------------------------------
+# 2. Fresnel transmission of a clear slab (scenes/slab.pov), n = 1.5, at
+# normal incidence and 70 degrees. With the multiple reflections inside
+# the slab, T = (1 - R)^2 (1 + R^2 + R^4 + ...) = (1 - R)/(1 + R), R the
+# unpolarised Fresnel reflectance of one face: 0.92308 at 0, 0.70788 at
+# 70 degrees (keeping s and p apart would give 0.72871 at 70: iris's
+# photons carry no polarisation; docs/optics.md). The floor under the
+# slab (image columns 2..14: at least 0.25 from either edge of the
+# photon-lit strip, beyond the k-nearest radius) has luminance
+# Y = T cos(tilt), the light's Y being 1 (DESIGN.md: white light on a
+# white surface renders 1). Noise: Russian roulette at each face decides
+# the photons' fate, binomially: over the ~34000 (0 degrees) and ~12000
+# (70) photons of the window, sd 0.16% and 0.4% of T (measured over four
+# seeds: 0.92 +- 0.1%, 0.706 +- 0.5%). Tolerances 0.6% and 1.5%.
+for tilt in 0 70; do
+    "$IRIS" -q "$scenes/slab.pov" Declare=TILT=$tilt +W40 +H40 \
+        -o "$tmp/slab$tilt.exr"
+    set -- $("$probe" mean "$tmp/slab$tilt.exr" 2 2 14 37)
+    set -- $(calc "t = $tilt * atan2(1, 1) / 45; R = fresnel(t, 1, 1.5)
+        Y = rgb_xy($1, $2, $3) / cos(t)
+        printf \"%.5f %.5f\n\", Y, (1 - R) / (1 + R)")
+    tol=$([ $tilt = 0 ] && echo 0.006 || echo 0.015)
+    tap_ok "slab at $tilt degrees: T = $1, Fresnel (1-R)/(1+R) = $2" \
+        within "$1" "$2" "$(calc "print $2 * $tol")"
+done
+
+# ---------------------------------------------------------------------
+# 3. Colour science: the same slab under a blackbody 2856 K light (CIE
+# illuminant A's temperature). DESIGN.md: light spectra are normalised
+# to Y = 1 and the output is linear sRGB with D65 white, no chromatic
+# adaptation, so a white surface shows the light's own chromaticity:
+# Planck's law at 2856 K summed over 380..780 nm with the CIE 1931
+# functions of data/ gives x = 0.44754, y = 0.40744 (CIE's A: 0.44757,
+# 0.40745). Beside the slab (direct light, RGB shading): within 3e-4 (the
+# per-channel white balance of the spectral weights moves it ~1e-4).
+# Under it (photons, one wavelength each): within 2e-3, the colour noise
+# of ~34000 photons' wavelengths (measured 5e-4; 3e-3 is about the
+# smallest visible step in xy).
+"$IRIS" -q "$scenes/slab.pov" Declare=KELVIN=2856 +W40 +H40 \
+    -o "$tmp/bb.exr"
+{ "$probe" mean "$tmp/bb.exr" 28 2 37 37; "$probe" mean "$tmp/bb.exr" 2 2 14 37; } \
+    >"$tmp/bb.rgb"
+awk -F'[, ]' -f "$lib" -f /dev/stdin "$top_srcdir/data/cie1931_2deg_cmf.csv" \
+    "$tmp/bb.rgb" >"$tmp/bb.out" <<'EOF_BB'
+FNR == 1 { file++ }
+file == 1 && FNR > 1 { XB[$1 + 0] = $2; YB[$1 + 0] = $3; ZB[$1 + 0] = $4 }
+file == 2 { Y[FNR] = rgb_xy($1, $2, $3); x[FNR] = CX; y[FNR] = CY }
+END { planck_xy(2856)
+      printf "%.5f %.5f %.5f %.5f %.5f %.5f %.5f %.5f\n", x[1], y[1], \
+          x[2], y[2], CX, CY, Y[1], Y[2] }
+EOF_BB
+read -r dx dy px py ex ey dY pY <"$tmp/bb.out"
+tap_ok "blackbody 2856 K, direct light: xy ($dx, $dy) = Planck's ($ex, $ey)" \
+    within_xy "$dx" "$dy" "$ex" "$ey" 3e-4
+tap_ok "blackbody 2856 K, through the slab (photons): xy ($px, $py)" \
+    within_xy "$px" "$py" "$ex" "$ey" 2e-3
+# and its luminance is still that of a Y = 1 light (the direct side) and
+# the slab's T = 0.92308 (photons; as check 2). Spectral photons add the
+# noise of their wavelengths' luminance weights: five seeds gave 0.9203
+# +- 0.0033 (sd), so 1.2%.
+tap_ok "blackbody 2856 K: Y = 1 beside the slab (got $dY)" within "$dY" 1 1e-3
+tap_ok "blackbody 2856 K: Y = 0.92308 under the slab (got $pY)" \
+    within "$pY" 0.92308 0.011
+
+# ---------------------------------------------------------------------
+# 4. Fresnel reflection (scenes/reflect.pov): the light a clear slab
+# (n = 1.5) reflects at 45 and 75 degrees, its first face's R plus what
+# comes back out after internal reflections, R + (1-R)^2 R (1 + R^2 +
+# ...) = 2R/(1 + R): 0.09567 and 0.40391 (unpolarised, as in check 2).
+# The screen stands square to the reflected beam, which has the incident
+# beam's cross-section, so its irradiance is that fraction of the light's
+# (1). The window is the central 0.3 x 0.3 of the 0.6 wide beam; the
+# internally reflected copies are shifted by 0.08 (45) and 0.04 (75)
+# a bounce and still cover it (their share beyond the second copy is
+# < R^2). Noise: the window holds 90000 photons' landing places, a
+# fraction 2R/(1+R) of them reflected: sd 1% and 0.4% (binomial).
+# Tolerances 3% and 1.5%.
+for angle in 45 75; do
+    "$IRIS" -q "$scenes/reflect.pov" Declare=ANGLE=$angle +W40 +H40 \
+        -o "$tmp/refl$angle.exr"
+    set -- $("$probe" mean "$tmp/refl$angle.exr" 5 5 34 34)
+    set -- $(calc "R = fresnel($angle * atan2(1, 1) / 45, 1, 1.5)
+        printf \"%.5f %.5f\n\", rgb_xy($1, $2, $3), 2 * R / (1 + R)")
+    tol=$([ $angle = 45 ] && echo 0.03 || echo 0.015)
+    tap_ok "reflection at $angle degrees: $1, Fresnel 2R/(1+R) = $2" \
+        within "$1" "$2" "$(calc "print $2 * $tol")"
+done
+
+# ---------------------------------------------------------------------
+# 5. Total internal reflection (scenes/tir.pov): a right-angle prism in
+# a beam that meets its hypotenuse at 45 degrees from inside.
+# n = 1.5 (critical angle 41.8 degrees): nothing leaves through the
+# hypotenuse, the wall behind it stays black (no photon reaches it:
+# exactly 0), and the floor under the prism gets the beam less the two
+# square-on faces' reflections, with the light bouncing between them:
+# (1-R0)^2 (1 + R0^2 + ...) = (1-R0)/(1+R0) = 0.92308 (tolerance 1%:
+# binomial noise 0.2% over the 0.4 x 0.4 window's ~160000 photons).
+"$IRIS" -q "$scenes/tir.pov" Declare=N=1.5 Declare=VIEW=1 +W40 +H40 \
+    -o "$tmp/tir_floor.exr"
+"$IRIS" -q "$scenes/tir.pov" Declare=N=1.5 Declare=VIEW=2 +W40 +H240 \
+    -o "$tmp/tir_wall.exr"
+set -- $("$probe" mean "$tmp/tir_floor.exr" 0 0 39 39)
+Y=$(calc "printf \"%.5f\", rgb_xy($1, $2, $3)")
+tap_ok "TIR (n = 1.5): the floor gets (1-R0)/(1+R0) = 0.92308 (got $Y)" \
+    within "$Y" 0.92308 0.0092
+set -- $("$probe" mean "$tmp/tir_wall.exr" 0 0 39 239)
+tap_is "TIR (n = 1.5): nothing passes the hypotenuse (wall: $1 $2 $3)" \
+    "$1 $2 $3" "0 0 0"
+# The control: n = 1.3 (critical angle 50.3 degrees) lets the fraction
+# 1 - R45 = 0.907 out at 66.8 degrees from the hypotenuse's normal; the
+# beam narrows in the plane by cos 66.8 / cos 45 and meets the wall at
+# cos 21.8 = 0.928, so the wall's centre (rows 135..153, 0.09 within the
+# beam's 0.36 wide footprint) gets (1-R0)(1-R45) 0.928 cos45/cos66.8 =
+# 1.4867, the floor (1-R0)^2 R45 = 0.0898 (plus bounces of order R0 R45:
+# 1%). Tolerances 2% and 3% (binomial noise 0.3% and 1.1%).
+"$IRIS" -q "$scenes/tir.pov" Declare=N=1.3 Declare=VIEW=2 +W40 +H240 \
+    -o "$tmp/tir13_wall.exr"
+"$IRIS" -q "$scenes/tir.pov" Declare=N=1.3 Declare=VIEW=1 +W40 +H40 \
+    -o "$tmp/tir13_floor.exr"
+set -- $("$probe" mean "$tmp/tir13_wall.exr" 10 135 29 153) \
+    $("$probe" mean "$tmp/tir13_floor.exr" 0 0 39 39)
+set -- $(calc "n = 1.3; q = atan2(1, 1); R0 = fresnel(0, 1, n)
+    R45 = fresnel(q, n, 1); s = n * sin(q); to = atan2(s, sqrt(1 - s * s))
+    c = cos(to) * sqrt(0.5) + sin(to) * sqrt(0.5)
+    printf \"%.5f %.5f %.5f %.5f\n\", rgb_xy($1, $2, $3), \
+        (1 - R0) * (1 - R45) * c * cos(q) / cos(to), rgb_xy($4, $5, $6), \
+        (1 - R0) ^ 2 * R45")
+tap_ok "no TIR at n = 1.3: the wall gets $1 (Fresnel and Snell: $2)" \
+    within "$1" "$2" "$(calc "print $2 * 0.02")"
+tap_ok "no TIR at n = 1.3: the floor gets $3 (Fresnel: $4)" \
+    within "$3" "$4" "$(calc "print $4 * 0.03")"
+
+# ---------------------------------------------------------------------
+# 6. Absorption (Beer-Lambert). Camera rays (scenes/fade.pov) through
+# slabs of index 1 onto a white background, per channel as POV-Ray
+# defines the fade (povray-3.7-semantics.md: fade_power >= 1000 gives
+# exp(-(1 - fade_colour) d / fade_distance), otherwise fade_colour +
+# (1 - fade_colour)/(1 + (d/fade_distance)^fade_power)): fade colour
+# <0.8, 0.5, 0.2>, fade_distance 0.2; no refraction, no reflection, no
+# noise, so within 1e-5 (float output).
+"$IRIS" -q "$scenes/fade.pov" +W30 +H10 -o "$tmp/fade.exr"
+i=0
+for spec in "2 0.1 1001" "12 0.3 1001" "22 0.3 2"; do
+    set -- $spec
+    x0=$1 d=$2 p=$3
+    set -- $("$probe" mean "$tmp/fade.exr" "$x0" 2 $((x0 + 5)) 7)
+    want=$(calc "split(\"0.8 0.5 0.2\", fc, \" \")
+        for (c = 1; c <= 3; c++)
+            printf \"%.6f \", ($p >= 1000 ? exp(-(1 - fc[c]) * $d / 0.2) : \
+                fc[c] + (1 - fc[c]) / (1 + ($d / 0.2) ^ $p))")
+    set -- "$1" "$2" "$3" $want
+    tap_ok "fade $d thick, fade_power $p: rgb $1 $2 $3 = $4 $5 $6" \
+        within3 "$1 $2 $3" "$4 $5 $6" 1e-5
+done
+# Photons (scenes/slab.pov, n = 1, grey fade colour 0.5, fade_distance
+# 0.2): the floor under the slab gets exp(-0.5 d/0.2) cos(tilt) with the
+# path d = 0.1/cos(tilt) (no refraction at n = 1): 0.7788 at 0 and 0.6065
+# x 0.5 at 60 degrees. No Fresnel at n = 1, so no roulette: within 0.5%
+# (the estimate over a uniform photon density; measured 0.02%).
+for tilt in 0 60; do
+    "$IRIS" -q "$scenes/slab.pov" Declare=TILT=$tilt Declare=IOR=1 \
+        Declare=FADE=0.2 +W40 +H40 -o "$tmp/fadeph$tilt.exr"
+    set -- $("$probe" mean "$tmp/fadeph$tilt.exr" 2 2 14 37)
+    set -- $(calc "t = $tilt * atan2(1, 1) / 45
+        printf \"%.5f %.5f\n\", rgb_xy($1, $2, $3), exp(-0.5 * 0.1 / cos(t) / 0.2) * cos(t)")
+    tap_ok "photons through a grey fade at $tilt degrees: $1 = $2" \
+        within "$1" "$2" "$(calc "print $2 * 0.005")"
+done
+
+# ---------------------------------------------------------------------
+# 7. The rainbow (scenes/rainbow.pov): one internal reflection in water
+# (n from the Daimon-Masumura Sellmeier formula of data/). First the
+# prediction's own check: the ray the test traces to the bow's edge on
+# the screen deviates within 0.05 degrees of Descartes' minimum
+# deviation D = 180 + 2i - 4r, cos^2 i = (n^2 - 1)/3 (the screen is at a
+# finite distance, so the edge ray is not exactly the minimum's).
+set -- $(calc 'n = n_water(587.56); bow_edge(n, 5); d = BOW_DEV
+    c = sqrt((n * n - 1) / 3); i = atan2(sqrt(1 - c * c), c)
+    r = atan2(sin(i) / n, sqrt(1 - (sin(i) / n) ^ 2))
+    printf "%.3f %.3f\n", d, 180 + (2 * i - 4 * r) * 45 / atan2(1, 1)')
+tap_ok "rainbow prediction: edge ray $1 deg = Descartes' minimum $2 deg" \
+    within "$1" "$2" 0.05
+"$IRIS" -q "$scenes/rainbow.pov" +W10 +H200 -o "$tmp/bow.exr"
+"$probe" rows "$tmp/bow.exr" 0 9 >"$tmp/bow.rows"
+# Rows run along x from -4.5 (top edge) by 0.01 (0.09 degrees of
+# deviation) a row. Each F11 line makes a fold caustic: bright inside
+# its edge, dark beyond. Measured: the row of the largest 3-row mean of
+# the line's channel (R, G, B) within 6 rows of the predicted edge (the
+# lines are 6 and 14 rows apart). A fold blurred by the photon gather
+# peaks inside its edge, by about the blur (here 0-1.5 rows over 6
+# seeds); tolerance 2.5 rows (0.2 degrees; the 435-610 nm spread is 20
+# rows, 1.1 degrees).
+awk -f "$lib" -f /dev/stdin "$tmp/bow.rows" >"$tmp/bow.out" <<'EOF_BOW'
+{ PROF[$1, 2] = $2; PROF[$1, 3] = $3; PROF[$1, 4] = $4 }
+END {
+    split("610.69 544.89 435.31", line, " "); split("2 3 4", col, " ")
+    for (k = 1; k <= 3; k++) {
+        x = bow_edge(n_water(line[k]), 5)
+        want = (-4.5 - x) / 0.01 - 0.5
+        got = smooth_peak(col[k], int(want) - 6, int(want) + 6)
+        xm = -4.5 - (got + 0.5) * 0.01  # the edge ray moved to hit there
+        dm = 180 - atan2(-(xm - PX), 5 - PY) * 45 / atan2(1, 1)
+        printf "%s %.2f %d %.2f %.2f\n", line[k], want, got, BOW_DEV, dm
+    }
+}
+EOF_BOW
+ok=0
+while read -r l want got dev devm; do
+    tap_comment "bow of $l nm: row $got, predicted $want;" \
+        "deviation $devm deg, predicted $dev"
+    within "$got" "$want" 2.5 || ok=1
+done <"$tmp/bow.out"
+tap_result $ok "rainbow: the 610/545/435 nm bows within 2.5 rows of the prediction"
+set -- $(awk '{ printf "%s ", $5 }' "$tmp/bow.out")
+tap_ok "rainbow: red outside (least deviated), blue inside ($1 < $2 < $3 deg)" \
+    awk -v r="$1" -v g="$2" -v b="$3" 'BEGIN { exit !(r < g && g < b) }'
+
+# The secondary bow (scenes/rainbow.pov, Declare=SECONDARY=1): two
+# internal reflections send it to the +x side; its edges (the minimum
+# deviation of bow2_x, 360 - D2 = 129.17, 128.61, 127.12 degrees from
+# the light's direction for the three lines; Descartes' cos^2 i =
+# (n^2 - 1)/8 gives 129.11 at n = 1.333) land at rows (from x = 6 at the
+# top edge, 0.01 a row) 136.71, 125.98, 96.53. Measured as for the
+# primary. Over three seeds the peaks sat 0.7..1.7 (610 nm), 1.0 (545)
+# and 1.5..2.5 (435) rows inside the edges, always on the bright side: the
+# gather's blur over the fewer photons the two reflections leave.
+# Tolerance 3 rows (0.27 degrees; the lines are 40 rows apart). And the
+# order is the primary's reversed: seen from the antisolar point, red
+# inside (about 50.8 degrees), blue outside (52.9).
+"$IRIS" -q "$scenes/rainbow.pov" Declare=SECONDARY=1 +W10 +H200 \
+    -o "$tmp/bow2.exr"
+"$probe" rows "$tmp/bow2.exr" 0 9 >"$tmp/bow2.rows"
+awk -f "$lib" -f /dev/stdin "$tmp/bow2.rows" >"$tmp/bow2.out" <<'EOF_BOW2'
+{ PROF[$1, 2] = $2; PROF[$1, 3] = $3; PROF[$1, 4] = $4 }
+END {
+    split("610.69 544.89 435.31", line, " "); split("2 3 4", col, " ")
+    for (k = 1; k <= 3; k++) {
+        x = bow2_edge(n_water(line[k]), 5)
+        want = (6 - x) / 0.01 - 0.5
+        got = smooth_peak(col[k], int(want) - 6, int(want) + 6)
+        xm = 6 - (got + 0.5) * 0.01    # the edge ray moved to hit there
+        am = atan2(xm - PX, 5 - PY) * 45 / atan2(1, 1)
+        printf "%s %.2f %d %.2f %.2f\n", line[k], want, got, 180 - BOW_DEV, am
+    }
+}
+EOF_BOW2
+ok=0
+while read -r l want got a am; do
+    tap_comment "secondary bow of $l nm: row $got, predicted $want;" \
+        "$am deg from the antisolar point, predicted $a"
+    within "$got" "$want" 3 || ok=1
+done <"$tmp/bow2.out"
+tap_result $ok "secondary rainbow: the 610/545/435 nm bows within 3 rows of the prediction"
+set -- $(awk '{ printf "%s ", $5 }' "$tmp/bow2.out")
+tap_ok "secondary rainbow: colours reversed, red inside ($1 < $2 < $3 deg)" \
+    awk -v r="$1" -v g="$2" -v b="$3" 'BEGIN { exit !(r < g && g < b) }'
+
+# ---------------------------------------------------------------------
+# 8. A prism's spectrum (scenes/prism_spectrum.pov): a narrow beam
+# through an equilateral SCHOTT F2 prism near minimum deviation onto the
+# wall x = 4, the F11 lines traced with Snell's law at both faces (n from
+# F2's Sellmeier coefficients in data/). Rows run along y from -0.40
+# (top edge) by 0.0015; one row is an index error of 2e-4. Measured as
+# in check 1 (half-maximum centroid of the line's channel). Tolerance
+# 1.5 rows: the spot is symmetric (the beam's 0.01 width), but F11's
+# continuum beside its lines (15-35% of the 435 nm line's height from 440
+# to 470 nm, where F2 spreads 1.3 rows a nm) pulls the blue spot towards
+# the red; over three seeds the offsets were -0.4..-0.7, -0.0..+0.4 and
+# -0.8..-1.1 rows.
+"$IRIS" -q "$scenes/prism_spectrum.pov" +W10 +H240 -o "$tmp/prism.exr"
+"$probe" rows "$tmp/prism.exr" 0 9 >"$tmp/prism.rows"
+awk -f "$lib" -f /dev/stdin "$tmp/prism.rows" >"$tmp/prism.out" <<'EOF_PRISM'
+{ PROF[$1, 2] = $2; PROF[$1, 3] = $3; PROF[$1, 4] = $4; n = NR }
+END {
+    split("610.69 544.89 435.31", line, " "); split("2 3 4", col, " ")
+    for (k = 1; k <= 3; k++) {
+        y = prism_y(n_f2(line[k]), -4.154, -0.562, 3.654, 1.628, 4)
+        printf "%s %.2f %.2f\n", line[k], (-0.40 - y) / 0.0015 - 0.5, \
+            peak_row(col[k], n)
+    }
+}
+EOF_PRISM
+ok=0
+while read -r l want got; do
+    tap_comment "prism, $l nm: row $got, Snell's law: $want"
+    within "$got" "$want" 1.5 || ok=1
+done <"$tmp/prism.out"
+tap_result $ok "prism: the 610/545/435 nm spots within 1.5 rows of Snell's law"
+set -- $(awk '{ printf "%s ", $3 }' "$tmp/prism.out")
+tap_ok "prism: red deviated least, blue most ($1 < $2 < $3)" \
+    awk -v r="$1" -v g="$2" -v b="$3" 'BEGIN { exit !(r < g && g < b) }'
+
+# The other dispersion laws through the command line: the same prism
+# (scenes/prism_spectrum.pov, Declare=LAW) with POV-Ray's 'ior 1.62
+# dispersion 1.03', 'cauchy 1.60, 0.008', 'abbe 1.62, 30' and
+# 'ior_decay 1.66, 1.61, 100', each line's spot predicted by the same
+# Snell's law trace with n from the law's formula (optics.awk). The laws
+# were chosen to spread the lines over 120-150 rows, as F2 does, so one
+# row is still an index error of about 1e-4 to 2e-4 and a law with a
+# wrong exponent, wavelength unit or Fraunhofer line misses by tens of
+# rows. Tolerance 1.5 rows, as for F2 and for the same reason (F11's
+# continuum pulls the blue spot towards the red). Measured offsets over
+# three seeds: 435 nm -0.55..-1.04 rows, 545 nm +0.02..+0.38, 610 nm
+# -0.24..-0.80.
+for law in 1 2 3 4; do
+    "$IRIS" -q "$scenes/prism_spectrum.pov" Declare=LAW=$law +W10 +H240 \
+        -o "$tmp/prism$law.exr"
+    "$probe" rows "$tmp/prism$law.exr" 0 9 >"$tmp/prism$law.rows"
+    awk -v law=$law -f "$lib" -f /dev/stdin "$tmp/prism$law.rows" \
+        >"$tmp/prism$law.out" <<'EOF_LAW'
+{ PROF[$1, 2] = $2; PROF[$1, 3] = $3; PROF[$1, 4] = $4; n = NR }
+END {
+    split("610.69 544.89 435.31", line, " "); split("2 3 4", col, " ")
+    for (k = 1; k <= 3; k++) {
+        l = line[k]
+        ior = law == 1 ? n_povdisp(1.62, 1.03, l) : \
+              law == 2 ? n_cauchy(1.60, 0.008, l) : \
+              law == 3 ? n_abbe(1.62, 30, l) : n_decay(1.66, 1.61, 100, l)
+        y = prism_y(ior, -4.154, -0.562, 3.654, 1.628, 4)
+        printf "%s %.5f %.2f %.2f\n", l, ior, (-0.40 - y) / 0.0015 - 0.5, \
+            peak_row(col[k], n)
+    }
+}
+EOF_LAW
+    ok=0
+    while read -r l ior want got; do
+        tap_comment "law $law, $l nm (n = $ior): row $got, Snell's law: $want"
+        within "$got" "$want" 1.5 || ok=1
+    done <"$tmp/prism$law.out"
+    name=$(echo "x dispersion cauchy abbe ior_decay" | cut -d' ' -f$((law + 1)))
+    tap_result $ok "prism with '$name': the 610/545/435 nm spots within 1.5 rows"
+done
+
+# ---------------------------------------------------------------------
+# 9. Chromatic aberration of camera rays (scenes/fringe.pov): a thin
+# glowing white line seen through the F2 prism of check 8. Camera rays
+# split into wavelengths at the glass (DESIGN.md) and each sees the line
+# where Snell's law at n(lambda) takes it; rows run along the camera's
+# up s from 0.24 (top edge) by 0.0015. Prediction: the ray landing on the
+# line's centre y = -0.55 for each wavelength (1 nm steps), weighted by
+# what a white line sends to the luminance through that wavelength, D65 x
+# ybar (data/; the line's colour 1 is D65 white), over the magnification
+# of the beam (the rows one wavelength's image covers): the luminance
+# centroid and spread of the line's image. Luminance is linear in the
+# wavelength samples (the out-of-gamut colours of single wavelengths are
+# mapped keeping Y), so centroids compare directly. Tolerances: the
+# centroid 1.2 rows, the spread 3% (seeds 0..6: 169.63..170.93, sd 0.45,
+# and 20.72..20.99; 64 wavelengths a ray). The centroid's error is one
+# offset for the whole image, not per ray: four times the columns left
+# it unchanged (seed 4: 169.67 and 169.61), so the wavelength samples'
+# error is shared by all the pixels of a render. Without dispersion (PLAIN = 1,
+# n = 1.62) the line is seen sharp where the trace puts it (0.5 rows: the
+# line covers 2.4 rows).
+"$IRIS" -q "$scenes/fringe.pov" Declare=PLAIN=1 +W10 +H240 \
+    -o "$tmp/fringe0.exr"
+"$IRIS" -q "$scenes/fringe.pov" +W10 +H240 -o "$tmp/fringe.exr"
+"$probe" rows "$tmp/fringe0.exr" 0 9 >"$tmp/fringe0.rows"
+"$probe" rows "$tmp/fringe.exr" 0 9 >"$tmp/fringe.rows"
+awk -F'[, ]' -f "$lib" -f /dev/stdin "$top_srcdir/data/cie1931_2deg_cmf.csv" \
+    "$top_srcdir/data/cie_d65.csv" "$tmp/fringe0.rows" "$tmp/fringe.rows" \
+    >"$tmp/fringe.out" <<'EOF_FRINGE'
+FNR == 1 { file++ }
+file == 1 && FNR > 1 { YB[$1 + 0] = $3 }
+file == 2 && FNR > 1 { D65[$1 + 0] = $2 }
+file >= 3 {
+    y = rgb_xy($2, $3, $4)
+    W[file] += y; M[file] += y * $1; M2[file] += y * $1 * $1
+    if (file == 4)
+        for (c = 2; c <= 4; c++) { CW[c] += $c; CM[c] += $c * $1 }
+}
+END {
+    row0 = (0.24 - fringe_s(1.62, -0.55)) / 0.0015 - 0.5
+    for (l = 380; l <= 780; l++) {
+        n = n_f2(l); s = fringe_s(n, -0.55)
+        m = 0.001 / (fringe_s(n, -0.549) - s)   # the beam's magnification
+        w = D65[l] * YB[l] / m; r = (0.24 - s) / 0.0015 - 0.5
+        pw += w; pm += w * r; pm2 += w * r * r
+    }
+    pm /= pw; ps = sqrt(pm2 / pw - pm * pm)
+    m3 = M[3] / W[3]; m4 = M[4] / W[4]; s4 = sqrt(M2[4] / W[4] - m4 * m4)
+    printf "%.3f %.3f %.3f %.3f %.3f %.3f %.2f %.2f %.2f\n", m3, row0, \
+        m4, pm, s4, ps, CM[2] / CW[2], CM[3] / CW[3], CM[4] / CW[4]
+}
+EOF_FRINGE
+read -r m0 p0 m pm s ps r g b <"$tmp/fringe.out"
+tap_ok "camera rays, n = 1.62 fixed: the line at row $m0 (Snell: $p0)" \
+    within "$m0" "$p0" 0.5
+tap_ok "camera rays through F2: luminance centroid row $m (predicted $pm)" \
+    within "$m" "$pm" 1.2
+tap_ok "camera rays through F2: spread $s rows (predicted $ps)" \
+    within "$s" "$ps" "$(calc "print $ps * 0.03")"
+tap_ok "camera rays: red seen least deviated, blue most (rows R $r > G $g > B $b)" \
+    awk -v r="$r" -v g="$g" -v b="$b" 'BEGIN { exit !(r > g && g > b) }'
+
+# ---------------------------------------------------------------------
+# 10. The caustic of a glass ball (scenes/ball_caustic.pov): a clear ball
+# (radius 1, n = 1.5) in a parallel light from above, the floor 0.1 below
+# it. The prediction is a fan of rays traced with Snell's law and Fresnel
+# (optics.awk: ball_x). First its own check: a ray 1e-4 off the axis
+# crosses it at the ball lens's paraxial focus, n R / (2 (n - 1)) = 1.5
+# from the centre, to 1e-6.
+set -- $(calc 'x = ball_x(1e-4, 1.5, -1.1); printf "%.7f\n", PY - PX * DY / DX')
+tap_ok "ball prediction: the paraxial ray crosses the axis at y = $1 (-1.5)" \
+    within "$1" -1.5 1e-6
+# The floor before the focus: spherical aberration folds the zones beyond
+# b = 0.62 back towards the axis, so the light inside the fold radius
+# (0.1209) is bright and a ring of caustic edges it, with only the
+# crossed outer zones' faint light beyond. The image (200 x 200, 0.002 a
+# pixel, centred on the axis) is read as a radial profile, one ring of
+# pixels a bin. (a) The ring: the profile's peak in bins 45..75, refined
+# by a parabola, within 2 bins (0.004) of the fold radius. The photon
+# gather blurs the fold over its radius (about 3 bins here) and the
+# blurred peak sits inside the edge: 59.28 against 60.45 over three
+# seeds (the same to 0.01 bin). An index 1% off moves the ring 5 bins.
+# (b) The mean irradiance inside rho < 0.1 (well inside the fold: the
+# gather's leak across 0.1 is symmetric there): the fan binned, with
+# Fresnel, gives 40.454 times the light's (47.41 without Fresnel).
+# Three seeds gave 40.12, 40.53, 40.45; tolerance 2% (the zones' photon
+# counts, roulette at two faces).
+"$IRIS" -q "$scenes/ball_caustic.pov" +W200 +H200 -o "$tmp/ball.exr"
+"$probe" radial "$tmp/ball.exr" 100 >"$tmp/ball.rad"
+awk -f "$lib" -f /dev/stdin "$tmp/ball.rad" >"$tmp/ball.out" <<'EOF_BALL'
+{ Y = rgb_xy($2, $3, $4); P[$1] = Y
+  if ($1 < 50) { s += Y * (2 * $1 + 1); a += 2 * $1 + 1 }
+  if ($1 >= 45 && $1 <= 75 && Y > m) { m = Y; pk = $1 } }
+END {
+    y0 = P[pk - 1]; y1 = P[pk]; y2 = P[pk + 1]
+    printf "%.2f %.2f %.3f %.3f\n", \
+        pk + 0.5 + 0.5 * (y0 - y2) / (y0 - 2 * y1 + y2), \
+        ball_fold(1.5, -1.1) / 0.002, s / a, ball_mean(1.5, -1.1, 0, 0.1)
+}
+EOF_BALL
+read -r ring pring disc pdisc <"$tmp/ball.out"
+tap_ok "ball caustic: ring at $ring px, the fan's fold at $pring px" \
+    within "$ring" "$pring" 2
+tap_ok "ball caustic: irradiance $disc inside rho 0.1, fan with Fresnel $pdisc" \
+    within "$disc" "$pdisc" "$(calc "print $pdisc * 0.02")"
+# ---------------------------------------------------------------------
+# 12. Dispersion undone (scenes/prism_pair.pov): a white (D65) beam 0.2
+# wide through the F2 prism of check 8 and a second, inverted one whose
+# faces are parallel to the first's (a parallel plate split by a 0.1 air
+# gap): every wavelength leaves along the beam's direction, shifted
+# sideways by at most 0.033, so the middle of the spot on the wall
+# (columns 5..14, rows 13..26: 0.02 inside every wavelength's footprint)
+# gets all wavelengths in the light's proportions, times the four faces'
+# unpolarised Fresnel transmittance T(lambda) (pair_y traces each
+# wavelength, 1 nm steps; the prisms reflect no photons). Predicted: the
+# light's chromaticity weighted by T, (0.31497, 0.33143) (D65 itself is
+# (0.31274, 0.32905): the faces lose more blue), and luminance T cos 24
+# (the wall is met at 24 degrees) = 0.63649. Photons carry one wavelength
+# each, so the window's colour is noisy: eight seeds gave x 0.3153 +-
+# 0.0016, y 0.3322 +- 0.0030 (sd), Y 0.6370 +- 0.0095. Tolerances
+# 0.008 in x and y (2.7 sd of y, 2.4% of y) and 4% in Y.
+"$IRIS" -q "$scenes/prism_pair.pov" +W20 +H40 -o "$tmp/pair.exr"
+"$probe" mean "$tmp/pair.exr" 5 13 14 26 >"$tmp/pair.rgb"
+awk -F'[, ]' -f "$lib" -f /dev/stdin "$top_srcdir/data/cie1931_2deg_cmf.csv" \
+    "$top_srcdir/data/cie_d65.csv" "$tmp/pair.rgb" >"$tmp/pair.out" <<'EOF_PAIR'
+FNR == 1 { file++ }
+file == 1 && FNR > 1 { XB[$1 + 0] = $2; YB[$1 + 0] = $3; ZB[$1 + 0] = $4 }
+file == 2 && FNR > 1 { D65[$1 + 0] = $2 }
+file == 3 { Y = rgb_xy($1, $2, $3); x = CX; y = CY }
+END {
+    for (l = 380; l <= 780; l++) {
+        pair_y(n_f2(l), -4.154, -0.562, 3.654, 1.628, 0.1, 6)
+        X += D65[l] * XB[l] * PAIR_T; Yt += D65[l] * YB[l] * PAIR_T
+        Z += D65[l] * ZB[l] * PAIR_T; Y0 += D65[l] * YB[l]
+    }
+    printf "%.5f %.5f %.5f %.5f %.5f %.5f\n", x, y, Y, X / (X + Yt + Z), \
+        Yt / (X + Yt + Z), Yt / Y0 * 3.654 / sqrt(3.654 ^ 2 + 1.628 ^ 2)
+}
+EOF_PAIR
+read -r px py pY ex ey eY <"$tmp/pair.out"
+tap_ok "prism pair: the recombined beam is white, xy ($px, $py) = ($ex, $ey)" \
+    within_xy "$px" "$py" "$ex" "$ey" 0.008
+tap_ok "prism pair: its luminance $pY = four faces' Fresnel $eY" \
+    within "$pY" "$eY" "$(calc "print $eY * 0.04")"
+
+# ---------------------------------------------------------------------
+# 11. Light falloff, measured in the image (scenes/light_falloff.pov): a
+# white floor 1 below the light, one ray a pixel through the centres
+# z = 2 - 0.02 (r + 0.5) (row r), x = 0.01 (column 2). The floor shows
+# the light's attenuation times Lambert's cos = 1/d (d the distance to
+# the light; a white diffuse surface shows a Y = 1 light as 1,
+# DESIGN.md). POV-Ray's formulas (povray-3.7-semantics.md): a point light
+# with fade_distance 1, fade_power 2 attenuates by 2/(1 + (d/1)^2) (the
+# inverse square far away, 1 at the light's foot); a spotlight of radius
+# 20, falloff 40, tightness 5 (degrees) by k^5, k the cosine from its
+# axis, times s = 3t^2 - 2t^3, t = (k - cos 40)/(cos 20 - cos 40),
+# outside the radius, 0 beyond the falloff. No noise: all 200 rows
+# within 1e-5 (float output).
+for light in 1 2; do
+    "$IRIS" -q "$scenes/light_falloff.pov" Declare=LIGHT=$light +W4 +H200 \
+        -o "$tmp/falloff$light.exr"
+    "$probe" rows "$tmp/falloff$light.exr" 2 2 >"$tmp/falloff$light.rows"
+    awk -v light=$light -f "$lib" -f /dev/stdin "$tmp/falloff$light.rows" \
+        >"$tmp/falloff$light.out" <<'EOF_FALLOFF'
+{
+    z = 2 - ($1 + 0.5) * 0.02; d2 = 1 + z * z + 0.01 ^ 2; k = 1 / sqrt(d2)
+    if (light == 1)
+        a = 2 / (1 + d2)
+    else {
+        cr = cos(20 * atan2(1, 1) / 45); cf = cos(40 * atan2(1, 1) / 45)
+        a = k ^ 5; t = (k - cf) / (cr - cf)
+        if (k < cr) a *= t <= 0 ? 0 : 3 * t * t - 2 * t * t * t
+    }
+    d = rgb_xy($2, $3, $4) - a * k; if (d < 0) d = -d
+    if (d > worst) { worst = d; wz = z }
+    n++
+}
+END { printf "%d %.2g %.2f\n", n, worst, wz }
+EOF_FALLOFF
+    read -r n worst wz <"$tmp/falloff$light.out"
+    name=$([ $light = 1 ] && echo "point light, fade_power 2" ||
+        echo "spotlight radius 20, falloff 40, tightness 5")
+    tap_ok "$name: $n rows within 1e-5 of POV-Ray's formula (worst $worst at z = $wz)" \
+        within "$worst" 0 1e-5
+done
+exit $((tap_failed > 0))

@@ -1,0 +1,47 @@
+// SPDX-License-Identifier: MIT
+// prism_spectrum.pov (tests/optics/optics.sh, check "prism"): an
+// equilateral SCHOTT F2 prism (apex up, axis along z) spreads a narrow
+// beam (a cylinder light of radius 0.005, rising at 24 degrees: about
+// the minimum deviation) into a spectrum on the wall x = 4. The light is
+// the CIE F11 lamp: its emission lines land as three bright spots, where
+// the test's Snell's-law trace puts them.
+#version 3.7;
+#ifndef (LAW) #declare LAW = 0; #end
+global_settings {
+  assumed_gamma 1
+  max_trace_level 10
+  photons { spacing 0.00002 autostop 0 }
+}
+// looking at the wall, y in [-0.76, -0.40], z in [-0.01, 0.01]: image
+// rows run along y (top row +y), 0.0015 a row
+camera { orthographic location <3.5, -0.58, 0> direction <1, 0, 0>
+  right <0, 0, 0.02> up <0, 0.36, 0> }
+light_source { <-4.154, -0.562, 0> color rgb 1
+  cylinder point_at <-0.5, 1.066, 0> radius 0.005 falloff 0.005 tightness 0
+  photons { refraction on reflection off }
+  #ifdef (iris_version) spectrum "F11" #end
+}
+box { <4, -3, -1>, <4.1, 3, 1>
+  pigment { color rgb 1 } finish { ambient 0 diffuse 1 } }
+prism { linear_sweep linear_spline -1.5, 1.5, 4,
+  <-1, 0>, <1, 0>, <0, 1.732>, <-1, 0>
+  rotate -90 * x
+  translate <0, 0.2, 0>
+  pigment { color rgbf <1, 1, 1, 1> }
+  finish { ambient 0 diffuse 0 }
+  // LAW (Declare=LAW=k, check "dispersion laws"): 0 SCHOTT F2's
+  // Sellmeier curve, 1 POV-Ray's ior/dispersion, 2 Cauchy, 3 Abbe,
+  // 4 the exponential ior_decay
+  interior { ior 1.62
+    #ifdef (iris_version)
+      #switch (LAW)
+        #case (0) glass "F2" #break
+        #case (1) dispersion 1.03 #break
+        #case (2) cauchy 1.60, 0.008 #break
+        #case (3) abbe 1.62, 30 #break
+        #case (4) ior_decay 1.66, 1.61, 100 #break
+      #end
+    #end
+  }
+  photons { target refraction on reflection off collect off }
+}
