@@ -73,6 +73,32 @@ struct geom_profile {
     double h1, h2;             /* extrusion range (prism: y, text: z) */
     bool conic;                /* prism conic_sweep */
     bool open;                 /* prism 'open': no caps */
+    /*
+    ** The exact curve a straight segment stands in for (lathe and sor),
+    ** so that a crossing found on the segment can be moved onto the
+    ** curve: curve[i] indexes curves[] (-1: the segment is exact), and
+    ** the segment spans the curve's parameter cs0[i] .. cs1[i].
+    */
+    int *curve;
+    double *cs0, *cs1;
+    struct geom_curve *curves;
+    int n_curves, cap_curves;
+};
+
+/*
+** One spline segment of a profile. GEOM_CURVE_POLY: the point
+** (u, v)(s) = c[0] s³ + c[1] s² + c[2] s + c[3] for s in [0, 1] (lathe).
+** GEOM_CURVE_SOR: r² = c[0].u h³ + c[1].u h² + c[2].u h + c[3].u with
+** h = (y - y0) / dy in [0, 1] (sor); 's' is h.
+*/
+enum { GEOM_CURVE_POLY, GEOM_CURVE_SOR };
+struct geom_curve {
+    int kind;
+    iris_vec2 c[4];
+    double y0, dy;
+    int first, n;     /* its pieces first .. first+n-1 (profile_finish) */
+    double vlo, vhi;  /* heights and largest |radius| of those pieces */
+    double umax;
 };
 
 /*

@@ -11,8 +11,9 @@
 ** estimate (never shorter than 1/precision) until inside/outside flips;
 ** the crossing is then bisected to 1e-12 of the bounding radius (POV-Ray
 ** stops at 1e-7, which a secondary ray started accel_epsilon() away would
-** find again). Normals are the gradient of |q_n|² through the iteration's
-** Jacobian, as POV-Ray computes them. A caller that keeps only the
+** find again). Normals are the gradient of |q_n|² through the Jacobian
+** of all the iterations at the inside end of the crossing, as POV-Ray
+** computes them. A caller that keeps only the
 ** nearest crossing (isect_list.first_only) gets the first one and the
 ** march stops there, as POV-Ray's does for an object outside CSG.
 **
@@ -374,19 +375,26 @@ done:
     hstack_fini(&st);
 }
 
-/* Gradient of |q_n|² with respect to p, through the Jacobian of the map. */
+/*
+** POV-Ray's quaternion normal (quatern.cpp's CalcNormal): the gradient of
+** |q_n|² through the Jacobian of all max_iteration steps, taken at the
+** inside end of the crossing (where every step is defined), with the
+** Jacobian starting at the identity on (x, y, z): the slice's dependence
+** of w on x, y, z is left out, as POV-Ray leaves it out. Taking the
+** gradient at the outside end up to the escaping step instead gave
+** objects/fractal1 29.4 dB diffuse-only against POV-Ray.
+*/
 static vec3 julia_normal(const struct jset *j, vec3 p)
 {
     double q[4], J[3][4];
     lift(j, p, q);
-    for (int a = 0; a < 3; a++) {
+    for (int a = 0; a < 3; a++)
         for (int k = 0; k < 4; k++)
             J[a][k] = a == k ? 1 : 0;
-        J[a][3] = -j->s[a] / j->s[3];
-    }
     for (int i = 1; i <= j->iters; i++) {
         double n2 = q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3];
-        if (n2 > j->exit2)
+        /* Not reached from an inside point; guards against overflow */
+        if (!(n2 < 1e150))
             break;
         double q2[4];
         qmul(q, q, q2);
@@ -495,8 +503,8 @@ void geom_julia_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
                 else
                     hi = m;
             }
-            /* The normal is taken on the outside of the crossing */
-            vec3 n = julia_normal(&j, v3_madd(ro, d, in ? hi : lo));
+            /* The normal is taken on the inside of the crossing */
+            vec3 n = julia_normal(&j, v3_madd(ro, d, in ? lo : hi));
             double th = 0.5 * (lo + hi);
             if (th > t0 * dl && th < t1 * dl) {
                 int had = out->n;

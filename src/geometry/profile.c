@@ -6,7 +6,12 @@
 ** segment) with POV-Ray's segment polynomials, keeping the spline's own
 ** tangent at each end so that normals stay smooth. Which side of each
 ** segment is outside is decided once here with the even-odd rule, probing
-** a point just beside the segment's midpoint.
+** a point just beside the segment's midpoint. Lathe and sor pieces also
+** keep the exact curve they stand for (struct geom_curve): sweep.c
+** intersects and inside-tests those curves exactly, as POV-Ray does, and
+** uses the pieces only for bounds and to orient normals; so do prisms
+** with a linear sweep. Text outlines (and conic prisms) are the pieces
+** themselves.
 */
 #include "config.h"
 
@@ -19,7 +24,8 @@
 
 /* Straight pieces per spline segment: the chord of a segment of a smooth
 ** spline deviates from the curve by about (1/SEG_STEPS)² / 8 of its size,
-** 5e-4 for 16 steps, below a pixel for typical framings. */
+** 5e-4 for 16 steps (the prism's error; lathe and sor bounds are padded
+** by it). */
 #define SEG_STEPS 16
 
 struct geom_profile *geom_profile_new(int cap)
@@ -34,8 +40,12 @@ struct geom_profile *geom_profile_new(int cap)
     p->ta = iris_calloc((size_t)cap, sizeof *p->ta);
     p->tb = iris_calloc((size_t)cap, sizeof *p->tb);
     p->side = iris_calloc((size_t)cap, 1);
+    p->curve = iris_calloc((size_t)cap, sizeof *p->curve);
+    p->cs0 = iris_calloc((size_t)cap, sizeof *p->cs0);
+    p->cs1 = iris_calloc((size_t)cap, sizeof *p->cs1);
     p->cap = cap;
-    if (!p->a || !p->b || !p->ta || !p->tb || !p->side) {
+    if (!p->a || !p->b || !p->ta || !p->tb || !p->side || !p->curve ||
+        !p->cs0 || !p->cs1) {
         geom_profile_free(p);
         return NULL;
     }
@@ -51,6 +61,10 @@ void geom_profile_free(struct geom_profile *p)
     iris_free(p->ta);
     iris_free(p->tb);
     iris_free(p->side);
+    iris_free(p->curve);
+    iris_free(p->cs0);
+    iris_free(p->cs1);
+    iris_free(p->curves);
     iris_free(p->group_first);
     iris_free(p->group_count);
     iris_free(p->group_lo);
@@ -80,7 +94,10 @@ bool geom_profile_add_curved(struct geom_profile *p, iris_vec2 a, iris_vec2 b,
             !grow((void **)&p->b, cap, sizeof *p->b) ||
             !grow((void **)&p->ta, cap, sizeof *p->ta) ||
             !grow((void **)&p->tb, cap, sizeof *p->tb) ||
-            !grow((void **)&p->side, cap, 1))
+            !grow((void **)&p->side, cap, 1) ||
+            !grow((void **)&p->curve, cap, sizeof *p->curve) ||
+            !grow((void **)&p->cs0, cap, sizeof *p->cs0) ||
+            !grow((void **)&p->cs1, cap, sizeof *p->cs1))
             return false;
         p->cap = (int)cap;
     }
@@ -88,7 +105,39 @@ bool geom_profile_add_curved(struct geom_profile *p, iris_vec2 a, iris_vec2 b,
     p->b[p->n_seg] = b;
     p->ta[p->n_seg] = ta;
     p->tb[p->n_seg] = tb;
+    p->curve[p->n_seg] = -1;
+    p->cs0[p->n_seg] = p->cs1[p->n_seg] = 0;
     p->n_seg++;
+    return true;
+}
+
+/* Adds curve 'c' to 'p'; returns its index, or -1 out of memory. */
+static int add_curve(struct geom_profile *p, const struct geom_curve *c)
+{
+    if (p->n_curves == p->cap_curves) {
+        size_t cap = p->cap_curves ? (size_t)p->cap_curves * 2 : 8;
+        if (!grow((void **)&p->curves, cap, sizeof *p->curves))
+            return -1;
+        p->cap_curves = (int)cap;
+    }
+    p->curves[p->n_curves] = *c;
+    return p->n_curves++;
+}
+
+/* Adds the straight piece a..b standing in for curve 'ci' over its
+** parameters s0..s1. */
+static bool add_piece(struct geom_profile *p, iris_vec2 a, iris_vec2 b,
+                      iris_vec2 ta, iris_vec2 tb, int ci, double s0,
+                      double s1)
+{
+    int had = p->n_seg;
+    if (!geom_profile_add_curved(p, a, b, ta, tb))
+        return false;
+    if (p->n_seg > had) {
+        p->curve[had] = ci;
+        p->cs0[had] = s0;
+        p->cs1[had] = s1;
+    }
     return true;
 }
 
@@ -161,6 +210,25 @@ void geom_profile_finish(struct geom_profile *p)
             p->hi.u = fmax(p->hi.u, hi.u);
             p->hi.v = fmax(p->hi.v, hi.v);
         }
+    }
+    /* Each curve's pieces and their extent, for the ray's quick tests */
+    for (int i = 0; i < p->n_seg; i++) {
+        if (p->curve[i] < 0)
+            continue;
+        struct geom_curve *c = &p->curves[p->curve[i]];
+        double vlo = fmin(p->a[i].v, p->b[i].v);
+        double vhi = fmax(p->a[i].v, p->b[i].v);
+        double um = fmax(fabs(p->a[i].u), fabs(p->b[i].u));
+        if (c->n == 0) {
+            c->first = i;
+            c->vlo = vlo;
+            c->vhi = vhi;
+            c->umax = um;
+        }
+        c->n = i + 1 - c->first;
+        c->vlo = fmin(c->vlo, vlo);
+        c->vhi = fmax(c->vhi, vhi);
+        c->umax = fmax(c->umax, um);
     }
     /* Outward side: probe beside each midpoint, 1e-7 of the segment length
     ** away (far below any feature, far above rounding) */
@@ -247,12 +315,20 @@ static bool add_spline(struct geom_profile *p, enum iris_spline sp,
         iris_vec2 c[4];
         seg_coeffs(sp, pts, k * step, c);
         int steps = sp == IRIS_SPLINE_LINEAR ? 1 : SEG_STEPS;
+        int ci = -1;
+        if (sp != IRIS_SPLINE_LINEAR) {
+            struct geom_curve cv = { .kind = GEOM_CURVE_POLY };
+            memcpy(cv.c, c, sizeof cv.c);
+            if ((ci = add_curve(p, &cv)) < 0)
+                return false;
+        }
         iris_vec2 a, ta;
         seg_eval(c, 0, &a, &ta);
         for (int j = 1; j <= steps; j++) {
             iris_vec2 b, tb;
             seg_eval(c, (double)j / steps, &b, &tb);
-            if (!geom_profile_add_curved(p, a, b, ta, tb))
+            if (!add_piece(p, a, b, ta, tb, ci, (double)(j - 1) / steps,
+                           (double)j / steps))
                 return false;
             a = b;
             ta = tb;
@@ -283,6 +359,15 @@ static bool add_sor(struct geom_profile *p, const iris_object *o)
                     (P[i + 3].v - P[i + 1].v);
         /* Hermite cubic in h = (y - y1)/(y2 - y1) */
         double dy = y2 - y1;
+        /* The same cubic by powers of h, for the exact crossing */
+        struct geom_curve cv = { .kind = GEOM_CURVE_SOR, .y0 = y1, .dy = dy };
+        cv.c[0].u = 2 * k0 + dy * s0 - 2 * k1 + dy * s1;
+        cv.c[1].u = -3 * k0 - 2 * dy * s0 + 3 * k1 - dy * s1;
+        cv.c[2].u = dy * s0;
+        cv.c[3].u = k0;
+        int ci = add_curve(p, &cv);
+        if (ci < 0)
+            return false;
         iris_vec2 prev = { 0, 0 }, prev_t = { 0, 0 };
         for (int j = 0; j <= SEG_STEPS; j++) {
             double h = (double)j / SEG_STEPS;
@@ -296,7 +381,8 @@ static bool add_sor(struct geom_profile *p, const iris_object *o)
             iris_vec2 pt = { r, y1 + h * dy };
             /* d r / d y = f' / (2 r); tangent (dr/dy, 1) */
             iris_vec2 tn = { r > 0 ? df / (2 * r) : 0, 1 };
-            if (j > 0 && !geom_profile_add_curved(p, prev, pt, prev_t, tn))
+            if (j > 0 && !add_piece(p, prev, pt, prev_t, tn, ci,
+                                    (double)(j - 1) / SEG_STEPS, h))
                 return false;
             prev = pt;
             prev_t = tn;
@@ -324,11 +410,19 @@ static bool add_segment(struct geom_profile *p, enum iris_spline sp,
     iris_vec2 c[4], a, ta;
     seg_coeffs(sp, P, i, c);
     int steps = sp == IRIS_SPLINE_LINEAR ? 1 : SEG_STEPS;
+    int ci = -1;
+    if (sp != IRIS_SPLINE_LINEAR) {
+        struct geom_curve cv = { .kind = GEOM_CURVE_POLY };
+        memcpy(cv.c, c, sizeof cv.c);
+        if ((ci = add_curve(p, &cv)) < 0)
+            return false;
+    }
     seg_eval(c, 0, &a, &ta);
     for (int j = 1; j <= steps; j++) {
         iris_vec2 b, tb;
         seg_eval(c, (double)j / steps, &b, &tb);
-        if (!geom_profile_add_curved(p, a, b, ta, tb))
+        if (!add_piece(p, a, b, ta, tb, ci, (double)(j - 1) / steps,
+                       (double)j / steps))
             return false;
         a = b;
         ta = tb;

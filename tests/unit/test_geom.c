@@ -7,6 +7,7 @@
 
 #include "testutil.h"
 
+#include <math.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <string.h>
@@ -797,9 +798,16 @@ static void test_conic_prism(void **state)
     geom_profile_free(p);
 }
 
-/* Quadratic-spline lathe through (2,-1), (1,0), (2,1): POV-Ray's segment
+/*
+** Quadratic-spline lathe through (2,-1), (1,0), (2,1): POV-Ray's segment
 ** polynomial between the last two points is r = 1 + y², y in [0, 1].
-** Flattened to 16 chords, the radius is within (1/16)²/8·2 < 1e-3. */
+** POV-Ray intersects the exact curve (lathe.cpp), so radii and normals
+** must match it to rounding: 1e-12 on values of order 1 (the chords iris
+** once used were off by up to 1e-3, and their interpolated normals by
+** 2e-2). Oblique rays (a polynomial of degree 4 in s here) must land on
+** the curve too, and the inside test must follow the curve, not a chord,
+** 1e-7 either side of it.
+*/
 static void test_spline_lathe(void **state)
 {
     (void)state;
@@ -815,10 +823,144 @@ static void test_spline_lathe(void **state)
     for (double y = 0.1; y < 1; y += 0.2) {
         int n = hits(&l, p, v3(-5, y, 0), v3(1, 0, 0), h, 8);
         assert_int_equal(n, 2);
-        assert_near(5 - h[0].t, 1 + y * y, 1e-3);
-        /* The smooth normal follows the curve: (1, -dr/dy) = (1, -2y) */
+        assert_near(5 - h[0].t, 1 + y * y, 1e-12);
+        /* The normal follows the curve: (1, -dr/dy) = (1, -2y) */
         vec3 want = v3_norm(v3(-1, -2 * y, 0));
-        assert_dir(h[0].n, want, 2e-2);
+        assert_dir(h[0].n, want, 1e-12);
+        assert_true(geom_inside(&l, p, v3(1 + y * y - 1e-7, y, 0)));
+        assert_false(geom_inside(&l, p, v3(1 + y * y + 1e-7, y, 0)));
+    }
+    /* Nearly horizontal rays (the sextic's root pairs almost merge):
+    ** still both walls, on the curve */
+    double dys[4] = { 1e-3, 1e-5, 1e-7, 1e-10 };
+    for (int k = 0; k < 4; k++) {
+        vec3 dir = v3(1, dys[k], 0.1), ro = v3(-5, 0.5, -0.5);
+        int n = hits(&l, p, ro, dir, h, 8);
+        assert_int_equal(n, 2);
+        for (int i = 0; i < 2; i++) {
+            vec3 q = v3_madd(ro, dir, h[i].t);
+            assert_near(sqrt(q.x * q.x + q.z * q.z), 1 + q.y * q.y, 1e-12);
+        }
+    }
+    /* Oblique rays: every crossing lies on r = 1 + y², 0 <= y < 1 (each
+    ** enters the side and leaves by an open end, or crosses twice) */
+    vec3 dirs[3] = { v3(1, 0.3, 0.2), v3(1, -0.05, 0.4), v3(1, 0.1, -0.3) };
+    for (int k = 0; k < 3; k++) {
+        vec3 ro = v3_madd(v3(0, 0.5, 0), dirs[k], -6);
+        int n = hits(&l, p, ro, dirs[k], h, 8);
+        assert_true(n >= 1);
+        for (int i = 0; i < n && i < 8; i++) {
+            vec3 q = v3_madd(ro, dirs[k], h[i].t);
+            assert_near(sqrt(q.x * q.x + q.z * q.z), 1 + q.y * q.y, 1e-12);
+        }
+    }
+    geom_profile_free(p);
+}
+
+/*
+** sor through (1,-1), (1,0), (2,1), (2,2): POV-Ray's sor (sor.cpp, the
+** documentation's definition) makes r² a cubic in y between the middle
+** points with the slopes d(r²)/dy = 2 r_i (r_(i+1) - r_(i-1)) /
+** (y_(i+1) - y_(i-1)) at them: 1 at y = 0 and 2 at y = 1, so r² =
+** 1 + y + 5y² - 3y³ (Hermite: values 1 and 4, slopes 1 and 2). Crossings
+** lie on it to rounding (1e-12) for horizontal and oblique rays, and the
+** inside test follows it 1e-7 either side.
+*/
+static void test_sor_exact(void **state)
+{
+    (void)state;
+    iris_vec2 sp[4] = { { 1, -1 }, { 1, 0 }, { 2, 1 }, { 2, 2 } };
+    iris_object s = mk(IRIS_OBJ_SOR);
+    s.u.lathe.n_points = 4;
+    s.u.lathe.points = sp;
+    s.open = true;
+    const char *why;
+    struct geom_profile *p = geom_prepare(&s, &why);
+    assert_non_null(p);
+    struct geom_isect h[8];
+    for (double y = 0.05; y < 1; y += 0.15) {
+        double r = sqrt(1 + y + 5 * y * y - 3 * y * y * y);
+        assert_int_equal(hits(&s, p, v3(-5, y, 0), v3(1, 0, 0), h, 8), 2);
+        assert_near(5 - h[0].t, r, 1e-12);
+        /* normal of r² - f(y): (2r, -f'(y)) */
+        vec3 want = v3_norm(v3(-2 * r, -(1 + 10 * y - 9 * y * y), 0));
+        assert_dir(h[0].n, want, 1e-12);
+        assert_true(geom_inside(&s, p, v3(0, y, r - 1e-7)));
+        assert_false(geom_inside(&s, p, v3(0, y, r + 1e-7)));
+    }
+    vec3 dirs[2] = { v3(1, 0.2, 0.3), v3(1, 0.15, -0.5) };
+    for (int k = 0; k < 2; k++) {
+        vec3 ro = v3_madd(v3(0, 0.5, 0), dirs[k], -6);
+        int n = hits(&s, p, ro, dirs[k], h, 8);
+        assert_true(n >= 1);
+        for (int i = 0; i < n && i < 8; i++) {
+            vec3 q = v3_madd(ro, dirs[k], h[i].t);
+            double y = q.y;
+            assert_near(q.x * q.x + q.z * q.z,
+                        1 + y + 5 * y * y - 3 * y * y * y, 1e-11);
+        }
+    }
+    geom_profile_free(p);
+}
+
+/*
+** A cubic_spline prism (linear sweep, heights 0..1) through (0,-2),
+** (-2,0), (0,2), (2,0): its walls are POV-Ray's Catmull-Rom segments,
+** p(s) = ½[(-s³+2s²-s) P0 + (3s³-5s²+2) P1 + (-3s³+4s²+s) P2 +
+** (s³-s²) P3] (the documentation's basis, written here independently of
+** profile.c's coefficient matrix). A ray along x at z = v meets the wall
+** where v(s) = v (found here by bisection): the crossing must be on the
+** curve to 1e-12 (chords were off by up to 1e-3), and the inside test
+** must flip within 1e-7 of it.
+*/
+static void cr_point(const iris_vec2 *P, double s, double *u, double *v)
+{
+    double b0 = 0.5 * (-s * s * s + 2 * s * s - s);
+    double b1 = 0.5 * (3 * s * s * s - 5 * s * s + 2);
+    double b2 = 0.5 * (-3 * s * s * s + 4 * s * s + s);
+    double b3 = 0.5 * (s * s * s - s * s);
+    *u = b0 * P[0].u + b1 * P[1].u + b2 * P[2].u + b3 * P[3].u;
+    *v = b0 * P[0].v + b1 * P[1].v + b2 * P[2].v + b3 * P[3].v;
+}
+
+static void test_spline_prism(void **state)
+{
+    (void)state;
+    iris_vec2 pp[8] = { { 2, 0 }, { 0, -2 }, { -2, 0 }, { 0, 2 },
+                        { 2, 0 }, { 0, -2 }, { -2, 0 }, { 0, 2 } };
+    iris_object pr = mk(IRIS_OBJ_PRISM);
+    pr.u.prism.spline = IRIS_SPLINE_CUBIC;
+    pr.u.prism.height1 = 0;
+    pr.u.prism.height2 = 1;
+    pr.u.prism.n_points = 8;
+    pr.u.prism.points = pp;
+    const char *why;
+    struct geom_profile *p = geom_prepare(&pr, &why);
+    assert_non_null(p);
+    struct geom_isect h[8];
+    /* the segment from (-2,0) to (0,2): v rises from 0 to 2 */
+    const iris_vec2 *seg = pp + 1;
+    for (double v = 0.2; v < 2; v += 0.35) {
+        double lo = 0, hi = 1, u, vv;
+        for (int k = 0; k < 200; k++) {
+            double m = 0.5 * (lo + hi);
+            cr_point(seg, m, &u, &vv);
+            if (vv < v)
+                lo = m;
+            else
+                hi = m;
+        }
+        cr_point(seg, 0.5 * (lo + hi), &u, &vv);
+        int n = hits(&pr, p, v3(-5, 0.5, v), v3(1, 0, 0), h, 8);
+        assert_int_equal(n, 2);
+        assert_near(-5 + h[0].t, u, 1e-12);
+        assert_true(geom_inside(&pr, p, v3(u + 1e-7, 0.5, v)));
+        assert_false(geom_inside(&pr, p, v3(u - 1e-7, 0.5, v)));
+        /* and the top cap ends on the curve too */
+        assert_int_equal(hits(&pr, p, v3(u + 1e-7, 5, v), v3(0, -1, 0), h, 8),
+                         2);
+        assert_int_equal(hits(&pr, p, v3(u - 1e-7, 5, v), v3(0, -1, 0), h, 8),
+                         0);
     }
     geom_profile_free(p);
 }
@@ -911,6 +1053,8 @@ int main(void)
         cmocka_unit_test(test_sweeps),
         cmocka_unit_test(test_conic_prism),
         cmocka_unit_test(test_spline_lathe),
+        cmocka_unit_test(test_sor_exact),
+        cmocka_unit_test(test_spline_prism),
         cmocka_unit_test(test_flat),
         cmocka_unit_test(test_text),
         cmocka_unit_test(test_quadric_fast),
