@@ -5,9 +5,22 @@
 # Markdown table and the median ratios. Per scene and renderer it takes the
 # median of N runs of
 #   - the wall time of the whole program (start-up, parse, render, write);
-#   - the render time alone: POV-Ray's "Trace Time" plus "Photon Time" from
-#     its statistics, iris's time_render_s plus time_photon_s (--stats);
+#   - the render time alone: POV-Ray's "Trace Time" plus "Photon Time"
+#     plus "Radiosity Time" from its statistics, iris's time_render_s plus
+#     time_photon_s (--stats; iris's radiosity pretrace is inside its eye
+#     pass, so inside time_render_s);
+#   - the CPU seconds of the trace alone, summed over the threads:
+#     POV-Ray's "using N thread(s) with S CPU-seconds total" under its
+#     Trace Time, iris's time_render_cpu_s (the eye pass's tile loop);
 # and the PSNR of iris's image against POV-Ray's (tests/render/psnr).
+#
+# On a loaded machine the wall times (and so the render ratio) measure
+# the scheduler as much as the programs: with other processes runnable a
+# render thread gets a varying share of a core (measured at load 7 on two
+# cores: one iris render's two threads had 0.45 to 1.1 cores between
+# them, runs a minute apart). The CPU ratio does not depend on the
+# load (thread CPU clocks do not count waiting); on an idle machine, each
+# thread on a core of its own, the two ratios should agree.
 #
 # The two render times span the same work: POV-Ray's Trace Time is the
 # longest time a render thread spends in TraceTask::Run (task.cpp starts
@@ -67,6 +80,13 @@ pov_seconds() {
         awk '{ print ($1 == "" ? 0 : $1) }'
 }
 
+# The CPU seconds on the "using N thread(s) with S CPU-seconds total" line
+# under POV-Ray's "Trace Time", 0 if none.
+pov_trace_cpu() {
+    sed -n '/Trace Time:/{n;s/.*with \([0-9.]*\) CPU-seconds.*/\1/p;}' "$1" |
+        head -n 1 | awk '{ print ($1 == "" ? 0 : $1) }'
+}
+
 # The value of "key" in iris's --stats JSON, 0 if none.
 json_value() {
     sed -n "s/.*\"$1\": *\([0-9.eE+-]*\).*/\1/p" "$2" | head -n 1 |
@@ -89,13 +109,14 @@ median_file() { sort -n "$1" | awk '{a[NR] = $1} END {
     else printf "%.4f\n", (a[NR / 2] + a[NR / 2 + 1]) / 2 }'; }
 
 if [ -n "$base" ]; then
-    echo "| scene | POV-Ray s | iris s | iris/POV-Ray | POV-Ray render s | iris render s | render ratio | PSNR dB | base render s | iris/base render |"
-    echo "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |"
+    echo "| scene | POV-Ray s | iris s | iris/POV-Ray | POV-Ray render s | iris render s | render ratio | POV-Ray trace CPU s | iris trace CPU s | CPU ratio | PSNR dB | base render s | iris/base render |"
+    echo "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |"
 else
-    echo "| scene | POV-Ray s | iris s | iris/POV-Ray | POV-Ray render s | iris render s | render ratio | PSNR dB |"
-    echo "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: |"
+    echo "| scene | POV-Ray s | iris s | iris/POV-Ray | POV-Ray render s | iris render s | render ratio | POV-Ray trace CPU s | iris trace CPU s | CPU ratio | PSNR dB |"
+    echo "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |"
 fi
 : >"$BENCH_TMP/ratios"; : >"$BENCH_TMP/rratios"; : >"$BENCH_TMP/bratios"
+: >"$BENCH_TMP/cratios"
 for scene in "$@"; do
     [ -f "$scene" ] || continue
     case $scene in /*) ;; *) scene=$(pwd)/$scene ;; esac
@@ -104,7 +125,7 @@ for scene in "$@"; do
     rm -rf "$work"; mkdir -p "$work"
     cp -R "$(dirname "$scene")/." "$work/" 2>/dev/null
     : >"$BENCH_TMP/pw"; : >"$BENCH_TMP/iw"; : >"$BENCH_TMP/pr"; : >"$BENCH_TMP/ir"
-    : >"$BENCH_TMP/br"
+    : >"$BENCH_TMP/br"; : >"$BENCH_TMP/pc"; : >"$BENCH_TMP/ic"
     ok=yes
     i=0
     while [ $i -lt "$runs" ]; do
@@ -118,8 +139,10 @@ for scene in "$@"; do
             $common --threads="$threads" --stats="$BENCH_TMP/i.json") || ok=no
         echo "$tp" >>"$BENCH_TMP/pw"
         echo "$ti" >>"$BENCH_TMP/iw"
-        echo "$(pov_seconds Trace "$BENCH_TMP/p.log") $(pov_seconds Photon "$BENCH_TMP/p.log")" |
-            awk '{ print $1 + $2 }' >>"$BENCH_TMP/pr"
+        echo "$(pov_seconds Trace "$BENCH_TMP/p.log") $(pov_seconds Photon "$BENCH_TMP/p.log") $(pov_seconds Radiosity "$BENCH_TMP/p.log")" |
+            awk '{ print $1 + $2 + $3 }' >>"$BENCH_TMP/pr"
+        pov_trace_cpu "$BENCH_TMP/p.log" >>"$BENCH_TMP/pc"
+        json_value time_render_cpu_s "$BENCH_TMP/i.json" >>"$BENCH_TMP/ic"
         echo "$(json_value time_render_s "$BENCH_TMP/i.json") $(json_value time_photon_s "$BENCH_TMP/i.json")" |
             awk '{ print $1 + $2 }' >>"$BENCH_TMP/ir"
         if [ -n "$base" ]; then
@@ -133,9 +156,9 @@ for scene in "$@"; do
     done
     if [ $ok = no ]; then
         if [ -n "$base" ]; then
-            echo "| $name | fail | fail | - | - | - | - | - | - | - |"
+            echo "| $name | fail | fail | - | - | - | - | - | - | - | - | - | - |"
         else
-            echo "| $name | fail | fail | - | - | - | - | - |"
+            echo "| $name | fail | fail | - | - | - | - | - | - | - | - |"
         fi
         continue
     fi
@@ -143,22 +166,28 @@ for scene in "$@"; do
     rp=$(median_file "$BENCH_TMP/pr"); ri=$(median_file "$BENCH_TMP/ir")
     psnr=$("$PSNR" "$BENCH_TMP/i.png" "$BENCH_TMP/p.png" 2>/dev/null | cut -d' ' -f1)
     r=$(ratio "$ti" "$tp"); rr=$(ratio "$ri" "$rp")
+    cp_=$(median_file "$BENCH_TMP/pc"); ci=$(median_file "$BENCH_TMP/ic")
+    # an iris without time_render_cpu_s reports 0: no ratio then
+    cr=$(echo "$ci" | awk '{ print ($1 > 0 ? "y" : "n") }')
+    if [ "$cr" = y ]; then cr=$(ratio "$ci" "$cp_"); else cr=-; fi
     if [ -n "$base" ]; then
         rb=-; br=-
         if [ -s "$BENCH_TMP/br" ]; then
             rb=$(median_file "$BENCH_TMP/br"); br=$(ratio "$ri" "$rb")
         fi
-        echo "| $name | $tp | $ti | $r | $rp | $ri | $rr | ${psnr:--} | $rb | $br |"
+        echo "| $name | $tp | $ti | $r | $rp | $ri | $rr | $cp_ | $ci | $cr | ${psnr:--} | $rb | $br |"
         echo "$br" >>"$BENCH_TMP/bratios"
     else
-        echo "| $name | $tp | $ti | $r | $rp | $ri | $rr | ${psnr:--} |"
+        echo "| $name | $tp | $ti | $r | $rp | $ri | $rr | $cp_ | $ci | $cr | ${psnr:--} |"
     fi
+    echo "$cr" >>"$BENCH_TMP/cratios"
     echo "$r" >>"$BENCH_TMP/ratios"
     echo "$rr" >>"$BENCH_TMP/rratios"
 done
 echo
 grep -v -- - "$BENCH_TMP/ratios" | median_of | sed 's/^/median iris\/POV-Ray wall-time ratio: /'
 grep -v -- - "$BENCH_TMP/rratios" | median_of | sed 's/^/median iris\/POV-Ray render-time ratio: /'
+grep -v -- - "$BENCH_TMP/cratios" | median_of | sed 's/^/median iris\/POV-Ray trace CPU ratio: /'
 if [ -n "$base" ]; then
     grep -v -- - "$BENCH_TMP/bratios" | median_of | sed 's/^/median iris\/base render-time ratio: /'
 fi

@@ -133,4 +133,17 @@ static inline double accel_hit_epsilon(double size, vec3 p, double scene_eps)
     return e < scene_eps ? e : scene_eps;
 }
 
+/*
+** The offset for a ray that starts on no surface (a camera ray, a photon
+** leaving its light) at world point 'o': 1e-9 of |o| (max norm), at most
+** the scene's 'scene_eps'. Such a ray needs no offset against a surface
+** of its own, and the scene's epsilon, 1e-9 of its extent, would make it
+** skip everything that near: one huge object (a hidden sphere of radius
+** 1e10) makes that 10 units.
+*/
+static inline double accel_origin_epsilon(vec3 o, double scene_eps)
+{
+    return accel_hit_epsilon(1e-300, o, scene_eps);
+}
+
 #endif

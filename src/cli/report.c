@@ -80,12 +80,14 @@ int stats_write(const char *path, const struct run_times *t,
     fprintf(f,
             "{\"time_parse_s\": %.6f, \"time_build_s\": %.6f, "
             "\"time_photon_s\": %.6f, \"time_render_s\": %.6f, "
+            "\"time_render_cpu_s\": %.6f, "
             "\"time_write_s\": %.6f, \"time_total_s\": %.6f, "
             "\"photons_emitted\": %llu, \"photons_stored\": %llu, "
             "\"photon_bytes\": %llu, \"rays_traced\": %llu, "
             "\"peak_rss_bytes\": %llu, \"threads\": %d, \"passes\": %d}\n",
             t->parse, rs->time_build_s, rs->time_photon_s, rs->time_render_s,
-            t->write, t->total, (unsigned long long)rs->photons_emitted,
+            rs->time_render_cpu_s, t->write, t->total,
+            (unsigned long long)rs->photons_emitted,
             (unsigned long long)rs->photons_stored,
             (unsigned long long)rs->photon_bytes,
             (unsigned long long)rs->rays_traced,

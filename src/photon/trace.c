@@ -317,13 +317,14 @@ void ptrace_photon(const struct pmap_world *w, const struct ptrace_combo *c,
     double depth = 0.0;
     struct hit h;
     bool chroma = c->chromatic; /* has lambda changed anything yet? */
-    /* The first segment leaves the light (no surface): the global
-    ** offset. Later ones leave hit h with its own offset h.eps (accel.h),
+    /* The first segment leaves the light (no surface): 1e-9 of the
+    ** light's position (accel_origin_epsilon; the global offset would be
+    ** 10 units with one hidden sphere of radius 1e10). Later ones leave hit h with its own offset h.eps (accel.h),
     ** as the eye tracer does: the global one is 1e-3 in a scene with a
     ** 1e6 sky sphere, thicker than a thin glass wall, and a photon would
     ** skip the wall's far side. A world that sets no h.eps (0) keeps the
     ** global offset. */
-    double tmin = w->epsilon;
+    double tmin = accel_origin_epsilon(o, w->epsilon);
     int max_level = c->global ? PTRACE_GLOBAL_MAX_LEVEL : c->max_level;
     int n_diffuse = 0;         /* global: diffuse bounces so far */
     bool landed = false;       /* global: D^2 and fade applied */

@@ -699,7 +699,10 @@ enum iris_status eyepass_run(const struct tracer *tr,
         atomic_init(&j.tiles_done, 0);
         atomic_init(&j.interrupted, 0);
         atomic_init(&j.alloc_failed, 0);
-        par_for(threads, (int64_t)j.tiles_x * j.tiles_y, run_tile, &j);
+        /* the tile loop's CPU time: what the render costs whatever the
+        ** load (its wall time is also the scheduler's doing) */
+        par_for_timed(threads, (int64_t)j.tiles_x * j.tiles_y, run_tile, &j,
+                      stats ? &stats->time_render_cpu_s : NULL);
         if (atomic_load(&j.alloc_failed))
             st = IRIS_ENOMEM;
         else if (atomic_load(&j.interrupted))

@@ -1409,8 +1409,10 @@ double trace_ray(struct trace_ctx *c, const struct tray *r, double weight,
     /* gather rays and what they spawn pass no_radiosity objects */
     unsigned skip = skip_flags(r) |
                     (c->gi_depth > 0 ? ACCEL_SKIP_NO_RADIOSITY : 0);
-    bool found = t->q.intersect(t->q.impl, &r->r, leave_eps(t, r->tmin),
-                                t->max_distance, skip, &h);
+    double tmin = r->tmin > 0.0 ? leave_eps(t, r->tmin)
+                                : accel_origin_epsilon(r->r.o, t->q.eps);
+    bool found = t->q.intersect(t->q.impl, &r->r, tmin, t->max_distance,
+                                skip, &h);
     if (found && !(h.t > 0 && isfinite(h.t)))
         found = false;
     if (!continued)

@@ -8,6 +8,7 @@
 
 #include <pthread.h>
 #include <stdatomic.h>
+#include <stdbool.h>
 #include <time.h>
 #include <unistd.h>
 
@@ -23,26 +24,47 @@ struct par_job {
 struct par_worker {
     struct par_job *job;
     int thread;
+    bool timed;
+    double cpu_s;              /* the thread's CPU seconds in run_items */
 };
 
-static void run_items(struct par_job *job, int thread)
+/* This thread's CPU seconds so far (0 where the clock is missing: the
+** difference is then 0, never garbage). */
+static double thread_cpu_s(void)
 {
+    struct timespec ts;
+    if (clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts) != 0)
+        return 0.0;
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+static void run_items(struct par_worker *w)
+{
+    struct par_job *job = w->job;
+    double c0 = w->timed ? thread_cpu_s() : 0.0;
     for (;;) {
         int64_t i = atomic_fetch_add(&job->next, 1);
         if (i >= job->n_items)
             break;
-        job->fn(job->ctx, i, thread);
+        job->fn(job->ctx, i, w->thread);
     }
+    if (w->timed)
+        w->cpu_s = thread_cpu_s() - c0;
 }
 
 static void *worker_main(void *arg)
 {
-    struct par_worker *w = arg;
-    run_items(w->job, w->thread);
+    run_items(arg);
     return NULL;
 }
 
 int par_for(int n_threads, int64_t n_items, par_fn fn, void *ctx)
+{
+    return par_for_timed(n_threads, n_items, fn, ctx, NULL);
+}
+
+int par_for_timed(int n_threads, int64_t n_items, par_fn fn, void *ctx,
+                  double *cpu_s)
 {
     struct par_job job = { fn, ctx, n_items, 0 };
     if (n_threads < 1)
@@ -60,6 +82,7 @@ int par_for(int n_threads, int64_t n_items, par_fn fn, void *ctx)
         for (int t = 1; !rc && t < n_threads; t++) {
             ws[t].job = &job;
             ws[t].thread = t;
+            ws[t].timed = cpu_s != NULL;
             if (pthread_create(&tids[t], NULL, worker_main, &ws[t]) != 0) {
                 rc = -1;
                 break;
@@ -67,9 +90,15 @@ int par_for(int n_threads, int64_t n_items, par_fn fn, void *ctx)
             started = t;
         }
     }
-    run_items(&job, 0);
+    struct par_worker self = { &job, 0, cpu_s != NULL, 0.0 };
+    run_items(&self);
     for (int t = 1; t <= started; t++)
         pthread_join(tids[t], NULL);
+    if (cpu_s) {
+        *cpu_s += self.cpu_s;
+        for (int t = 1; t <= started; t++)
+            *cpu_s += ws[t].cpu_s;
+    }
     iris_free(tids);
     iris_free(ws);
     return rc;

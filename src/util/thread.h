@@ -20,6 +20,15 @@ typedef void (*par_fn)(void *ctx, int64_t item, int thread);
 ** thread could be started (then everything ran on the caller's thread). */
 int par_for(int n_threads, int64_t n_items, par_fn fn, void *ctx);
 
+/* par_for() that also adds to *cpu_s (if not NULL) the CPU seconds the
+** workers spent taking and running items, summed over the threads (each
+** thread's CLOCK_THREAD_CPUTIME_ID, read as it enters and leaves its item
+** loop): the work's cost whatever the machine's load, as POV-Ray's
+** "using N thread(s) with S CPU-seconds total" is for its render tasks.
+** Thread creation and joining are not counted. */
+int par_for_timed(int n_threads, int64_t n_items, par_fn fn, void *ctx,
+                  double *cpu_s);
+
 /* The number of online processors (at least 1). */
 int par_cores(void);
 

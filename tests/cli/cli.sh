@@ -40,7 +40,7 @@ px=$("$imgtool" pixel "$tmp/min.exr" 20 15 | awk '{printf "%d", $1 * 10000 + 0.5
 # linear float: 0.35 within 0.5% (shading is exact here; float rounding)
 tap_ok "renders to linear EXR: the plane is 0.35" test "$px" -ge 3483 -a "$px" -le 3517
 
-keys="time_parse_s time_build_s time_photon_s time_render_s time_write_s time_total_s photons_emitted photons_stored photon_bytes rays_traced peak_rss_bytes threads passes"
+keys="time_parse_s time_build_s time_photon_s time_render_s time_render_cpu_s time_write_s time_total_s photons_emitted photons_stored photon_bytes rays_traced peak_rss_bytes threads passes"
 missing=""
 for k in $keys; do grep -q "\"$k\":" "$tmp/s.json" 2>/dev/null || missing="$missing $k"; done
 tap_is "--stats writes every key" "$missing" ""

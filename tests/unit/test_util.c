@@ -8,6 +8,7 @@
 
 #include <stdint.h>
 #include <string.h>
+#include <time.h>
 
 #include "math/transform.h"
 #include "util/arena.h"
@@ -91,6 +92,55 @@ static void test_par_for(void **state)
     }
 }
 
+/* Each item spins until its own thread's CPU clock has advanced 2 ms and
+** records what it burned. */
+#define BURN_ITEMS 24
+struct burn_ctx {
+    double burned[BURN_ITEMS];
+};
+
+static double thread_clock_s(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+static void burn_item(void *ctx, int64_t i, int thread)
+{
+    (void)thread;
+    double t0 = thread_clock_s(), t;
+    while ((t = thread_clock_s()) - t0 < 2e-3)
+        ;
+    ((struct burn_ctx *)ctx)->burned[i] = t - t0;
+}
+
+/* par_for_timed adds the threads' CPU time in their item loops: at least
+** the CPU the items measured burning themselves (each on its own thread's
+** clock), and not more than that plus 2 ms per thread for the loop's own
+** work (an atomic add and a clock read per item: microseconds). Whatever
+** the machine's load (thread CPU clocks do not count waiting), and with 2
+** or 3 threads a process-wide clock would count every thread's items
+** again and fail the upper bound. It adds to what *cpu_s held. */
+static void test_par_for_timed(void **state)
+{
+    (void)state;
+    for (int t = 1; t <= 3; t++) {
+        struct burn_ctx ctx;
+        memset(&ctx, 0, sizeof ctx);
+        double cpu = 1.0;
+        assert_int_equal(par_for_timed(t, BURN_ITEMS, burn_item, &ctx, &cpu),
+                         0);
+        double burned = 0.0;
+        for (int i = 0; i < BURN_ITEMS; i++) {
+            assert_true(ctx.burned[i] >= 2e-3);
+            burned += ctx.burned[i];
+        }
+        assert_true(cpu - 1.0 >= burned);
+        assert_true(cpu - 1.0 <= burned + 2e-3 * t);
+    }
+}
+
 /* rotate <0,90,0> takes +x to -z in POV-Ray's left-handed frame (the
 ** documented "rotate y*90 turns x into -z"); a composed transform and its
 ** inverse undo each other; normals stay perpendicular under a
@@ -138,6 +188,7 @@ int main(void)
         cmocka_unit_test(test_arena),
         cmocka_unit_test(test_rng),
         cmocka_unit_test(test_par_for),
+        cmocka_unit_test(test_par_for_timed),
         cmocka_unit_test(test_transform),
     };
     return cmocka_run_group_tests_name("util", tests, NULL, NULL);
