@@ -35,6 +35,26 @@ static iris_vec2 seg_normal(const struct geom_profile *p, int i, double s)
 }
 
 /*
+** The chord normal at curve parameter 'cs' of the curve whose chords
+** are pieces i .. e-1: the piece holding 'cs' ('*jp') and the fraction
+** along it ('*fp', in [0,1]). It orients an exact curve's normal; the
+** piece and fraction give the texture's v.
+*/
+static iris_vec2 chord_normal_at(const struct geom_profile *p, int i, int e,
+                                 double cs, int *jp, double *fp)
+{
+    int j = i;
+    while (j + 1 < e && cs >= p->cs1[j])
+        j++;
+    double f = p->cs1[j] > p->cs0[j]
+                   ? (cs - p->cs0[j]) / (p->cs1[j] - p->cs0[j]) : 0;
+    f = fmax(0, fmin(1, f));
+    *jp = j;
+    *fp = f;
+    return seg_normal(p, j, f);
+}
+
+/*
 ** Refines a crossing 't' of the unit-direction ray o + t d with curve 'c'
 ** at the curve's parameter '*cs' by Newton's method (lathe: two
 ** equations in t and s, sor: one in t), to full precision: the
@@ -240,13 +260,9 @@ static void curve_hits(const struct geom_profile *p, int i, int e, vec3 o,
         if (!(t > lo && t < hi))
             continue;
         /* The piece the parameter falls in, for the orientation and v */
-        int j = i;
-        while (j + 1 < e && cs >= p->cs1[j])
-            j++;
-        double f = p->cs1[j] > p->cs0[j]
-                       ? (cs - p->cs0[j]) / (p->cs1[j] - p->cs0[j]) : 0;
-        f = fmax(0, fmin(1, f));
-        iris_vec2 n2 = seg_normal(p, j, f);
+        int j;
+        double f;
+        iris_vec2 n2 = chord_normal_at(p, i, e, cs, &j, &f);
         if (exact && (ne.u != 0 || ne.v != 0)) {
             if (ne.u * n2.u + ne.v * n2.v < 0) {
                 ne.u = -ne.u;
@@ -570,13 +586,9 @@ static void wall_hits(const struct geom_profile *p, int i, int e, int axis,
         double t = (pu * du + pv * dv) / dd;
         if (!(t > ta && t < tb))
             continue;
-        int j = i;
-        while (j + 1 < e && cs >= p->cs1[j])
-            j++;
-        double f = p->cs1[j] > p->cs0[j]
-                       ? (cs - p->cs0[j]) / (p->cs1[j] - p->cs0[j]) : 0;
-        f = fmax(0, fmin(1, f));
-        iris_vec2 n2 = seg_normal(p, j, f);
+        int j;
+        double f;
+        iris_vec2 n2 = chord_normal_at(p, i, e, cs, &j, &f);
         double tu = (3 * q[0].u * cs + 2 * q[1].u) * cs + q[2].u;
         double tv = (3 * q[0].v * cs + 2 * q[1].v) * cs + q[2].v;
         iris_vec2 ne = { tv, -tu };
