@@ -306,34 +306,42 @@ static int seg_count(enum iris_spline sp, int n, int *step)
     }
 }
 
-/* Adds the flattened spline through 'pts' to 'p'. */
+/* Adds spline segment 'i' of 'P': its exact curve (not for linear
+** splines) and the chords that bound it. */
+static bool add_segment(struct geom_profile *p, enum iris_spline sp,
+                        const iris_vec2 *P, int i)
+{
+    iris_vec2 c[4], a, ta;
+    seg_coeffs(sp, P, i, c);
+    int steps = sp == IRIS_SPLINE_LINEAR ? 1 : SEG_STEPS;
+    int ci = -1;
+    if (sp != IRIS_SPLINE_LINEAR) {
+        struct geom_curve cv = { .kind = GEOM_CURVE_POLY };
+        memcpy(cv.c, c, sizeof cv.c);
+        if ((ci = add_curve(p, &cv)) < 0)
+            return false;
+    }
+    seg_eval(c, 0, &a, &ta);
+    for (int j = 1; j <= steps; j++) {
+        iris_vec2 b, tb;
+        seg_eval(c, (double)j / steps, &b, &tb);
+        if (!add_piece(p, a, b, ta, tb, ci, (double)(j - 1) / steps,
+                       (double)j / steps))
+            return false;
+        a = b;
+        ta = tb;
+    }
+    return true;
+}
+
+/* Adds the spline through 'pts' to 'p', segment by segment. */
 static bool add_spline(struct geom_profile *p, enum iris_spline sp,
                        const iris_vec2 *pts, int n)
 {
     int step, ns = seg_count(sp, n, &step);
-    for (int k = 0; k < ns; k++) {
-        iris_vec2 c[4];
-        seg_coeffs(sp, pts, k * step, c);
-        int steps = sp == IRIS_SPLINE_LINEAR ? 1 : SEG_STEPS;
-        int ci = -1;
-        if (sp != IRIS_SPLINE_LINEAR) {
-            struct geom_curve cv = { .kind = GEOM_CURVE_POLY };
-            memcpy(cv.c, c, sizeof cv.c);
-            if ((ci = add_curve(p, &cv)) < 0)
-                return false;
-        }
-        iris_vec2 a, ta;
-        seg_eval(c, 0, &a, &ta);
-        for (int j = 1; j <= steps; j++) {
-            iris_vec2 b, tb;
-            seg_eval(c, (double)j / steps, &b, &tb);
-            if (!add_piece(p, a, b, ta, tb, ci, (double)(j - 1) / steps,
-                           (double)j / steps))
-                return false;
-            a = b;
-            ta = tb;
-        }
-    }
+    for (int k = 0; k < ns; k++)
+        if (!add_segment(p, sp, pts, k * step))
+            return false;
     return true;
 }
 
@@ -403,32 +411,6 @@ static bool same_point(iris_vec2 a, iris_vec2 b)
     return fabs(a.u - b.u) < 1e-10 && fabs(a.v - b.v) < 1e-10;
 }
 
-/* Adds spline segment 'i' of 'P' flattened, as add_spline does. */
-static bool add_segment(struct geom_profile *p, enum iris_spline sp,
-                        const iris_vec2 *P, int i)
-{
-    iris_vec2 c[4], a, ta;
-    seg_coeffs(sp, P, i, c);
-    int steps = sp == IRIS_SPLINE_LINEAR ? 1 : SEG_STEPS;
-    int ci = -1;
-    if (sp != IRIS_SPLINE_LINEAR) {
-        struct geom_curve cv = { .kind = GEOM_CURVE_POLY };
-        memcpy(cv.c, c, sizeof cv.c);
-        if ((ci = add_curve(p, &cv)) < 0)
-            return false;
-    }
-    seg_eval(c, 0, &a, &ta);
-    for (int j = 1; j <= steps; j++) {
-        iris_vec2 b, tb;
-        seg_eval(c, (double)j / steps, &b, &tb);
-        if (!add_piece(p, a, b, ta, tb, ci, (double)(j - 1) / steps,
-                       (double)j / steps))
-            return false;
-        a = b;
-        ta = tb;
-    }
-    return true;
-}
 
 /*
 ** prism: POV-Ray's walk over the points (prism.cpp Compute_Prism). A
