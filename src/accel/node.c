@@ -143,6 +143,9 @@ void node_hits_in_box(const struct anode *n, vec3 o, vec3 d, double tmin,
             amesh_hits(n, o, d, tmin, tmax, out);
         break;
     case AN_CSG:
+        /* bounded_by on CSG: POV-Ray's Ray_In_Bound (geometry/bound.c) */
+        if (n->obj->bounded_by && !geom_csg_bound_admits(n->obj, o, d))
+            break;
         for (int k = 0; k < n->n_kids; k++) {
             int from = out->n;
             node_hits(n->kids[k], o, d, tmin, tmax, skip, out);

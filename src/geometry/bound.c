@@ -13,7 +13,13 @@
 ** surfaces cut that way. The parser drops the bound of a top-level shape
 ** that is cheap to intersect (Link_To_Frame, "Unnecessary bounding object
 ** removed") but not its box; it keeps the bound on polys (quartic, cubic,
-** poly) and text. iris applies this to shapes; on CSG it is a hint.
+** poly) and text. It keeps the bound of every CSG (union, intersection,
+** difference, merge): such an object is tested only for rays that meet
+** its bound or start inside it (geom_csg_bound_admits, from accel/node.c;
+** csg.cpp applies the same test to a bounded CSG child), so shapes2.inc's
+** Pyramid2, planes bounded_by a box, ends at the box's silhouette. A
+** bounded union is not split into its children (accel.c place()), as
+** POV-Ray does not split one unless asked to (split_unions).
 */
 #include "config.h"
 
@@ -75,25 +81,22 @@ static bool bound_testable(const iris_object *b)
     }
 }
 
-bool geom_bound_admits(const iris_object *o, const struct geom_profile *prof,
-                       vec3 ro, vec3 rd)
+/* Whether the world box of bound 'b' is smaller than that of shape 'o'
+** (or 'o' has none), and so cuts it (POV-Ray's parser keeps the smaller
+** box); that box in '*lo', '*hi'. */
+static bool box_cut(const iris_object *o, const struct geom_profile *prof,
+                    const iris_object *b, vec3 *lo, vec3 *hi)
 {
-    const iris_object *b = o->bounded_by;
-    if (!b || b->inverse || !bound_testable(b))
-        return true;
-    /* The ray in world space; t is the same parameter there. */
-    vec3 wo = o->has_transform ? xf_point(&o->transform, ro) : ro;
-    vec3 wd = o->has_transform ? xf_dir(&o->transform, rd) : rd;
-    vec3 blo, bhi, olo, ohi;
-    if (world_box(b, NULL, &blo, &bhi) &&
-        (!world_box(o, prof, &olo, &ohi) ||
-         volume(blo, bhi) < volume(olo, ohi))) {
-        double t0 = 0, t1 = INFINITY;
-        if (!geom_clip_box(blo, bhi, wo, wd, &t0, &t1))
-            return false;
-    }
-    if (!bound_kept(o))
-        return true;
+    vec3 olo, ohi;
+    return world_box(b, NULL, lo, hi) &&
+           (!world_box(o, prof, &olo, &ohi) ||
+            volume(*lo, *hi) < volume(olo, ohi));
+}
+
+/* POV-Ray's Ray_In_Bound: whether the world ray wo + t·wd (t >= 0) meets
+** bound 'b' or starts inside it. */
+static bool ray_in_bound(const iris_object *b, vec3 wo, vec3 wd)
+{
     vec3 bo = b->has_transform ? xf_inv_point(&b->transform, wo) : wo;
     vec3 bd = b->has_transform ? xf_inv_dir(&b->transform, wd) : wd;
     struct isect_list l;
@@ -102,4 +105,52 @@ bool geom_bound_admits(const iris_object *o, const struct geom_profile *prof,
     bool met = l.n > 0;
     isect_list_fini(&l);
     return met || geom_inside(b, NULL, bo);
+}
+
+void geom_bound_prepare(const iris_object *o, struct geom_profile *prof)
+{
+    const iris_object *b = o->bounded_by;
+    prof->bound.ready = true;
+    prof->bound.box_cuts = b && !b->inverse && bound_testable(b) &&
+                           box_cut(o, prof, b, &prof->bound.lo,
+                                   &prof->bound.hi);
+}
+
+bool geom_bound_admits(const iris_object *o, const struct geom_profile *prof,
+                       vec3 ro, vec3 rd)
+{
+    const iris_object *b = o->bounded_by;
+    if (!b || b->inverse || !bound_testable(b))
+        return true;
+    /* The boxes come from geom_prepare(); recomputed here only for a
+    ** caller without them (they were half the time of a bounded scene) */
+    vec3 blo, bhi;
+    bool cuts;
+    if (prof && prof->bound.ready) {
+        cuts = prof->bound.box_cuts;
+        blo = prof->bound.lo;
+        bhi = prof->bound.hi;
+    } else {
+        cuts = box_cut(o, prof, b, &blo, &bhi);
+    }
+    bool kept = bound_kept(o);
+    if (!cuts && !kept)
+        return true;
+    /* The ray in world space; t is the same parameter there. */
+    vec3 wo = o->has_transform ? xf_point(&o->transform, ro) : ro;
+    vec3 wd = o->has_transform ? xf_dir(&o->transform, rd) : rd;
+    if (cuts) {
+        double t0 = 0, t1 = INFINITY;
+        if (!geom_clip_box(blo, bhi, wo, wd, &t0, &t1))
+            return false;
+    }
+    return !kept || ray_in_bound(b, wo, wd);
+}
+
+bool geom_csg_bound_admits(const iris_object *o, vec3 wo, vec3 wd)
+{
+    const iris_object *b = o->bounded_by;
+    if (!b || b->inverse || !bound_testable(b))
+        return true;
+    return ray_in_bound(b, wo, wd);
 }

@@ -83,6 +83,18 @@ struct geom_profile {
     double *cs0, *cs1;
     struct geom_curve *curves;
     int n_curves, cap_curves;
+    /*
+    ** The shape's bounded_by, resolved once by geom_prepare() (bound.c)
+    ** instead of for every ray: whether the bound's world box is the
+    ** smaller one and so cuts the shape, and that box. Any shape with a
+    ** bounded_by gets a profile for this, with no segments when it has
+    ** no outline.
+    */
+    struct geom_bound_cut {
+        bool ready;            /* filled in; else bound.c computes per ray */
+        bool box_cuts;         /* the ray must meet lo..hi */
+        vec3 lo, hi;           /* the bound's world box */
+    } bound;
 };
 
 /*
@@ -99,12 +111,20 @@ struct geom_curve {
     int first, n;     /* its pieces first .. first+n-1 (profile_finish) */
     double vlo, vhi;  /* heights and largest |radius| of those pieces */
     double umax;
+    /* GEOM_CURVE_POLY: the Bezier control points of the same cubic
+    ** (profile.c); the curve over s in [0, 1] lies in their convex hull,
+    ** so a line they all lie on one side of cannot meet it (sweep.c).
+    ** 'ext' is their largest coordinate magnitude, for tolerances. */
+    iris_vec2 bz[4];
+    double ext;
 };
 
 /*
 ** Prepares what 'obj' needs beyond its plain data: the flattened profile
-** of prism, lathe and text objects (NULL for every other kind). Returns
-** NULL and sets '*why' when the object cannot be built ("font not found").
+** of prism, lathe and text objects, and for any shape with a bounded_by
+** the bound's box (NULL for every other shape). Returns NULL and sets
+** '*why' when the object cannot be built ("font not found", or
+** geom_validate()'s reason for a shape with a bounded_by).
 */
 struct geom_profile *geom_prepare(const iris_object *obj, const char **why);
 void geom_profile_free(struct geom_profile *p);
@@ -122,6 +142,13 @@ void geom_intersect(const iris_object *obj, const struct geom_profile *prof,
 ** all: false when its bounded_by cuts the ray off (bound.c). */
 bool geom_bound_admits(const iris_object *obj, const struct geom_profile *prof,
                        vec3 o, vec3 d);
+/* Whether POV-Ray tests CSG 'obj' (its bounded_by in world space) for
+** the world ray o + t·d: Ray_In_Bound, the ray meets the bound or starts
+** inside it (bound.c). True without a bound. */
+bool geom_csg_bound_admits(const iris_object *obj, vec3 o, vec3 d);
+/* Fills prof->bound for shape 'obj' (geom_prepare(); 'prof' is the
+** shape's own profile, possibly with no segments). */
+void geom_bound_prepare(const iris_object *obj, struct geom_profile *prof);
 
 /* Whether object-space point 'p' is inside 'obj' (not inverted). */
 bool geom_inside(const iris_object *obj, const struct geom_profile *prof,

@@ -124,22 +124,22 @@ static void sphere_part(const struct ovus_dims *d, vec3 c, double r,
 }
 
 /*
-** Whether ray ro + t·rd, t in (t0, t1), surely keeps out of the part of
+** The part of ray ro + t·rd, t in (*t0, *t1), that can meet the part of
 ** the spindle that geom_spindle_hits() reports: the points with
 ** ylo < y < yhi on the inner surface, whose distance from the axis is
-** rho = sqrt(C² - (y - yc)²) - H <= C - H. The segment is cut to that
-** slab and its least rho² (a convex quadratic in t) compared with
-** (C - H)²; 'tol' widens both, so that a root the solver would find and
-** keep is never cut off by rounding. Then the quartic, whose roots there
-** would all be dropped, need not be solved: most rays through an ovus's
-** box miss the connection's slab or cylinder (the quartic always has
-** roots on the outer "apple" part, so the solve cannot prune itself).
+** rho = sqrt(C² - (y - yc)²) - H <= C - H. The ray is cut to that slab
+** and to the cylinder rho <= C - H; 'tol' widens both, so that a root
+** the solver would find and keep is never cut off by rounding. False
+** when nothing is left: most rays through an ovus's box miss the
+** connection's slab or cylinder. Solving the quartic on the cut span
+** only also drops most roots on the outer "apple" part (which the
+** caller would drop), and with them most of the solver's work.
 */
-static bool spindle_missed(double H, double C, double ylo, double yhi,
-                           vec3 ro, vec3 rd, double t0, double t1,
-                           double tol)
+static bool spindle_span(double H, double C, double ylo, double yhi,
+                         vec3 ro, vec3 rd, double *t0, double *t1,
+                         double tol)
 {
-    double a = t0, b = t1;
+    double a = *t0, b = *t1;
     if (rd.y != 0) {
         double ta = (ylo - tol - ro.y) / rd.y, tb = (yhi + tol - ro.y) / rd.y;
         if (ta > tb) {
@@ -152,21 +152,46 @@ static bool spindle_missed(double H, double C, double ylo, double yhi,
         if (tb < b)
             b = tb;
         if (!(a <= b))
-            return true;
+            return false;
     } else if (!(ro.y >= ylo - tol && ro.y <= yhi + tol)) {
+        return false;
+    }
+    if (!(C > H) || !isfinite(a) || !isfinite(b)) {
+        *t0 = a;
+        *t1 = b;
         return true;
     }
-    if (!(C > H) || !isfinite(a) || !isfinite(b))
-        return false;
+    /* rho² along the ray: dd t² + 2 e t + f, convex */
     double dd = rd.x * rd.x + rd.z * rd.z;
-    double tm = dd > 0 ? -(ro.x * rd.x + ro.z * rd.z) / dd : a;
-    if (!(tm > a))
-        tm = a;
-    if (!(tm < b))
-        tm = b;
-    double x = ro.x + tm * rd.x, z = ro.z + tm * rd.z;
+    double e = ro.x * rd.x + ro.z * rd.z;
+    double f = ro.x * ro.x + ro.z * ro.z;
     double rmax = C - H + tol;
-    return x * x + z * z > rmax * rmax;
+    if (!(dd > 0)) {
+        if (!(f <= rmax * rmax))
+            return false;
+    } else {
+        double disc = e * e - dd * (f - rmax * rmax);
+        if (!(disc >= 0))
+            return false;
+        /* the stable pair of roots, then widened by 'tol' along the ray */
+        double q = -(e + copysign(sqrt(disc), e));
+        double ca = q / dd, cb = q != 0 ? (f - rmax * rmax) / q : ca;
+        if (ca > cb) {
+            double tmp = ca;
+            ca = cb;
+            cb = tmp;
+        }
+        double pad = tol / sqrt(dd);
+        if (ca - pad > a)
+            a = ca - pad;
+        if (cb + pad < b)
+            b = cb + pad;
+        if (!(a <= b))
+            return false;
+    }
+    *t0 = a;
+    *t1 = b;
+    return true;
 }
 
 void geom_spindle_hits(double H, double C, double yc, double ylo,
@@ -177,8 +202,7 @@ void geom_spindle_hits(double H, double C, double yc, double ylo,
     if (!(dl > 0))
         return;
     /* 1e-7 of the size: far beyond the rounding of the roots' points */
-    if (spindle_missed(H, C, ylo, yhi, ro, rd, t0, t1,
-                       1e-7 * (C + H)))
+    if (!spindle_span(H, C, ylo, yhi, ro, rd, &t0, &t1, 1e-7 * (C + H)))
         return;
     vec3 dir = v3_scale(rd, 1 / dl);
     vec3 o = v3_sub(ro, v3(0, yc, 0));

@@ -306,6 +306,24 @@ static int seg_count(enum iris_spline sp, int n, int *step)
     }
 }
 
+/* The Bezier control points of the cubic c[0] s³ + c[1] s² + c[2] s +
+** c[3] of 'cv' (equal powers of s in both forms) and their extent. */
+static void bezier_points(struct geom_curve *cv)
+{
+    const iris_vec2 *c = cv->c;
+    iris_vec2 *b = cv->bz;
+    b[0] = c[3];
+    b[1].u = c[3].u + c[2].u / 3;
+    b[1].v = c[3].v + c[2].v / 3;
+    b[2].u = c[3].u + 2 * c[2].u / 3 + c[1].u / 3;
+    b[2].v = c[3].v + 2 * c[2].v / 3 + c[1].v / 3;
+    b[3].u = c[0].u + c[1].u + c[2].u + c[3].u;
+    b[3].v = c[0].v + c[1].v + c[2].v + c[3].v;
+    cv->ext = 0;
+    for (int k = 0; k < 4; k++)
+        cv->ext = fmax(cv->ext, fmax(fabs(b[k].u), fabs(b[k].v)));
+}
+
 /* Adds spline segment 'i' of 'P': its exact curve (not for linear
 ** splines) and the chords that bound it. */
 static bool add_segment(struct geom_profile *p, enum iris_spline sp,
@@ -318,6 +336,7 @@ static bool add_segment(struct geom_profile *p, enum iris_spline sp,
     if (sp != IRIS_SPLINE_LINEAR) {
         struct geom_curve cv = { .kind = GEOM_CURVE_POLY };
         memcpy(cv.c, c, sizeof cv.c);
+        bezier_points(&cv);
         if ((ci = add_curve(p, &cv)) < 0)
             return false;
     }
@@ -474,7 +493,10 @@ static bool add_prism(struct geom_profile *p, const iris_object *o)
     return geom_profile_close_group(p);
 }
 
-struct geom_profile *geom_prepare(const iris_object *o, const char **why)
+/* The outline of a prism, lathe, sor or text object (geom_prepare()
+** without the bound); NULL for other kinds, and on failure with '*why'. */
+static struct geom_profile *prepare_outline(const iris_object *o,
+                                            const char **why)
 {
     *why = NULL;
     struct geom_profile *p = NULL;
@@ -531,5 +553,25 @@ struct geom_profile *geom_prepare(const iris_object *o, const char **why)
         *why = "the outline is empty";
         return NULL;
     }
+    return p;
+}
+
+struct geom_profile *geom_prepare(const iris_object *o, const char **why)
+{
+    struct geom_profile *p = prepare_outline(o, why);
+    if (*why || !o->bounded_by || !geom_is_analytic(o->kind))
+        return p;
+    if (!p) {
+        /* A shape without an outline gets an empty profile for the
+        ** bound; checked first, as callers check a shape without one */
+        if ((*why = geom_validate(o)) != NULL)
+            return NULL;
+        p = iris_calloc(1, sizeof *p);
+        if (!p) {
+            *why = "out of memory";
+            return NULL;
+        }
+    }
+    geom_bound_prepare(o, p);
     return p;
 }

@@ -90,6 +90,30 @@ void geom_plane_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
         isect_push(out, t, n, 0, 0);
 }
 
+/*
+** POV-Ray's box uv (Box::UVCoord): the box unfolded as a cube cross, each
+** face a quarter of u and a third of v, with 'p' (object space) taken
+** relative to the box, [0,1] per axis. 'axis' is the face's axis and
+** 'side' -1 for its low face (POV-Ray's X0, Y0, Z0), +1 for the high one.
+** The faces read the right way round seen from outside.
+*/
+static iris_vec2 box_uv(vec3 lo, vec3 hi, vec3 p, int axis, double side)
+{
+    /* Only the two coordinates a face uses: divisions are most of it */
+#define BOX_P(c) ((p.c - lo.c) / (hi.c - lo.c))
+    iris_vec2 uv;
+    switch (axis * 2 + (side > 0)) {
+    case 0: uv.u = BOX_P(z) / 4; uv.v = (1 + BOX_P(y)) / 3; break; /* X0 */
+    case 1: uv.u = 0.75 - BOX_P(z) / 4; uv.v = (1 + BOX_P(y)) / 3; break;
+    case 2: uv.u = 0.25 + BOX_P(x) / 4; uv.v = BOX_P(z) / 3; break; /* Y0 */
+    case 3: uv.u = 0.25 + BOX_P(x) / 4; uv.v = 1 - BOX_P(z) / 3; break;
+    case 4: uv.u = 1 - BOX_P(x) / 4; uv.v = (1 + BOX_P(y)) / 3; break;
+    default: uv.u = 0.25 + BOX_P(x) / 4; uv.v = (1 + BOX_P(y)) / 3; break;
+    }
+#undef BOX_P
+    return uv; /* a flat box's 0/0 is NaN: isect_push() makes it 0 */
+}
+
 void geom_box_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
                    double t1, struct isect_list *out)
 {
@@ -132,10 +156,15 @@ void geom_box_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
     double nin[3] = { 0, 0, 0 }, nout[3] = { 0, 0, 0 };
     nin[ain] = sin_;
     nout[aout] = sout;
-    if (tin > t0 && tin < t1)
-        isect_push(out, tin, v3(nin[0], nin[1], nin[2]), 0, 0);
-    if (tout > t0 && tout < t1 && tout > tin)
-        isect_push(out, tout, v3(nout[0], nout[1], nout[2]), 0, 0);
+    /* uv for every crossing: a dozen flops, cheaper than asking later */
+    if (tin > t0 && tin < t1) {
+        iris_vec2 uv = box_uv(lo, hi, v3_madd(ro, rd, tin), ain, sin_);
+        isect_push(out, tin, v3(nin[0], nin[1], nin[2]), uv.u, uv.v);
+    }
+    if (tout > t0 && tout < t1 && tout > tin) {
+        iris_vec2 uv = box_uv(lo, hi, v3_madd(ro, rd, tout), aout, sout);
+        isect_push(out, tout, v3(nout[0], nout[1], nout[2]), uv.u, uv.v);
+    }
 }
 
 /* The cone (or cylinder) frame: base 'a', unit axis 'w', length 'len'. */

@@ -2,11 +2,17 @@
 /*
 ** roots.h: real roots of polynomials, for ray/surface intersection.
 **
-** One method serves every degree (torus quartics, poly of order up to 15,
-** blob quartics): the roots of p lie between consecutive roots of p', so
-** the roots of the derivative (found recursively) isolate them and a
+** Roots are isolated in brackets with one sign change each, and a
 ** safeguarded Newton/bisection refines each bracket to full precision.
-** It never loses a simple root the way closed-form quartic formulas can
+** Up to degree 6 (torus and blob quartics, the cubics of prism and sor
+** curves, the lathe's sextic) the roots of p lie between consecutive
+** roots of p', so the roots of the derivative isolate them (found
+** recursively; a cubic's in closed form). From degree 7 (sphere_sweep's
+** degree-10 envelopes, poly of high order) the Bernstein form on the
+** interval is split until each part shows at most one sign change
+** (Descartes' rule), cheaper than refining every derivative's roots;
+** clustered roots fall back to the derivatives.
+** Neither loses a simple root the way closed-form quartic formulas can
 ** when coefficients cancel, which matters for thin tori seen edge-on.
 ** POV-Ray's 'sturm' keyword asks for exactly this robustness, so it needs
 ** no separate path: every object gets it.

@@ -11,8 +11,11 @@
 ** shapes does. The curved segments of a lathe or sor are intersected
 ** exactly instead (curve_roots: POV-Ray's polynomial in the spline
 ** parameter, or in t for a sor, then a Newton polish), with the curve's
-** own normal and an exact even-odd inside test; prisms and text stay
-** flattened.
+** own normal and an exact even-odd inside test; so are the walls and
+** caps of a linear prism (wall_hits, a cubic per curve), while conic
+** prisms and text stay flattened. A curve whose Bezier control points lie
+** all on one side of the ray's line is skipped before its polynomial is
+** set up (curve_side).
 */
 #include "config.h"
 
@@ -417,6 +420,32 @@ void geom_lathe_hits(const struct geom_profile *p, vec3 ro, vec3 rd,
 }
 
 /*
+** Whether lathe or prism curve 'c' (GEOM_CURVE_POLY) surely stays on one
+** side of the line through (pu, pv) with normal (ku, kv) for parameters
+** s in [-1e-12, 1]: the values of K(s) = (u(s) - pu) ku + (v(s) - pv) kv
+** at the Bezier control points are its Bernstein coefficients, and K lies
+** between the least and the greatest of them (convex hull). All four
+** beyond a margin of 1e-9 of the magnitudes involved, which is far above
+** the rounding of the solver's evaluation of K (~1e-15 of them) and above
+** K's change over the 1e-12 the parameter range reaches below 0: a curve
+** this rejects is one the cubic solver finds no root on, so skipping it
+** changes no answer. Most curves of a prism are rejected so. Returns
+** that side (+1: K > 0, -1: K < 0), or 0 when not proved.
+*/
+static int curve_side(const struct geom_curve *c, double pu, double pv,
+                      double ku, double kv)
+{
+    double m = 1e-9 * (c->ext + fabs(pu) + fabs(pv)) * (fabs(ku) + fabs(kv));
+    int pos = 0, neg = 0;
+    for (int k = 0; k < 4; k++) {
+        double b = (c->bz[k].u - pu) * ku + (c->bz[k].v - pv) * kv;
+        pos += b > m;
+        neg += b < -m;
+    }
+    return pos == 4 ? 1 : neg == 4 ? -1 : 0;
+}
+
+/*
 ** Whether the +u ray from (u, v) crosses curve 'c' an odd number of times
 ** (the even-odd rule on the exact curve, as for the chords in
 ** geom_profile_inside2d; heights half-open as curve_roots' parameters).
@@ -432,6 +461,10 @@ static bool curve_parity(const struct geom_curve *c, double u, double v)
                    c->c[3].u;
         return f > 0 && sqrt(f) > u;
     }
+    /* The curve away from the line v, or wholly left of u (a margin
+    ** beyond rounding, curve_side): no crossing to the right */
+    if (curve_side(c, 0, v, 0, 1) != 0 || curve_side(c, u, 0, 1, 0) < 0)
+        return false;
     const iris_vec2 *q = c->c;
     double w[4] = { q[3].v - v, q[2].v, q[1].v, q[0].v };
     double U[4] = { q[3].u, q[2].u, q[1].u, q[0].u };
@@ -452,9 +485,10 @@ static bool exact_inside2d(const struct geom_profile *p, double u, double v)
     bool parity = false;
     for (int i = 0; i < p->n_seg; i++) {
         if (p->curve[i] >= 0) {
-            parity ^= curve_parity(&p->curves[p->curve[i]], u, v);
-            while (i + 1 < p->n_seg && p->curve[i + 1] == p->curve[i])
-                i++;
+            /* its pieces are i .. first + n - 1 (profile_finish) */
+            const struct geom_curve *c = &p->curves[p->curve[i]];
+            parity ^= curve_parity(c, u, v);
+            i = c->first + c->n - 1;
             continue;
         }
         iris_vec2 a = p->a[i], b = p->b[i];
@@ -498,7 +532,12 @@ bool geom_extrude_inside(const struct geom_profile *p, int axis, vec3 q)
 {
     double u, v, h;
     split(q, axis, &u, &v, &h);
-    if (!(h > p->h1 && h < p->h2))
+    /* POV-Ray's faces: Prism::Inside takes height1 <= y < height2 (the
+    ** bottom inside, the top not), TrueType::Inside 0 <= z <= depth
+    ** (both faces inside); they decide coplanar CSG faces and object
+    ** patterns on them (tests/render/scenes/151) */
+    bool text = axis == 2;
+    if (!(h >= p->h1 && (text ? h <= p->h2 : h < p->h2)))
         return false;
     if (p->conic) {
         if (!(h > 0))
@@ -572,7 +611,12 @@ static void wall_hits(const struct geom_profile *p, int i, int e, int axis,
     double dd = du * du + dv * dv;
     if (!(dd > 0))
         return;
-    const iris_vec2 *q = p->curves[p->curve[i]].c;
+    const struct geom_curve *c = &p->curves[p->curve[i]];
+    /* The ray's shadow is the line K = 0 below: a curve wholly to one
+    ** side of it has no crossing (curve_side) */
+    if (curve_side(c, ou, ov, dv, -du) != 0)
+        return;
+    const iris_vec2 *q = c->c;
     double U[4] = { q[3].u, q[2].u, q[1].u, q[0].u };
     double W[4] = { q[3].v, q[2].v, q[1].v, q[0].v };
     double K[4], r[3];

@@ -144,6 +144,39 @@ static FT_Error open_face(FT_Library lib, const char *path, FT_Face *face)
     return FT_New_Face(lib, buf, 0, face);
 }
 
+/*
+** The character map POV-Ray 3.7 reads for a string in its default
+** charset (ASCII; truetype.cpp ProcessCharMap with platform order 1, 3,
+** 0): the first table of platform 1 (Macintosh), else the first of
+** platform 3 (Microsoft, whatever its encoding, so also a symbol font's),
+** else of platform 0 (Unicode); NULL when there is none. FreeType's own
+** choice prefers Unicode: povlogo.ttf's Microsoft table is a symbol one
+** where 'P' has no glyph, while its Macintosh table gives 'P' the logo
+** (tests/unit/test_geom.c, POV-Ray's max_extent of "POV").
+*/
+static FT_CharMap pov_charmap(FT_Face face)
+{
+    static const int order[3] = { 1, 3, 0 };
+    for (int j = 0; j < 3; j++)
+        for (int i = 0; i < face->num_charmaps; i++)
+            if (face->charmaps[i]->platform_id == order[j])
+                return face->charmaps[i];
+    return NULL;
+}
+
+/* Glyph index of code point 'ch': ASCII through POV-Ray's table, the
+** rest (iris reads strings as UTF-8) through FreeType's Unicode one. */
+static FT_UInt glyph_index(FT_Face face, FT_CharMap pov, FT_CharMap uni,
+                           unsigned long ch)
+{
+    FT_CharMap want = ch < 128 && pov ? pov : uni;
+    if (!want)
+        return 0;
+    if (face->charmap != want && FT_Set_Charmap(face, want))
+        return 0;
+    return FT_Get_Char_Index(face, ch);
+}
+
 struct geom_profile *geom_text_profile(const iris_object *o, const char **why)
 {
     *why = NULL;
@@ -174,11 +207,12 @@ struct geom_profile *geom_text_profile(const iris_object *o, const char **why)
     ** added after each glyph. */
     double x = 0, y = 0;
     FT_UInt prev = 0;
+    FT_CharMap pov = pov_charmap(face), uni = face->charmap;
     bool first = true;
     const unsigned char *s = (const unsigned char *)o->u.text.string;
     while (*s && c.ok) {
         unsigned long ch = utf8_next(&s);
-        FT_UInt gi = FT_Get_Char_Index(face, ch);
+        FT_UInt gi = glyph_index(face, pov, uni, ch);
         double kern = 0;
         if (!first && prev && gi && FT_HAS_KERNING(face)) {
             FT_Vector k;

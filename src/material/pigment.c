@@ -13,6 +13,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "image/srgb8.h"
 #include "iris/image.h"
 #include "material/mat_internal.h"
 
@@ -240,7 +241,11 @@ const iris_image *mat_find_image(const struct mat_ctx *ctx,
 /* x mod w in [0, w). */
 static double wrap(double x, double w)
 {
-    double r = fmod(x, w);
+    /* fmod() is a library call per texel; within one period either side
+    ** of [0, w) it returns x itself, exactly, so those need none */
+    if (x >= 0 && x < w)
+        return x;
+    double r = x >= -w && x < 0 ? x : fmod(x, w);
     if (r < 0)
         r += w;
     if (r >= w)
@@ -367,6 +372,92 @@ static iris_colour texel(const struct mat_image *mi, const iris_image *img,
     return c;
 }
 
+/*
+** The conversions of a texel channel value 'v' that take powers (below:
+** to_stored, image_to_working), with parameters 'a' and 'b'.
+*/
+enum texel_conv {
+    CONV_STORED_GAMMA,   /* the stored value, to the power a ('gamma') */
+    CONV_WORKING_GAMMA,  /* that, then into working gamma b */
+    CONV_WORKING         /* the decoded value into working gamma b */
+};
+
+/* iris_srgb_encode(v); by srgb8's table for a texel value (a float). */
+static double encode_texel(double v)
+{
+    return (double)(float)v == v ? srgb8_encode((float)v)
+                                 : iris_srgb_encode(v);
+}
+
+static double conv_compute(enum texel_conv kind, double a, double b,
+                           double v)
+{
+    switch (kind) {
+    case CONV_STORED_GAMMA: {
+        double s = encode_texel(v);
+        return s > 0 ? pow(s, a) : s;
+    }
+    case CONV_WORKING_GAMMA: {
+        /* 'gamma G' (POV-Ray's gammaOverride): the stored values decoded
+        ** as v^G, then put into the working gamma */
+        double s = encode_texel(v);
+        double lin = s > 0 ? pow(s, a) : s;
+        return b > 0 && b != 1.0 && lin > 0 ? pow(lin, 1.0 / b) : lin;
+    }
+    case CONV_WORKING:
+    default:
+        return v > 0 ? pow(v, 1.0 / b) : v;
+    }
+}
+
+/*
+** conv_compute() for a texel channel, from a table when the value is one
+** decoded from 8-bit data (image/srgb8.h): each entry is filled on first
+** use by conv_compute() itself, so it holds the same bits, and a texel
+** then costs a lookup instead of one to three pow() calls (a third of a
+** bump-mapped scene's time, parity 37). The tables belong to the thread
+** (no locks; rendering does not depend on which thread filled what) and
+** hold the last CONV_SLOTS conversions used; an entry not yet filled is
+** NaN, which no conversion of a finite value >= 0 gives.
+*/
+#define CONV_SLOTS 4
+struct conv_table {
+    bool used;
+    enum texel_conv kind;
+    double a, b;
+    double v[SRGB8_N];
+};
+static _Thread_local struct conv_table conv_tables[CONV_SLOTS];
+static _Thread_local int conv_next;
+
+static double conv_texel(enum texel_conv kind, double a, double b, double v)
+{
+    int k = srgb8_index((float)v);
+    if (k < 0 || (double)(float)v != v)
+        return conv_compute(kind, a, b, v);
+    struct conv_table *t = NULL;
+    for (int i = 0; i < CONV_SLOTS; i++) {
+        struct conv_table *c = &conv_tables[i];
+        if (c->used && c->kind == kind && c->a == a && c->b == b) {
+            t = c;
+            break;
+        }
+    }
+    if (!t) {
+        t = &conv_tables[conv_next];
+        conv_next = (conv_next + 1) % CONV_SLOTS;
+        t->used = true;
+        t->kind = kind;
+        t->a = a;
+        t->b = b;
+        for (int i = 0; i < SRGB8_N; i++)
+            t->v[i] = NAN;
+    }
+    if (isnan(t->v[k]))
+        t->v[k] = conv_compute(kind, a, b, srgb8_value(k));
+    return t->v[k];
+}
+
 /* A texel's colour as the file stores it (iris_image_read decodes 8-bit
 ** files from sRGB): for the images POV-Ray reads without gamma handling.
 ** An explicit 'gamma G' decodes the stored values as v^G (POV-Ray's
@@ -374,10 +465,10 @@ static iris_colour texel(const struct mat_image *mi, const iris_image *img,
 static void to_stored(const iris_image_ref *ref, iris_colour *c)
 {
     double *ch[3] = { &c->r, &c->g, &c->b };
-    for (int k = 0; k < 3; k++) {
-        double v = iris_srgb_encode(*ch[k]);
-        *ch[k] = ref->gamma > 0 && v > 0 ? pow(v, ref->gamma) : v;
-    }
+    for (int k = 0; k < 3; k++)
+        *ch[k] = ref->gamma > 0
+                     ? conv_texel(CONV_STORED_GAMMA, ref->gamma, 0, *ch[k])
+                     : encode_texel(*ch[k]);
 }
 
 /* The image's colour at image coordinates (x, y), interpolated as the
@@ -526,16 +617,12 @@ static void image_to_working(const struct mat_ctx *ctx,
     double *ch[3] = { &c->r, &c->g, &c->b };
     for (int k = 0; k < 3; k++) {
         double v = *ch[k];
-        if (ref->gamma > 0) {
-            /* 'gamma G' (POV-Ray's gammaOverride): the stored values
-            ** decoded as v^G, then put into the working gamma */
-            double s = iris_srgb_encode(v);
-            double lin = s > 0 ? pow(s, ref->gamma) : s;
-            *ch[k] = g > 0 && g != 1.0 && lin > 0 ? pow(lin, 1.0 / g) : lin;
-        } else if (legacy)
-            *ch[k] = iris_srgb_encode(v);
+        if (ref->gamma > 0)
+            *ch[k] = conv_texel(CONV_WORKING_GAMMA, ref->gamma, g, v);
+        else if (legacy)
+            *ch[k] = encode_texel(v);
         else if (g > 0 && g != 1.0)
-            *ch[k] = v > 0 ? pow(v, 1.0 / g) : v;
+            *ch[k] = conv_texel(CONV_WORKING, 0, g, v);
     }
 }
 

@@ -29,3 +29,13 @@ TESTS += tests/unit/test_csgbox
 tests_unit_test_csgbox_SOURCES = tests/unit/test_csgbox.c tests/testutil.h
 tests_unit_test_csgbox_CFLAGS = $(TEST_CFLAGS)
 tests_unit_test_csgbox_LDADD = $(TEST_LDADD)
+check_PROGRAMS += tests/unit/test_roots_cubic tests/unit/test_geom_bound
+TESTS += tests/unit/test_roots_cubic tests/unit/test_geom_bound
+tests_unit_test_roots_cubic_SOURCES = tests/unit/test_roots_cubic.c \
+	tests/testutil.h
+tests_unit_test_roots_cubic_CFLAGS = $(TEST_CFLAGS)
+tests_unit_test_roots_cubic_LDADD = $(TEST_LDADD)
+tests_unit_test_geom_bound_SOURCES = tests/unit/test_geom_bound.c \
+	tests/testutil.h
+tests_unit_test_geom_bound_CFLAGS = $(TEST_CFLAGS)
+tests_unit_test_geom_bound_LDADD = $(TEST_LDADD)
