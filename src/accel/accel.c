@@ -665,7 +665,8 @@ static void plane_prepare(struct anode *n)
 
 static bool place(struct accel *a, struct anode *n)
 {
-    if (n->kind == AN_CSG && n->op == AN_UNION && n->n_clips == 0) {
+    if (n->kind == AN_CSG && n->op == AN_UNION && n->n_clips == 0 &&
+        !n->obj->bounded_by) {
         for (int i = 0; i < n->n_kids; i++)
             if (!place(a, n->kids[i]))
                 return false;
@@ -926,6 +927,13 @@ static bool finite_v(vec3 v)
     return v.x * 0.0 + v.y * 0.0 + v.z * 0.0 == 0.0;
 }
 
+/* finite_v() of two vectors in one test. */
+static bool finite_v2(vec3 a, vec3 b)
+{
+    return (a.x * 0.0 + a.y * 0.0 + a.z * 0.0) +
+               (b.x * 0.0 + b.y * 0.0 + b.z * 0.0) == 0.0;
+}
+
 /*
 ** The offset for a ray leaving world point 'p' on 'leaf' (see accel.h).
 ** A secondary ray meets its own surface again at t ~ (rounding error of
@@ -979,6 +987,31 @@ static inline bool box_may_hit(vec3 lo, vec3 hi, vec3 o, vec3 inv, double t0,
     return true;
 }
 
+/* One axis of box_may_hit() with a finite 1/d, the same operations in the
+** same order, written as selections the compiler can make without
+** branches (whether a box's slab narrows the interval is as random as
+** the rays). */
+static inline bool slab_narrow(double lo, double hi, double o, double inv,
+                               double *a, double *b)
+{
+    double ta = (lo - o) * inv, tb = (hi - o) * inv;
+    double tn = ta > tb ? tb : ta, tf = ta > tb ? ta : tb;
+    *a = tn > *a ? tn : *a;
+    *b = tf < *b ? tf : *b;
+    return !(*a > *b + 1e-12 * (fabs(*a) + fabs(*b)));
+}
+
+/* box_may_hit() when no axis of 'inv' is infinite (the caller knows it
+** once for all boxes of a query). */
+static inline bool box_may_hit_finite(vec3 lo, vec3 hi, vec3 o, vec3 inv,
+                                      double t0, double t1)
+{
+    double a = t0, b = t1;
+    return slab_narrow(lo.x, hi.x, o.x, inv.x, &a, &b) &&
+           slab_narrow(lo.y, hi.y, o.y, inv.y, &a, &b) &&
+           slab_narrow(lo.z, hi.z, o.z, inv.z, &a, &b);
+}
+
 /*
 ** node_nearest() of a plane_fast leaf (plane_prepare): node.c
 ** plane_nearest() step for step, without its calls and with the normal
@@ -1015,8 +1048,7 @@ static inline bool plane_nearest(const struct anode *n, vec3 o, vec3 d,
 bool accel_intersect(const struct accel *a, const ray *r, double tmin,
                      double tmax, unsigned skip, struct hit *h)
 {
-    if (!a || !r || !finite_v(r->o) || !finite_v(r->d) || !(tmax > tmin) ||
-        isnan(tmin))
+    if (!a || !r || !finite_v2(r->o, r->d) || !(tmax > tmin) || isnan(tmin))
         return false;
     /* Every field the query reads is set: a memset of the whole context
     ** (with its inline hit) was a visible part of a query's cost */
@@ -1052,9 +1084,15 @@ bool accel_intersect(const struct accel *a, const ray *r, double tmin,
 
     if (a->linear) {
         vec3 inv = v3(1 / q.d.x, 1 / q.d.y, 1 / q.d.z);
+        /* a direction along an axis has an infinite 1/d: asked once per
+        ** query, not per box and axis */
+        bool inv_finite = finite_v(inv);
         for (int i = 0; i < a->n_user; i++) {
             const struct anode *n = a->user[i];
-            if (!box_may_hit(n->lo, n->hi, q.o, inv, q.tmin, q.tmax))
+            if (!(inv_finite
+                      ? box_may_hit_finite(n->lo, n->hi, q.o, inv, q.tmin,
+                                           q.tmax)
+                      : box_may_hit(n->lo, n->hi, q.o, inv, q.tmin, q.tmax)))
                 continue;
             if (node_nearest_in_box(n, q.o, q.d, q.tmin, q.tmax, skip,
                                     &q.best)) {
@@ -1096,8 +1134,8 @@ bool accel_intersect(const struct accel *a, const ray *r, double tmin,
     }
     h->interior = leaf->obj->interior;
     h->eps = hit_epsilon(a, leaf, h->p);
-    if (!isfinite(h->t) || !finite_v(h->p) || !finite_v(h->n) ||
-        !finite_v(h->shading_n) || !(v3_len2(h->n) > 0))
+    if (!(h->t * 0.0 + (h->p.x * 0.0 + h->p.y * 0.0 + h->p.z * 0.0) == 0.0) ||
+        !finite_v2(h->n, h->shading_n) || !(v3_len2(h->n) > 0))
         return false;
     if (!isfinite(h->uv.u) || !isfinite(h->uv.v))
         h->uv.u = h->uv.v = 0;

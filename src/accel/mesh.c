@@ -192,7 +192,9 @@ void qctx_embree_ray(const struct qctx *q, struct RTCRayHit *rh)
     /* Embree works in float: open its window a little on both sides and
     ** let the double-precision callbacks decide (half of tmin, and 1e-6
     ** relative beyond tmax, are far wider than float rounding) */
-    rh->ray.tnear = (float)fmax(0, 0.5 * q->tmin);
+    /* fmax(0, 0.5 tmin) without libm's call: NaN and -0 give +0 too */
+    double tnear = 0.5 * q->tmin;
+    rh->ray.tnear = tnear > 0 ? (float)tnear : 0.0f;
     rh->ray.tfar = isfinite(q->tmax) && q->tmax < 1e37
                        ? (float)(q->tmax * (1 + 1e-6)) + 1e-30f
                        : INFINITY;

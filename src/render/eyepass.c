@@ -39,6 +39,8 @@
 /* Sampling                                                             */
 /* ------------------------------------------------------------------ */
 
+struct px;
+
 struct job {
     const iris_scene *scene;
     const iris_render_options *opts;
@@ -63,20 +65,21 @@ struct job {
     atomic_int tiles_done;
     atomic_int interrupted;
     atomic_int alloc_failed;
+    struct px **tile_buf;      /* per thread: method 1's tile buffer,
+                                  allocated at its first tile */
 };
 
 /* llround() for the finite, small values below, without its library
 ** call (once per sample): v - trunc(v) is exact, so halves round away
-** from zero exactly as llround() does. */
+** from zero exactly as llround() does. The two comparisons are added as
+** integers, not branched on: the fraction of a jittered sample's
+** position is random (callgrind's branch model mispredicted these
+** branches on most samples). */
 static int64_t round_half_away(double v)
 {
     int64_t i = (int64_t)v;
     double f = v - (double)i;
-    if (f >= 0.5)
-        i++;
-    else if (f <= -0.5)
-        i--;
-    return i;
+    return i + (int64_t)(f >= 0.5) - (int64_t)(f <= -0.5);
 }
 
 /* A stream key from an image position, so that a sample gets the same
@@ -96,8 +99,8 @@ static bool trace_one(struct job *j, struct trace_ctx *c, double x,
 {
     /* blur rays of one sample may share an image position: their streams
     ** are told apart by the ray number */
-    rng_seed(&c->rng, j->opts->seed, 1,
-             pos_key(x, y) ^ ((uint64_t)nr * 0x9e3779b97f4a7c15u));
+    rng_lazy_seed(&c->rng, j->opts->seed, 1,
+                  pos_key(x, y) ^ ((uint64_t)nr * 0x9e3779b97f4a7c15u));
     /* Only the used part of the interior stack is set: clearing and
     ** copying the whole struct cost more than a simple scene's shading. */
     struct tray r;
@@ -134,12 +137,12 @@ static bool trace_one(struct job *j, struct trace_ctx *c, double x,
     c->level = 0;
     trace_ray(c, &r, 1.0, false, rgb);
     rgb[3] = c->transm;
-    for (int k = 0; k < NCH; k++)
-        if (!isfinite(rgb[k])) {
-            rgb[0] = rgb[1] = rgb[2] = rgb[3] = 0.0;
-            atomic_fetch_add(&j->nan_count, 1);
-            break;
-        }
+    /* v * 0 is 0 for finite v, NaN for an infinity or NaN: one test for
+    ** the four channels */
+    if (!(rgb[0] * 0.0 + rgb[1] * 0.0 + rgb[2] * 0.0 + rgb[3] * 0.0 == 0.0)) {
+        rgb[0] = rgb[1] = rgb[2] = rgb[3] = 0.0;
+        atomic_fetch_add(&j->nan_count, 1);
+    }
     return c->spectral;
 }
 
@@ -229,6 +232,39 @@ void eye_aa_gamma_init(struct eye_aa_gamma *a, double aa_gamma)
     a->fast = a->e != 1.0 && a->e > 0.0 && a->e <= 4.0;
     a->rel = 2.0 * (a->e * 0x1p-24 + fabs(a->e - (double)a->ef) * 14.0 +
                     0x1p-23);
+    /* The table: linear interpolation of f(v) = v^e over a segment
+    ** [x0, x0 (1 + 1/128)] errs by at most h^2/8 max|f''| with h = x0/128,
+    ** and for 0 < e < 1 |f''| = e (1 - e) v^(e-2) is largest at x0, so by
+    ** e (1 - e) / (8 * 128^2) of f(x0) <= f(v). The first octave's
+    ** entries come from pow() (within an ulp), each further octave's from
+    ** the one below times 2^e (half an ulp more per octave, 23 octaves:
+    ** 12 ulps, 3e-15), and the interpolation adds a few roundings: 1e-14
+    ** covers them. Doubled, as rel is. Half the cost of powf(); the table
+    ** costs 129 pow() calls per render. */
+    a->lut = a->e > 0.0 && a->e < 1.0;
+    a->lut_rel = 2.0 * (a->e * (1.0 - a->e) / (8.0 * 128.0 * 128.0) + 1e-14);
+    if (a->lut) {
+        double step = pow(2.0, a->e);
+        for (int i = 0; i <= EYE_AA_LUT_N; i++)
+            a->tab[i] = i < 128 ? pow(ldexp(1.0 + i / 128.0, EYE_AA_LUT_LO),
+                                      a->e)
+                                : a->tab[i - 128] * step;
+    }
+}
+
+/* v^e from the table, for v in [2^EYE_AA_LUT_LO, 2^EYE_AA_LUT_HI) (else
+** false). The double's exponent and top 7 mantissa bits pick the segment;
+** its 45 lower mantissa bits are, exactly, where v lies in it. */
+static inline bool aa_lut(const struct eye_aa_gamma *a, double v, double *g)
+{
+    uint64_t bits;
+    memcpy(&bits, &v, sizeof bits);
+    int64_t i = (int64_t)(bits >> 45) - (int64_t)(1023 + EYE_AA_LUT_LO) * 128;
+    if (i < 0 || i >= EYE_AA_LUT_N)
+        return false;
+    double t = (double)(bits & ((UINT64_C(1) << 45) - 1)) * 0x1p-45;
+    *g = a->tab[i] + t * (a->tab[i + 1] - a->tab[i]);
+    return true;
 }
 
 double eye_aa_gamma_apply(const struct eye_aa_gamma *a, const double c[3],
@@ -239,6 +275,8 @@ double eye_aa_gamma_apply(const struct eye_aa_gamma *a, const double c[3],
         double v = c[k] > 0.0 ? c[k] : 0.0; /* fmax(c, 0): no call */
         if (a->e == 1.0 || (v == 0.0 && a->e > 0.0)) {
             g[k] = v;            /* pow(v, 1) = v, pow(0, e > 0) = 0 */
+        } else if (a->lut && aa_lut(a, v, &g[k])) {
+            err += g[k] * a->lut_rel;
         } else if (a->fast && v >= 1e-6 && v <= 1e6) {
             g[k] = powf((float)v, a->ef);
             err += g[k] * a->rel;
@@ -361,7 +399,9 @@ static void put_pixel(struct job *j, int x, int y, const double in[NCH],
     if (spectral)
         eye_gamut_map(col);
     for (int k = 0; k < 3; k++) {
-        double v = fmax(col[k], 0.0);
+        /* fmax(col, 0) without libm's call (col is finite here), -0 kept
+        ** as glibc's fmax(-0, 0) keeps it */
+        double v = col[k] < 0.0 ? 0.0 : col[k];
         /* from the working gamma space to linear light (§3.9) */
         if (t->gamma_off)
             v = iris_srgb_decode(fmin(v, 1.0));
@@ -370,22 +410,21 @@ static void put_pixel(struct job *j, int x, int y, const double in[NCH],
         px[k] = (float)v;
     }
     double a = isfinite(in[3]) ? 1.0 - in[3] : 1.0;
-    px[3] = j->opts->alpha ? (float)fmin(fmax(a, 0.0), 1.0) : 1.0f;
+    px[3] = j->opts->alpha ? (float)(a < 0.0 ? 0.0 : a > 1.0 ? 1.0 : a) : 1.0f;
 }
 
 /* The tile's pixel (x, y) in a buffer with one extra row and column on
 ** the top and left. */
 #define TB(buf, x, y) (buf)[((y) - ty0 + 1) * (tw + 2) + ((x) - tx0 + 1)]
 
-static void tile_method1(struct job *j, struct trace_ctx *c, int tx0,
-                         int ty0, int tx1, int ty1)
+/* Method 1 over one tile. The buffer 'buf' of (TILE + 2)^2 samples is the
+** thread's, reused from tile to tile without clearing (a calloc per tile
+** was 1 % of a simple scene's render): every sample is written before it
+** is read, 'done' included. */
+static void tile_method1(struct job *j, struct trace_ctx *c, struct px *buf,
+                         int tx0, int ty0, int tx1, int ty1)
 {
-    int tw = tx1 - tx0 + 1, th = ty1 - ty0 + 1;
-    struct px *buf = iris_calloc((size_t)(tw + 2) * (th + 2), sizeof *buf);
-    if (!buf) {
-        atomic_store(&j->alloc_failed, 1);
-        return;
-    }
+    int tw = tx1 - tx0 + 1;
     for (int x = tx0; x <= tx1; x++) {
         TB(buf, x, ty0 - 1).spectral =
             trace_sample(j, c, x, ty0 - 1, TB(buf, x, ty0 - 1).c);
@@ -401,6 +440,7 @@ static void tile_method1(struct job *j, struct trace_ctx *c, int tx0,
             struct px *cur = &TB(buf, x, y), *left = &TB(buf, x - 1, y),
                       *top = &TB(buf, x, y - 1);
             cur->spectral = trace_sample(j, c, x, y, cur->c);
+            cur->done = false;
             px_gamma(j, cur);
             bool ldiff = aa_differs(j, left, cur);
             bool tdiff = aa_differs(j, top, cur);
@@ -426,7 +466,6 @@ static void tile_method1(struct job *j, struct trace_ctx *c, int tx0,
     for (int y = ty0; y <= ty1; y++)
         for (int x = tx0; x <= tx1; x++)
             put_pixel(j, x, y, TB(buf, x, y).c, TB(buf, x, y).spectral);
-    iris_free(buf);
 }
 
 /* Method 2's per-pixel subdivision buffer of (2^R + 1)^2 samples. */
@@ -549,7 +588,14 @@ static void run_tile(void *ctx, int64_t item, int thread)
     gather_tile_begin(c); /* radiosity records stay in their tile */
     switch (j->aa) {
     case IRIS_AA_POV1:
-        tile_method1(j, c, x0, y0, x1, y1);
+        if (!j->tile_buf[thread])
+            j->tile_buf[thread] = iris_malloc((size_t)(TILE + 2) *
+                                              (TILE + 2) * sizeof(struct px));
+        if (!j->tile_buf[thread]) {
+            atomic_store(&j->alloc_failed, 1);
+            break;
+        }
+        tile_method1(j, c, j->tile_buf[thread], x0, y0, x1, y1);
         break;
     case IRIS_AA_POV2:
         tile_method2(j, c, x0, y0, x1, y1);
@@ -679,7 +725,10 @@ enum iris_status eyepass_run(const struct tracer *tr,
     else if (j.ortho)
         j.has_blur_cl = eye_origins(tr, &j, &j.blur_cl);
     j.ctx = iris_calloc((size_t)threads, sizeof *j.ctx);
-    if (!j.ctx) {
+    j.tile_buf = iris_calloc((size_t)threads, sizeof *j.tile_buf);
+    if (!j.ctx || !j.tile_buf) {
+        iris_free(j.ctx);
+        iris_free(j.tile_buf);
         if (j.blur)
             focal_blur_fini(&j.fb);
         return IRIS_ENOMEM;
@@ -720,6 +769,9 @@ enum iris_status eyepass_run(const struct tracer *tr,
     for (int i = 0; i < n_ctx; i++)
         trace_ctx_fini(&j.ctx[i]);
     iris_free(j.ctx);
+    for (int i = 0; i < threads; i++)
+        iris_free(j.tile_buf[i]);
+    iris_free(j.tile_buf);
     gather_end(&gt);
     if (j.blur)
         focal_blur_fini(&j.fb);

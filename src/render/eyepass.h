@@ -35,14 +35,24 @@ bool eye_window(const iris_render_options *opts, int *x0, int *x1, int *y0,
 ** The colour POV-Ray's AA threshold compares: each channel, clipped at 0,
 ** to the power e = 1/aa_gamma (§4.1). eye_aa_gamma_apply() writes it to
 ** 'g' and returns a bound on sum |g - pow(c, e)|: 0 where it used pow()
-** (or e is 1), else at most g * rel per channel from a float powf().
+** (or e is 1), else at most g * rel per channel from a float powf(), or
+** g * lut_rel from the interpolated table (0 < e < 1, the usual
+** aa_gamma 2.5 among them).
 ** The eye pass uses the bound to redo the rare comparisons it could flip.
 */
+/* The table of the fast path for 0 < e < 1: v^e at 128 points per octave
+** over [2^EYE_AA_LUT_LO, 2^EYE_AA_LUT_HI), linearly interpolated. */
+#define EYE_AA_LUT_LO (-19)
+#define EYE_AA_LUT_HI 4
+#define EYE_AA_LUT_N ((EYE_AA_LUT_HI - EYE_AA_LUT_LO) * 128)
 struct eye_aa_gamma {
     double e;                  /* 1 / aa_gamma */
     float ef;                  /* e rounded to float */
     double rel;                /* relative error bound of the fast path */
     bool fast;                 /* e allows the float path */
+    bool lut;                  /* 0 < e < 1: the table instead of powf */
+    double lut_rel;            /* relative error bound of the table */
+    double tab[EYE_AA_LUT_N + 1];
 };
 void eye_aa_gamma_init(struct eye_aa_gamma *a, double aa_gamma);
 double eye_aa_gamma_apply(const struct eye_aa_gamma *a, const double c[3],

@@ -790,8 +790,9 @@ static void pre_tile(void *vctx, int64_t item, int thread)
                 for (int i = 0; i < r.st.n; i++)
                     r.st.e[i] = j->cam->e[i];
             }
-            rng_seed(&c->rng, j->opts->seed, 0x67617468ULL + (uint64_t)j->round,
-                     ((uint64_t)(uint32_t)y << 32) | (uint32_t)x);
+            rng_lazy_seed(&c->rng, j->opts->seed,
+                          0x67617468ULL + (uint64_t)j->round,
+                          ((uint64_t)(uint32_t)y << 32) | (uint32_t)x);
             c->level = 0;
             c->spectral = false;
             double rgb[3];

@@ -43,32 +43,6 @@ void light_prepare(const iris_light *l, struct rlight *out)
     out->fill = l->shadowless;
 }
 
-void light_ray(const struct rlight *l, vec3 p, vec3 jitter, vec3 *L,
-               double *depth)
-{
-    vec3 centre = v3_add(l->centre, jitter);
-    if (l->cylinder) {
-        vec3 d = v3_sub(centre, l->points_at);
-        double len = v3_len(d);
-        *depth = len > 0 ? v3_dot(v3_sub(centre, p), d) / len : 0;
-        *L = len > 0 ? v3_scale(d, 1.0 / len) : v3(0, 1, 0);
-    } else {
-        vec3 d = v3_sub(centre, p);
-        *depth = v3_len(d);
-        *L = *depth > 0 ? v3_scale(d, 1.0 / *depth) : v3(0, 1, 0);
-    }
-    if (l->parallel) {
-        if (l->area) {
-            vec3 v1 = v3_norm(v3_sub(centre, l->points_at));
-            *depth *= v3_dot(v1, *L);
-            *L = v1;
-        } else {
-            *depth *= -v3_dot(l->dir, *L);
-            *L = v3_neg(l->dir);
-        }
-    }
-}
-
 double light_smoothstep(double low, double high, double pos)
 {
     if (pos < low)
@@ -79,8 +53,8 @@ double light_smoothstep(double low, double high, double pos)
     return (3 - 2 * pos) * pos * pos;
 }
 
-double light_attenuation(const struct rlight *l, vec3 p, vec3 L,
-                         double depth)
+double light_attenuation_full(const struct rlight *l, vec3 p, vec3 L,
+                              double depth)
 {
     double att = 1.0;
     if (l->spot) {
@@ -112,28 +86,9 @@ double light_attenuation(const struct rlight *l, vec3 p, vec3 L,
     return isfinite(att) ? att : 0.0;
 }
 
-vec3 light_area_offset(const struct rlight *l, vec3 a1, vec3 a2, double u,
-                       double v)
+bool light_through_object(const struct rlight *l, vec3 p, double tmin,
+                          vec3 L, double *depth)
 {
-    if (l->src->circular) {
-        double ju = (l->size1 > 1 ? u / (l->size1 - 1) : 0.5) - 0.5 + 0.001;
-        double jv = (l->size2 > 1 ? v / (l->size2 - 1) : 0.5) - 0.5 + 0.001;
-        double s = fmax(fabs(ju), fabs(jv)) / sqrt(ju * ju + jv * jv);
-        return v3_add(v3_scale(a1, ju * s), v3_scale(a2, jv * s));
-    }
-    vec3 o = v3(0, 0, 0);
-    if (l->size1 > 1)
-        o = v3_madd(o, a1, u / (double)(l->size1 - 1) - 0.5);
-    if (l->size2 > 1)
-        o = v3_madd(o, a2, v / (double)(l->size2 - 1) - 0.5);
-    return o;
-}
-
-bool light_through(const struct rlight *l, vec3 p, double tmin, vec3 L,
-                   double *depth)
-{
-    if (!l->through)
-        return true;
     ray r = { p, L };
     struct hit h;
     if (!l->through->intersect(l->through->impl, &r, tmin, *depth, 0, &h) ||

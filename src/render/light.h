@@ -10,6 +10,7 @@
 #ifndef IRIS_RENDER_LIGHT_H
 #define IRIS_RENDER_LIGHT_H
 
+#include <math.h>
 #include <stdbool.h>
 
 #include "iris/scene.h"
@@ -43,16 +44,52 @@ void light_prepare(const iris_light *l, struct rlight *out);
 ** POV-Ray's ComputeOneWhiteLightRay: the unit direction '*L' from 'p'
 ** towards the light (centre moved by 'jitter') and the distance '*depth'
 ** along it, projected for parallel and cylinder lights.
+** Inline, as light_area_offset(): called per shadow ray, and area lights
+** call them per grid sample (the calls' vec3 arguments on the stack were
+** 5-10 % of an area-light scene's render).
 */
-void light_ray(const struct rlight *l, vec3 p, vec3 jitter, vec3 *L,
-               double *depth);
+static inline void light_ray(const struct rlight *l, vec3 p, vec3 jitter,
+                             vec3 *L, double *depth)
+{
+    vec3 centre = v3_add(l->centre, jitter);
+    if (l->cylinder) {
+        vec3 d = v3_sub(centre, l->points_at);
+        double len = v3_len(d);
+        *depth = len > 0 ? v3_dot(v3_sub(centre, p), d) / len : 0;
+        *L = len > 0 ? v3_scale(d, 1.0 / len) : v3(0, 1, 0);
+    } else {
+        vec3 d = v3_sub(centre, p);
+        *depth = v3_len(d);
+        *L = *depth > 0 ? v3_scale(d, 1.0 / *depth) : v3(0, 1, 0);
+    }
+    if (l->parallel) {
+        if (l->area) {
+            vec3 v1 = v3_norm(v3_sub(centre, l->points_at));
+            *depth *= v3_dot(v1, *L);
+            *L = v1;
+        } else {
+            *depth *= -v3_dot(l->dir, *L);
+            *L = v3_neg(l->dir);
+        }
+    }
+}
 
 /*
 ** POV-Ray's Attenuate_Light: spot/cylinder falloff and distance fade for
 ** a light ray leaving 'p' along unit 'L' with length 'depth'.
 */
-double light_attenuation(const struct rlight *l, vec3 p, vec3 L,
-                         double depth);
+double light_attenuation_full(const struct rlight *l, vec3 p, vec3 L,
+                              double depth);
+static inline double light_attenuation(const struct rlight *l, vec3 p,
+                                       vec3 L, double depth)
+{
+    /* inline: a point light without fade, the usual light, is 1 (what
+    ** light_attenuation_full() returns for it) */
+    const iris_light *s = l->src;
+    if (!l->spot && !l->cylinder && !(s->fade_power > 0.0))
+        return 1.0;
+    return light_attenuation_full(l, p, L, depth);
+}
 
 /* POV-Ray's cubic_spline(low, high, pos): 0 below, 1 above, 3t^2-2t^3. */
 double light_smoothstep(double low, double high, double pos);
@@ -62,8 +99,22 @@ double light_smoothstep(double low, double high, double pos);
 ** from the light centre along 'a1', 'a2' (circular maps the square grid
 ** onto a disc, as POV-Ray does).
 */
-vec3 light_area_offset(const struct rlight *l, vec3 a1, vec3 a2, double u,
-                       double v);
+static inline vec3 light_area_offset(const struct rlight *l, vec3 a1,
+                                     vec3 a2, double u, double v)
+{
+    if (l->src->circular) {
+        double ju = (l->size1 > 1 ? u / (l->size1 - 1) : 0.5) - 0.5 + 0.001;
+        double jv = (l->size2 > 1 ? v / (l->size2 - 1) : 0.5) - 0.5 + 0.001;
+        double s = fmax(fabs(ju), fabs(jv)) / sqrt(ju * ju + jv * jv);
+        return v3_add(v3_scale(a1, ju * s), v3_scale(a2, jv * s));
+    }
+    vec3 o = v3(0, 0, 0);
+    if (l->size1 > 1)
+        o = v3_madd(o, a1, u / (double)(l->size1 - 1) - 0.5);
+    if (l->size2 > 1)
+        o = v3_madd(o, a2, v / (double)(l->size2 - 1) - 0.5);
+    return o;
+}
 
 /*
 ** POV-Ray's projected_through test (TracePointLightShadowRay): a light
@@ -74,7 +125,14 @@ vec3 light_area_offset(const struct rlight *l, vec3 a1, vec3 a2, double u,
 ** between 'p' and the projecting object can cast shadows. A light
 ** without one returns true and leaves '*depth'.
 */
-bool light_through(const struct rlight *l, vec3 p, double tmin, vec3 L,
-                   double *depth);
+bool light_through_object(const struct rlight *l, vec3 p, double tmin,
+                          vec3 L, double *depth);
+static inline bool light_through(const struct rlight *l, vec3 p, double tmin,
+                                 vec3 L, double *depth)
+{
+    /* inline: asked for every shadow ray, almost always of a light
+    ** without projected_through */
+    return !l->through || light_through_object(l, p, tmin, L, depth);
+}
 
 #endif

@@ -103,7 +103,7 @@ bool trace_ctx_init(struct trace_ctx *c, const struct tracer *t)
     c->t = t;
     c->grid = iris_calloc((size_t)t->max_area_grid, sizeof *c->grid);
     c->grid_set = iris_calloc((size_t)t->max_area_grid, sizeof *c->grid_set);
-    rng_seed(&c->rng, t->seed, 0, 0);
+    rng_lazy_seed(&c->rng, t->seed, 0, 0);
     return c->grid && c->grid_set;
 }
 
@@ -367,6 +367,26 @@ static void interior_fade(const iris_interior *in, double dist, bool eye,
 /* Shadows                                                              */
 /* ------------------------------------------------------------------ */
 
+/*
+** Whether 'tex' lets no light through anywhere: its top layer is a plain
+** texture (no texture_map) with a solid pigment whose colour, and quick
+** colour, have no filter or transmit. mat_eval_texture() would give every
+** stack that layer on top, whose transmittance r*f + t is exactly 0, so
+** shadow_colour()'s sum is exactly 0 whatever lies below: most shadow
+** rays that meet something meet such an object, and the texture need
+** not be evaluated (its patterns, normals, layers) to know it.
+*/
+static bool texture_opaque(const iris_texture *tex)
+{
+    if (!tex ||
+        (tex->map_pattern.kind != IRIS_PAT_NONE && tex->n_entries > 0))
+        return false;
+    const iris_pigment *pg = tex->pigment;
+    return pg && pg->pattern.kind == IRIS_PAT_NONE && pg->colour.f == 0.0 &&
+           pg->colour.t == 0.0 && pg->quick_colour.f == 0.0 &&
+           pg->quick_colour.t == 0.0;
+}
+
 /* POV-Ray's ComputeShadowColour: the filter of the object at 'h' for a
 ** shadow ray along 'L'. */
 static void shadow_colour(struct trace_ctx *c, const struct interior_stack *st,
@@ -375,12 +395,19 @@ static void shadow_colour(struct trace_ctx *c, const struct interior_stack *st,
     const struct tracer *t = c->t;
     vec3 n = h->shading_n;
     double nd = v3_dot(n, L);
+    const iris_texture *tex = hit_texture(h, nd > 0.0);
+    if (texture_opaque(tex)) {
+        /* lc times the sum below, which is +0 here */
+        for (int k = 0; k < 3; k++)
+            lc[k] *= 0.0;
+        return;
+    }
     if (nd > 0.0)
         n = v3_neg(n);
     struct mat_point pt = { h->p, n, L, h->uv, h->obj,
                             !(t->quality & TQ_NORMAL) };
     struct mat_eval ev;
-    mat_eval_texture(t->mat, hit_texture(h, nd > 0.0), &pt, &ev);
+    mat_eval_texture(t->mat, tex, &pt, &ev);
     const iris_interior *in = h->interior;
     double caustics = in ? in->caustics * 45.0 : 0.0;
     double fade[3] = { 1, 1, 1 };
@@ -424,16 +451,13 @@ static void apply_fog(struct trace_ctx *c, const ray *r, double depth,
 ** media_attenuation (ComputeShadowMedia; the last stretch, to the
 ** light, only when the ray is in hollow interiors and longer than
 ** POV-Ray's SHADOW_TOLERANCE). */
-static void shadow_media(struct trace_ctx *c, const struct interior_stack *st,
-                         const iris_light *light, vec3 o, vec3 L, double len,
-                         bool at_surface, double lc[3])
+static void shadow_media_on(struct trace_ctx *c,
+                            const struct interior_stack *st,
+                            const iris_light *light, vec3 o, vec3 L,
+                            double len, bool at_surface, double lc[3])
 {
     const struct tracer *t = c->t;
-    const iris_scene *sc = t->scene;
-    /* the common case first: nothing in the air, no interior to ask */
-    bool air = sc->n_media > 0 || sc->n_fogs > 0;
-    if (!(ray_quality(c) & TQ_VOLUME) || (!air && (!at_surface || st->n == 0)) ||
-        rgb_zero(lc))
+    if (!(ray_quality(c) & TQ_VOLUME) || rgb_zero(lc))
         return;
     bool hollow = is_hollow_ray(st);
     bool stretch = light->media_interaction && light->media_attenuation &&
@@ -460,6 +484,20 @@ static void shadow_media(struct trace_ctx *c, const struct interior_stack *st,
                       t->scene->n_media, &r, len, true, lc, NULL);
     if (fog)
         apply_fog(c, &r.r, len, true, lc);
+}
+
+/* The common case inline: nothing in the air and no interior to ask, as
+** for nearly every shadow ray (a call per shadow ray was 1 % of a simple
+** scene's render). */
+static inline void shadow_media(struct trace_ctx *c,
+                                const struct interior_stack *st,
+                                const iris_light *light, vec3 o, vec3 L,
+                                double len, bool at_surface, double lc[3])
+{
+    const iris_scene *sc = c->t->scene;
+    bool air = sc->n_media > 0 || sc->n_fogs > 0;
+    if (air || (at_surface && st->n > 0))
+        shadow_media_on(c, st, light, o, L, len, at_surface, lc);
 }
 
 /* POV-Ray's TracePointLightShadowRay: walks the segment to the light,
@@ -545,8 +583,8 @@ static void area_sample(struct trace_ctx *c, const struct area_job *j,
     }
     double ju = u, jv = v;
     if (l->src->jitter) {
-        ju += rng_uniform(&c->rng) - 0.5;
-        jv += rng_uniform(&c->rng) - 0.5;
+        ju += rng_uniform(rng_lazy_get(&c->rng)) - 0.5;
+        jv += rng_uniform(rng_lazy_get(&c->rng)) - 0.5;
     }
     vec3 off = light_area_offset(l, j->a1, j->a2, ju, jv);
     vec3 L;
@@ -710,7 +748,7 @@ static void light_terms(struct trace_ctx *c, const struct layer_shade *s,
                                          : fabs(cosi);
         in *= diffuse * s->att;
         if (f->crand > 0.0)
-            in -= rng_uniform(&c->rng) * f->crand;
+            in -= rng_uniform(rng_lazy_get(&c->rng)) * f->crand;
         out[0] += in * P->r * lc[0];
         out[1] += in * P->g * lc[1];
         out[2] += in * P->b * lc[2];
@@ -764,8 +802,8 @@ static void full_area_light(struct trace_ctx *c, const struct layer_shade *s,
         for (int v = 0; v < n2; v++) {
             double ju = u, jv = v;
             if (l->src->jitter) {
-                ju += rng_uniform(&c->rng) - 0.5;
-                jv += rng_uniform(&c->rng) - 0.5;
+                ju += rng_uniform(rng_lazy_get(&c->rng)) - 0.5;
+                jv += rng_uniform(rng_lazy_get(&c->rng)) - 0.5;
             }
             vec3 L;
             double depth;
@@ -934,8 +972,8 @@ static void refract_spectral(struct trace_ctx *c, const struct tray *eye,
     double transm = 0.0;       /* the bands' c->transm, averaged */
     for (int i = 0; i < n_samples; i++) {
         double a[3];
-        double lambda = eye_lambda_sample(i, n_samples,
-                                          rng_uniform(&c->rng), a);
+        double u = rng_uniform(rng_lazy_get(&c->rng));
+        double lambda = eye_lambda_sample(i, n_samples, u, a);
         double eta = ior_eval(from, lambda) / ior_eval(to, lambda);
         struct tray band;
         tray_copy(&band, nr);
@@ -1073,18 +1111,20 @@ static void lighted_texture(struct trace_ctx *c, const struct tray *eye,
                                   sc->settings.ambient_light.g,
                                   sc->settings.ambient_light.b };
     /* POV-Ray 3.7 drops ambient only where radiosity runs (+Q9) */
-    bool use_ambient = !gather_wanted(t) || t->legacy;
+    bool use_ambient = !sc->settings.radiosity || !gather_wanted(t) ||
+                       t->legacy;
     double fres_n = relative_ior(eye, h);
     /* radiosity{}: an eye hit gathers (once for all layers) and reads
     ** the photon map without its global part; gather rays' hits read the
     ** global map only when recursion_limit allows a further bounce */
-    bool gi_eye = gather_at_depth(t->gather, c->gi_depth), gi_done = false;
+    bool gi_eye = t->gather && gather_at_depth(t->gather, c->gi_depth);
+    bool gi_done = false;
     double gi_e[3] = { 0, 0, 0 };
     const void *pmap = !t->gather ? t->photon_map
                        : c->gi_depth == 0 ? t->photon_map_local : t->photon_map_gather;
     /* the pretrace's own eye hits only place samples (as in POV-Ray);
     ** deeper gathers beside a global map see no light source */
-    bool lit = gather_lit(t->gather, c->gi_depth);
+    bool lit = !t->gather || gather_lit(t->gather, c->gi_depth);
 
     for (int i = 0; i < sk->n && trans > t->adc; i++, n_done++) {
         const struct mat_layer *l = &ev->layers[sk->first + i];

@@ -137,7 +137,9 @@ static inline void tray_copy(struct tray *dst, const struct tray *src)
 /* One thread's scratch space. */
 struct trace_ctx {
     const struct tracer *t;
-    rng rng;                   /* re-seeded per pixel sample by the caller */
+    rng_lazy rng;              /* re-keyed per pixel sample by the caller
+                                  (rng_lazy_seed); drawn from through
+                                  rng_lazy_get() */
     int level;                 /* current trace level */
     bool spectral;             /* a camera ray split into wavelengths since
                                   the caller last cleared it */

@@ -59,4 +59,36 @@ static inline float rng_uniformf(rng *r)
     return (float)(rng_u32(r) >> 8) * 0x1p-24f;
 }
 
+/*
+** A stream whose seeding waits for its first number. The eye pass keys a
+** stream per camera sample, but most samples draw no random number at
+** all (no jittered area light, crand, media or dispersion on their
+** path), and rng_seed()'s four hashes were 2 % of a simple scene's
+** render. The numbers drawn are those of rng_seed() with the same key.
+*/
+typedef struct rng_lazy {
+    rng r;
+    uint64_t seed, a, b;       /* the key of a stream not yet started */
+    int pending;               /* 1: r is to be seeded from the key */
+} rng_lazy;
+
+static inline void rng_lazy_seed(rng_lazy *l, uint64_t seed, uint64_t a,
+                                 uint64_t b)
+{
+    l->seed = seed;
+    l->a = a;
+    l->b = b;
+    l->pending = 1;
+}
+
+/* The stream, seeded now if it was not yet. */
+static inline rng *rng_lazy_get(rng_lazy *l)
+{
+    if (l->pending) {
+        rng_seed(&l->r, l->seed, l->a, l->b);
+        l->pending = 0;
+    }
+    return &l->r;
+}
+
 #endif
