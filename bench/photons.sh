@@ -11,16 +11,22 @@
 # build) and photon counts from a +Q9 render at a small size (the photon
 # pass does not depend on the image size).
 #
-#   build=/path/to/build sh bench/photons.sh [-t THREADS] [scene.pov ...]
+#   build=/path/to/build sh bench/photons.sh [-t THREADS] [-s] [scene.pov ...]
 #
+# iris shoots with the scene's material context, evaluating each surface
+# hit's texture as a render does (render.c): the table is what users get.
+# -s shoots without it (textures taken as solid pigments: photon_bench
+# -m 0), the way the tables of sessions 1-5 were made.
 # Without scenes it uses the photon scenes of scenes/. Build the driver
 # first: make -C "$build" tools/photon_bench.
 set -u
 here=$(cd "$(dirname "$0")" && pwd)
 threads=2
-while getopts t: opt; do
+mat=1
+while getopts t:s opt; do
     case $opt in
     t) threads=$OPTARG ;;
+    s) mat=0 ;;
     *) exit 2 ;;
     esac
 done
@@ -46,8 +52,8 @@ for scene in "$@"; do
     # POV-Ray runs in $tmp: the scene's path must not be relative
     case $scene in /*) ;; *) scene=$PWD/$scene ;; esac
     name=$(basename "$scene" .pov)
-    one=$("$bench" -t 1 "$scene" 2>/dev/null | tail -1)
-    many=$("$bench" -t "$threads" -q 0 "$scene" 2>/dev/null | tail -1)
+    one=$("$bench" -t 1 -m "$mat" "$scene" 2>/dev/null | tail -1)
+    many=$("$bench" -t "$threads" -q 0 -m "$mat" "$scene" 2>/dev/null | tail -1)
     if command -v "$POVRAY" >/dev/null 2>&1; then
         (cd "$tmp" && "$POVRAY" +I"$scene" +O"$tmp/out.png" +W64 +H48 -D -V \
             +FN +Q9 +WT"$threads" >"$tmp/pov.log" 2>&1)

@@ -4,9 +4,12 @@
 ** bench/photons.sh: photons traced per second per thread, bytes per stored
 ** photon, and gather (estimate) queries per second.
 **
-** Usage: photon_bench [-t THREADS] [-q QUERIES] [-a 1] scene.pov
+** Usage: photon_bench [-t THREADS] [-q QUERIES] [-a 1] [-c 1] [-m 0]
+**        scene.pov
 ** (-a 1: query accel, not the photon fast path of sphere-and-plane
-** scenes, src/photon/fastpath.h)
+** scenes, src/photon/fastpath.h; -c 1: evaluate every hit's texture, not
+** the batch's cache of uniform textures, src/photon/trace.h; -m 0: no
+** material context, see below)
 ** Prints one line of key=value pairs: shoot_s is the wall time of the
 ** shooting (emission, transport, concatenating the batches), build_s of
 ** the kd-tree build and the automatic radius; photons_per_s_per_thread is
@@ -14,10 +17,13 @@
 ** its own). cpu_shoot_s, cpu_build_s and photons_per_cpu_s are the same in
 ** CPU seconds of all threads, and gathers_per_cpu_s the gather rate per
 ** CPU second: on a shared machine the wall clock also counts the others'
-** work. map_fnv is a hash of the stored records (the same map, the same
-** hash). Textures are evaluated by the
-** material module when IRIS_BENCH_MAT is set in the environment, else as
-** solid pigments. Not installed; built by `make tools/photon_bench`.
+** work. tex_cached counts the surface hits answered from the texture
+** cache (src/photon/trace.h). map_fnv is a hash of the stored records
+** (the same map, the same hash). Textures are evaluated by the
+** material module (a material context, as a render shoots its photons:
+** what users get); -m 0 takes them as solid pigments without it, the
+** way sessions 1-5 measured (cheaper per hit: not what a render pays).
+** Not installed; built by `make tools/photon_bench`.
 */
 #include "config.h"
 
@@ -90,7 +96,8 @@ static unsigned long long map_hash(const struct photon_map *m)
 
 int main(int argc, char **argv)
 {
-    int threads = 1, queries = 100000, accel_only = 0;
+    int threads = 1, queries = 100000, accel_only = 0, no_cache = 0;
+    int with_mat = 1;
     int i = 1;
     for (; i < argc - 1 && argv[i][0] == '-'; i += 2) {
         if (!strcmp(argv[i], "-t"))
@@ -99,10 +106,15 @@ int main(int argc, char **argv)
             queries = atoi(argv[i + 1]);
         else if (!strcmp(argv[i], "-a"))
             accel_only = atoi(argv[i + 1]);
+        else if (!strcmp(argv[i], "-c"))
+            no_cache = atoi(argv[i + 1]);
+        else if (!strcmp(argv[i], "-m"))
+            with_mat = atoi(argv[i + 1]);
     }
     if (i != argc - 1) {
         fprintf(stderr,
-                "usage: photon_bench [-t N] [-q N] [-a 1] scene.pov\n");
+                "usage: photon_bench [-t N] [-q N] [-a 1] [-c 1] [-m 0] "
+                "scene.pov\n");
         return 2;
     }
     iris_parse_options po;
@@ -123,8 +135,7 @@ int main(int argc, char **argv)
         return 1;
     }
     struct mat_ctx *mc = NULL;
-    if (getenv("IRIS_BENCH_MAT") &&
-        mat_ctx_create(scene, stderr, &mc) != IRIS_OK)
+    if (with_mat && mat_ctx_create(scene, stderr, &mc) != IRIS_OK)
         return 1;
     struct photon_options o;
     memset(&o, 0, sizeof o);
@@ -132,6 +143,7 @@ int main(int argc, char **argv)
     o.seed = 1;
     o.mat = mc;
     o.no_fastpath = accel_only != 0;
+    o.no_tex_cache = no_cache != 0;
     struct photon_map *m = NULL;
     struct photon_stats st;
     if (photon_map_build(scene, a, &o, &m, &st) != IRIS_OK) {
@@ -145,12 +157,13 @@ int main(int argc, char **argv)
            "shoot_s=%.3f build_s=%.3f photons_per_s_per_thread=%.0f "
            "cpu_shoot_s=%.3f cpu_build_s=%.3f photons_per_cpu_s=%.0f "
            "gather_radius=%.4g gathers_per_s=%.0f gathers_per_cpu_s=%.0f "
-           "map_fnv=%016llx\n",
+           "tex_cached=%lld mat=%d map_fnv=%016llx\n",
            threads, (long long)st.shot, (long long)st.stored,
            st.stored ? (double)st.bytes / st.stored : 0.0, st.seconds_shoot,
            st.seconds_build, per_thread, st.cpu_shoot, st.cpu_build,
            st.cpu_shoot > 0 ? st.shot / st.cpu_shoot : 0.0, st.gather_radius,
-           g_wall, g_cpu, map_hash(m));
+           g_wall, g_cpu, (long long)st.tex_cached, with_mat != 0,
+           map_hash(m));
     photon_map_destroy(m);
     mat_ctx_destroy(mc);
     accel_destroy(a);

@@ -320,6 +320,7 @@ void photon_map_destroy(struct photon_map *m)
     if (!m)
         return;
     photon_map_destroy(m->global);
+    pmedia_map_destroy(m->media);
     iris_free(m->irr);
     pstore_fini(&m->store);
     iris_free(m);

@@ -143,6 +143,15 @@ const struct accel *pfast_accel(const struct pfast *f)
     return f->a;
 }
 
+/* isfinite() of all three components in one test: x - x is 0 for a
+** finite x and NaN for an infinite or NaN one, so the sum is 0 exactly
+** when all three are finite (half the instructions of three isfinite()s;
+** the query tests five vectors) */
+static inline bool finite_v(vec3 v)
+{
+    return (v.x - v.x) + (v.y - v.y) + (v.z - v.z) == 0.0;
+}
+
 /* node.c sphere_nearest(): the nearer crossing in (tmin, tmax) of the
 ** ray lo + t·ld in object space; *n the unit world normal. */
 static bool sphere_hit(const struct pfast_prim *s, vec3 lo, vec3 ld,
@@ -160,11 +169,12 @@ static bool sphere_hit(const struct pfast_prim *s, vec3 lo, vec3 ld,
     double h = sqrt(num / a);
     for (int k = 0; k < 2; k++) {
         double t = k ? tc + h : tc - h;
-        if (!(t > tmin && t < tmax) || !isfinite(t))
+        /* (node.c also tests isfinite(t): t > tmin and t < tmax already
+        ** exclude NaN and both infinities) */
+        if (!(t > tmin && t < tmax))
             continue;
         vec3 on = v3_scale(v3_madd(oc, ld, t), s->inv_rad);
-        if (!isfinite(on.x) || !isfinite(on.y) || !isfinite(on.z) ||
-            (on.x == 0 && on.y == 0 && on.z == 0))
+        if (!finite_v(on) || (on.x == 0 && on.y == 0 && on.z == 0))
             continue;
         vec3 wn = s->transformed ? xf_normal(&s->obj->transform, on) : on;
         double len = v3_len(wn);
@@ -186,18 +196,12 @@ static bool plane_hit(const struct pfast_prim *s, vec3 lo, vec3 ld,
     if (dn == 0 || !s->valid)
         return false;
     double t = (s->rad - v3_dot(pn, lo)) / dn;
-    if (!(t > tmin && t < tmax) || !isfinite(t))
+    if (!(t > tmin && t < tmax)) /* also excludes NaN and infinities */
         return false;
     *t_out = t;
     *n = s->wn;
     return true;
 }
-
-static bool finite_v(vec3 v)
-{
-    return isfinite(v.x) && isfinite(v.y) && isfinite(v.z);
-}
-
 
 bool pfast_intersect(const void *ctx, const ray *r, double tmin, double tmax,
                      unsigned skip, struct hit *h)

@@ -46,6 +46,7 @@
 #include "photon/pmap.h"
 
 #include <math.h>
+#include <stdatomic.h>
 #include <string.h>
 
 #include "photon/trace.h"
@@ -85,6 +86,7 @@ struct gshoot {
     int64_t n_photons;
     double u0, u1;             /* per-pass offsets: wavelength, phi */
     struct ptrace_out *outs;
+    _Atomic int64_t tex_cached; /* photon_stats.tex_cached */
 };
 
 bool pmap_wants_global(const iris_scene *scene)
@@ -250,8 +252,14 @@ static void global_batch(void *ctx, int64_t item, int thread)
     int64_t lo = item * GLOBAL_BATCH;
     int64_t hi = lo + GLOBAL_BATCH < g->n_photons ? lo + GLOBAL_BATCH
                                                   : g->n_photons;
+    /* textures of one colour everywhere, evaluated once a batch */
+    struct ptrace_tex_cache tex;
+    memset(&tex, 0, sizeof tex);
+    g->outs[item].tex = g->opts->no_tex_cache ? NULL : &tex;
     for (int64_t j = lo; j < hi && !g->outs[item].failed; j++)
         shoot_global(g, j, &g->outs[item]);
+    g->outs[item].tex = NULL;
+    atomic_fetch_add(&g->tex_cached, tex.hits);
 }
 
 /*
@@ -461,6 +469,7 @@ enum iris_status pmap_build_global(const iris_scene *scene,
     double t0 = par_now();
     struct gshoot g;
     memset(&g, 0, sizeof g);
+    atomic_init(&g.tex_cached, 0);
     g.w = w;
     g.opts = opts;
     rng r0;
@@ -510,6 +519,7 @@ enum iris_status pmap_build_global(const iris_scene *scene,
     }
     if (stats) {
         stats->shot_global = g.n_photons;
+        stats->tex_cached += atomic_load(&g.tex_cached);
         stats->stored_global = (int64_t)n_stored;
         stats->bytes += (int64_t)(m->store.n * (sizeof(struct pstore_photon) +
                                                 sizeof *m->irr));

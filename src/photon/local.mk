@@ -5,4 +5,5 @@ libiris_core_la_SOURCES += %reldir%/photon.h %reldir%/photon.c \
 	%reldir%/global.c %reldir%/estimate.c %reldir%/pstore.c %reldir%/pstore.h \
 	%reldir%/photon_file.c %reldir%/photon_file.h \
 	%reldir%/membudget.c %reldir%/membudget.h \
-	%reldir%/fastpath.c %reldir%/fastpath.h
+	%reldir%/fastpath.c %reldir%/fastpath.h \
+	%reldir%/pmedia.c %reldir%/pmedia.h

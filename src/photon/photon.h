@@ -61,6 +61,9 @@ struct photon_options {
                                   pass, 0 = PMAP_GLOBAL_PHOTONS (pmap.h) */
     bool no_fastpath;          /* query accel even where the photon fast
                                   path applies (fastpath.h; benchmarks) */
+    bool no_tex_cache;         /* evaluate every hit's texture, also those
+                                  of one colour everywhere (trace.h,
+                                  ptrace_tex; tests and benchmarks) */
 };
 
 /* What a build did, for -v and the benchmarks. */
@@ -78,6 +81,9 @@ struct photon_stats {
     double cpu_shoot, cpu_build;   /* the same in CPU seconds of all the
                                       process's threads (a shared, loaded
                                       machine inflates wall time, not these) */
+    int64_t tex_cached;        /* photons' surface hits (caustic and
+                                  global) answered from the texture cache
+                                  (trace.h) */
 };
 
 /*

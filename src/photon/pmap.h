@@ -16,6 +16,7 @@
 
 #include "accel/accel.h"
 #include "photon/photon.h"
+#include "photon/pmedia.h"
 #include "photon/pstore.h"
 
 /* The ray queries the shooter needs (see accel.h for their meaning). */
@@ -46,6 +47,7 @@ struct photon_map {
                                   irradiance points (global.c), irr[i] the
                                   3x3 matrix of point i; dir_q its normal */
     double irr_radius;         /* global map: lookup radius of the points */
+    struct pmedia_map *media;  /* media photons (pmedia.h), or NULL */
 };
 
 /* True when 'scene' asks for diffuse interreflection (radiosity{}) and

@@ -106,6 +106,8 @@ struct ring {
     int combo;
     double theta;
     int n_phi;
+    double dphi;               /* 2·pi/n_phi, once per ring (a division
+                                  per photon otherwise) */
     double cell;               /* solid angle (area) of one direction cell */
     int64_t first;             /* first photon index */
     int64_t count;             /* n_phi · n1 · n2 */
@@ -134,6 +136,7 @@ struct shoot {
     struct membudget budget;
     _Atomic int64_t n_stored;
     atomic_bool over_budget;
+    _Atomic int64_t tex_cached; /* photon_stats.tex_cached */
 };
 
 bool pmap_shoots(const iris_light *l, const iris_object *t)
@@ -512,6 +515,7 @@ static enum iris_status make_rings(struct shoot *s, double spacing)
         for (int ci = 0; ci < s->n_combos; ci++) {
             struct combo *c = &s->combos[ci];
             combo_grid(c, spacing);
+            pmedia_setup(&c->tc.media, s->scene, c->dtheta);
             if (!(c->dtheta > 0.0) || !isfinite(c->dtheta))
                 continue;
             /* Guard against absurd photon counts (about 1e9 rings). */
@@ -540,6 +544,7 @@ static enum iris_status make_rings(struct shoot *s, double spacing)
                     r->combo = ci;
                     r->theta = th;
                     r->n_phi = n_phi;
+                    r->dphi = 2.0 * M_PI / n_phi;
                     r->cell = cell / per;
                     r->first = np;
                     r->count = (int64_t)n_phi * per;
@@ -607,8 +612,7 @@ static void cell_uniform(const struct combo *c, const struct ring *rg,
         double z = cos(lo) + u * (cos(hi) - cos(lo));
         *th = acos(z < -1.0 ? -1.0 : z > 1.0 ? 1.0 : z);
     }
-    double dphi = 2.0 * M_PI / rg->n_phi;
-    *ph = -M_PI + dphi * ((double)k_phi + v);
+    *ph = -M_PI + rg->dphi * ((double)k_phi + v);
 }
 
 /* Emits and traces photon 'j' of ring 'rg'. */
@@ -618,10 +622,12 @@ static void shoot_one(const struct shoot *s, const struct ring *rg, int64_t j,
     const struct combo *c = &s->combos[rg->combo];
     int64_t local = j - rg->first;
     int64_t per = (int64_t)c->n1 * c->n2;
-    int64_t k_phi = local / per, k_area = local % per;
+    /* (no 64-bit division for the usual single light cell) */
+    int64_t k_phi = per == 1 ? local : local / per;
+    int64_t k_area = per == 1 ? 0 : local % per;
     rng r;
     rng_seed(&r, s->opts->seed, (uint64_t)s->opts->pass, (uint64_t)j);
-    double dphi = 2.0 * M_PI / rg->n_phi;
+    double dphi = rg->dphi;
     double th = rg->theta + c->dtheta * (rng_uniform(&r) - 0.5) * s->jitter;
     double ph = -M_PI + dphi * (k_phi + 0.5) +
                 dphi * (rng_uniform(&r) - 0.5) * s->jitter;
@@ -675,11 +681,17 @@ static void shoot_batch(void *ctx, int64_t item, int thread)
     /* one search per batch, then the rings in order */
     const struct ring *rg = ring_of(s, lo);
     const struct ring *last = s->rings + s->n_rings - 1;
+    /* textures of one colour everywhere, evaluated once a batch */
+    struct ptrace_tex_cache tex;
+    memset(&tex, 0, sizeof tex);
+    s->outs[item].tex = s->opts->no_tex_cache ? NULL : &tex;
     for (int64_t j = lo; j < hi && !s->outs[item].failed; j++) {
         while (rg < last && j >= rg[1].first)
             rg++;
         shoot_one(s, rg, j, &s->outs[item]);
     }
+    s->outs[item].tex = NULL;
+    atomic_fetch_add(&s->tex_cached, tex.hits);
     int64_t n = atomic_fetch_add(&s->n_stored, (int64_t)s->outs[item].n) +
                 (int64_t)s->outs[item].n;
     if ((double)n > s->store_cap)
@@ -836,6 +848,7 @@ static enum iris_status build_caustic(const iris_scene *scene,
     memset(&s, 0, sizeof s);
     atomic_init(&s.n_stored, 0);
     atomic_init(&s.over_budget, false);
+    atomic_init(&s.tex_cached, 0);
     s.store_cap = INFINITY;
     s.scene = scene;
     s.w = w;
@@ -904,6 +917,7 @@ static enum iris_status build_caustic(const iris_scene *scene,
         rc = concat_batches(&s, n_batches, &all, &total);
     st.shot = s.n_photons;
     st.n_combos = s.n_combos;
+    st.tex_cached = atomic_load(&s.tex_cached);
     shoot_fini(&s, n_batches);
     double t1 = par_now(), c1 = cpu_now();
 
@@ -960,6 +974,8 @@ enum iris_status pmap_from_raw(const iris_scene *scene,
 {
     struct photon_map *m = iris_calloc(1, sizeof *m);
     enum iris_status rc = m ? IRIS_OK : IRIS_ENOMEM;
+    if (rc == IRIS_OK) /* media photons to a map of their own */
+        rc = pmedia_take(scene, all, &n, threads, &m->media);
     if (rc == IRIS_OK)
         rc = pstore_build_in_place(&m->store, all, n, threads);
     else

@@ -6,8 +6,10 @@
 #define IRIS_PHOTON_TRACE_H
 
 #include <stdbool.h>
+#include <stdint.h>
 
 #include "photon/pmap.h"
+#include "photon/pmedia.h"
 #include "util/rng.h"
 
 #define PTRACE_MAX_STACK 16
@@ -34,8 +36,37 @@ struct ptrace_combo {
     int max_diffuse;           /* global: > 0 ends a photon after that many
                                   diffuse bounces (recursion_limit - 1) */
     const struct mat_ctx *mat; /* NULL: solid pigments (tests) */
+    struct pmedia_path media;  /* media on the path (pmedia.h); zero:
+                                  the scene has none */
     int n_stack;               /* interiors containing the light */
     const iris_object *stack[PTRACE_MAX_STACK];
+};
+
+/*
+** What a surface whose texture is one colour everywhere (solid pigments,
+** no normal{}, no texture_map) gives a photon at every point, at every
+** wavelength where 'transm_grey' (trace.c, eval_surface). Kept per batch:
+** mat_eval_texture() of such a texture was 14% of a photon's instructions
+** on the clear ball (callgrind), for the same answer at every hit.
+*/
+#define PTRACE_TEX_LAYERS 4
+struct ptrace_tex {
+    const iris_texture *key;   /* NULL: an empty slot */
+    bool uniform;              /* false: evaluated at every hit */
+    int n_layers;              /* the layers mat_eval_texture() used */
+    iris_colour pigment[PTRACE_TEX_LAYERS];
+    const iris_finish *fin;    /* the top layer's (psurf.fin) */
+    double opacity;            /* the top layer's */
+    double transm;             /* the layers' transmittance, if grey */
+    bool transm_grey;          /* it does not depend on lambda */
+    bool no_reflection;        /* the finish reflects nothing at any angle */
+};
+
+#define PTRACE_TEX_SLOTS 4
+struct ptrace_tex_cache {
+    struct ptrace_tex slot[PTRACE_TEX_SLOTS];
+    int next;                  /* the slot to replace next */
+    int64_t hits;              /* hits answered from a uniform slot */
 };
 
 /* A growable buffer of raw photons (one per batch). */
@@ -46,7 +77,16 @@ struct ptrace_out {
     bool borrowed;             /* 'ph' is a slice of the caller's array
                                   (shoot.c): when full it is copied to a
                                   buffer of its own, never reallocated */
+    struct ptrace_tex_cache *tex; /* the batch's texture cache, zeroed
+                                  before its first photon (NULL: none);
+                                  valid for one mat context */
 };
+
+/* Appends one record at 'p' to 'out' (grown as needed; out->failed on
+** no memory). 'lambda_field' is the record's wavelength field as stored:
+** a wavelength, -1 for a white photon, or pmedia.c's tagged value. */
+void ptrace_out_push(struct ptrace_out *out, vec3 p, double power,
+                     float lambda_field, vec3 from);
 
 /* The level cap of a global photon: diffuse bounces end by Russian
 ** roulette on the albedo, this only guards an albedo-1 closed scene. */

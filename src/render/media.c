@@ -18,6 +18,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "photon/pmedia.h"
 #include "render/focalblur.h"
 #include "render/media.h"
 #include "util/mem.h"
@@ -59,6 +60,7 @@ struct seg {
     const struct lit_light *lights;
     int n_lights;
     const iris_media *im;      /* the media with the most intervals */
+    const struct pmedia_map *pm; /* media photons to gather, or NULL */
 };
 
 bool media_in_stack(const struct interior_stack *st)
@@ -83,7 +85,7 @@ int media_of_stack(const struct interior_stack *st, const iris_media **out,
 
 static double rnd(struct trace_ctx *c)
 {
-    return rng_uniform(&c->rng);
+    return rng_uniform(rng_lazy_get(&c->rng));
 }
 
 /* The product of the densities' colours at 'p' (1 without densities). */
@@ -103,24 +105,12 @@ static void density_at(const struct tracer *t, const iris_media *m, vec3 p,
 }
 
 /* POV-Ray's phase functions (ComputeMediaScatteringAttenuation), not
-** normalised: isotropic is 1. 'alpha' is the cosine between the ray
-** direction and the direction towards the light. */
+** normalised: isotropic is 1 (pmedia.c, which the media photons' estimate
+** shares). 'alpha' is the cosine between the ray direction and the
+** direction towards the light. */
 static double phase(const iris_media *m, double alpha)
 {
-    switch (m->scattering_type) {
-    case IRIS_SCATTER_RAYLEIGH:
-        return 0.799372013 * (1.0 + alpha * alpha);
-    case IRIS_SCATTER_MIE_HAZY:
-        return 0.576655375 * (1.0 + 9.0 * pow(0.5 * (1.0 + alpha), 8.0));
-    case IRIS_SCATTER_MIE_MURKY:
-        return 0.495714547 * (1.0 + 50.0 * pow(0.5 * (1.0 + alpha), 32.0));
-    case IRIS_SCATTER_HENYEY_GREENSTEIN: {
-        double g = m->eccentricity;
-        return (1.0 - g * g) / pow(1.0 + g * g - 2.0 * g * alpha, 1.5);
-    }
-    default:
-        return 1.0;
-    }
+    return pmedia_phase(m, alpha);
 }
 
 /*
@@ -176,6 +166,9 @@ static void sample(const struct seg *s, struct interval *iv, double f,
                 emi[c] += k * sca[c] * lc[c];
         }
     }
+    /* media photons, lit interval or not (POV-Ray's ComputeMediaPhotons) */
+    if (s->pm && !s->shadow && s->scattering)
+        pmedia_gather(s->pm, s->m, s->n, p, s->r->r.d, sca, emi);
     for (int k = 0; k < 3; k++) {
         /* method 3 attenuates in order later; 1 and 2 assume the
         ** extinction constant over the interval */
@@ -683,7 +676,9 @@ void media_segment(struct trace_ctx *c, const iris_media *const *m, int n,
                 goto out;
         }
         int n_iv = sample_intervals(sp, n_sp, im, iv_constant, depth, iv);
-        struct seg s = { c, m, n, r, shadow, scattering, ll, n_ll, im };
+        struct seg s = { c, m, n, r, shadow, scattering, ll, n_ll, im,
+                         shadow || !scattering ? NULL
+                                               : pmedia_of(t->photon_map) };
         bool constant_shadow = shadow && constant;
         if (im->method == 3 && !constant_shadow)
             adaptive_sampling(&s, iv, n_iv, thr);

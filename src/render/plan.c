@@ -16,6 +16,7 @@
 #include <string.h>
 
 #include "photon/photon.h"
+#include "photon/pmedia.h"
 #include "render/plan.h"
 #include "render/trace.h"
 #include "spectrum/ior.h"
@@ -134,6 +135,16 @@ void plan_compute(const iris_scene *scene, const iris_render_options *opts,
     p->n_media_objects = w.n_media;
     p->n_media_atmosphere = scene->n_media;
     p->media = (q & TQ_VOLUME) && (w.n_media > 0 || scene->n_media > 0);
+    p->media_max_steps = scene->settings.photons.media_max_steps;
+    p->media_factor = scene->settings.photons.media_factor;
+    if (!p->caustic_photons)
+        p->media_photon_reason = "no caustic photon pass";
+    else if (p->media_max_steps <= 0)
+        p->media_photon_reason = "no 'media MAX_STEPS' in photons{}";
+    else if (!pmedia_scene_wants_photons(scene))
+        p->media_photon_reason = "no interior media that scatter";
+    else
+        p->media_photons = true;
     p->sky_sphere = scene->sky_sphere && scene->sky_sphere->n_pigments > 0;
     p->max_trace_level = scene->settings.max_trace_level > 0
                              ? scene->settings.max_trace_level : 5;
@@ -195,6 +206,15 @@ void plan_print(const struct render_plan *p, FILE *out)
                 "atmospheric media%s\n", p->media ? "yes" : "no",
                 p->n_media_objects, p->n_media_atmosphere,
                 p->media ? "" : " (quality below 9: left out)");
+    if (p->n_media_objects + p->n_media_atmosphere > 0) {
+        if (p->media_photons)
+            fprintf(out, "  media photons: yes, at most %d steps a "
+                    "segment, spacing factor %g\n", p->media_max_steps,
+                    p->media_factor > 0.0 ? p->media_factor : 1.0);
+        else
+            fprintf(out, "  media photons: no (%s)\n",
+                    p->media_photon_reason);
+    }
     fprintf(out, "  antialiasing: %s", aa_name(p->aa));
     if (p->aa != IRIS_AA_NONE)
         fprintf(out, ", depth %d, threshold %g", p->aa_depth, p->aa_threshold);

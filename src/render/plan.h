@@ -37,6 +37,13 @@ struct render_plan {
     ** (quality 9) */
     int n_media_objects, n_media_atmosphere;
     bool media;
+    /* media photons (photon/pmedia.h): deposited in scattering interior
+    ** media by the caustic photons and gathered by the media sampling;
+    ** photons are dimmed by media whenever the photon pass runs */
+    bool media_photons;
+    const char *media_photon_reason; /* why not */
+    int media_max_steps;
+    double media_factor;
     int max_trace_level;
     double adc_bailout;
 };

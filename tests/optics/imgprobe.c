@@ -10,6 +10,10 @@
 **   imgprobe mean IMAGE X0 Y0 X1 Y1
 **       "r g b": the mean linear colour over the rectangle of columns
 **       X0..X1 and rows Y0..Y1 (inclusive, row 0 at the top).
+**   imgprobe range IMAGE X0 Y0 X1 Y1
+**       "rmin gmin bmin rmax gmax bmax": the least and greatest linear
+**       value of each channel over the rectangle (a uniform image's
+**       spread, which a mean would hide).
 **   imgprobe radial IMAGE RMAX
 **       one line per ring of pixels about the image's centre, "k r g b":
 **       the mean linear colour of the pixels whose centres lie k..k+1
@@ -77,6 +81,7 @@ static int usage(void)
 {
     fprintf(stderr, "usage: imgprobe rows IMAGE X0 X1\n"
                     "       imgprobe mean IMAGE X0 Y0 X1 Y1\n"
+                    "       imgprobe range IMAGE X0 Y0 X1 Y1\n"
                     "       imgprobe radial IMAGE RMAX\n");
     return 2;
 }
@@ -85,8 +90,9 @@ int main(int argc, char **argv)
 {
     int rows = argc == 5 && strcmp(argv[1], "rows") == 0;
     int mean = argc == 7 && strcmp(argv[1], "mean") == 0;
+    int range = argc == 7 && strcmp(argv[1], "range") == 0;
     int radial = argc == 4 && strcmp(argv[1], "radial") == 0;
-    if (!rows && !mean && !radial)
+    if (!rows && !mean && !range && !radial)
         return usage();
     iris_image a;
     char err[256] = "";
@@ -111,11 +117,17 @@ int main(int argc, char **argv)
         return 2;
     }
     double tot[3] = { 0, 0, 0 };
+    double lo[3] = { INFINITY, INFINITY, INFINITY };
+    double hi[3] = { -INFINITY, -INFINITY, -INFINITY };
     for (int y = y0; y <= y1; y++) {
         double s[3] = { 0, 0, 0 };
         for (int x = x0; x <= x1; x++)
-            for (int c = 0; c < 3; c++)
-                s[c] += a.pixels[4 * ((size_t)y * a.width + x) + c];
+            for (int c = 0; c < 3; c++) {
+                double v = a.pixels[4 * ((size_t)y * a.width + x) + c];
+                s[c] += v;
+                lo[c] = v < lo[c] ? v : lo[c];
+                hi[c] = v > hi[c] ? v : hi[c];
+            }
         if (rows)
             printf("%d %.9g %.9g %.9g\n", y, s[0], s[1], s[2]);
         for (int c = 0; c < 3; c++)
@@ -125,6 +137,9 @@ int main(int argc, char **argv)
         double n = (double)(x1 - x0 + 1) * (y1 - y0 + 1);
         printf("%.9g %.9g %.9g\n", tot[0] / n, tot[1] / n, tot[2] / n);
     }
+    if (range)
+        printf("%.9g %.9g %.9g %.9g %.9g %.9g\n", lo[0], lo[1], lo[2], hi[0],
+               hi[1], hi[2]);
     iris_image_fini(&a);
     return 0;
 }

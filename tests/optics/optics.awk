@@ -337,3 +337,49 @@ function bow2_edge(n, zs,   b, x, best, bb, x0, x1, x2, h) {
     BOW_DEV = 180 - atan2(DX, DY) * 45 / atan2(1, 1)
     return x
 }
+
+# The transmittance of a stack of flat parallel layers, the light
+# falling at angle a (radians) in the first medium: indices NN[0] (where
+# the light comes from), NN[1], ..., NN[k] (where it leaves), k
+# interfaces. Each interface transmits 1 - R (unpolarised Fresnel at the
+# angle Snell's law gives in its medium, n sin = const); the light
+# reflected back and forth between them adds incoherently: two lossless
+# elements of transmittance T1 and T2 (reflectance 1 - T, the same from
+# either side) pass T1 T2 / (1 - R1 R2) together.
+function stack_t(a, k,   i, s, T, T2, st) {
+    s = NN[0] * sin(a); T = 1
+    for (i = 0; i < k; i++) {
+        st = s / NN[i]
+        T2 = 1 - fresnel(atan2(st, sqrt(1 - st * st)), NN[i], NN[i + 1])
+        T = T * T2 / (1 - (1 - T) * (1 - T2))
+    }
+    return T
+}
+
+# n of the glass 'name' at lambda nm from the Sellmeier coefficients of
+# data/glass_sellmeier.csv (read into GB[name, 1..4], GC[name, 1..4] by
+# the caller; C in um^2): n^2 = 1 + sum B_i l^2/(l^2 - C_i), l in um.
+function n_sellmeier(name, lnm,   u, k, s) {
+    u = (lnm / 1000) ^ 2; s = 1
+    for (k = 1; k <= 4; k++)
+        if (GB[name, k] != 0) s += GB[name, k] * u / (u - GC[name, k])
+    return sqrt(s)
+}
+
+# POV-Ray's reflectivity of 'reflection { min, max falloff fo }' at
+# incidence angle a: F = (1 - cos a)^fo, F max + (1 - F) min.
+function refl_falloff(mn, mx, fo, a,   F) {
+    F = (1 - cos(a)) ^ fo
+    return F * mx + (1 - F) * mn
+}
+
+# POV-Ray's 'reflection { ... metallic M }' factor on a channel of
+# pigment p at incidence a (semantics §3.3): 1 + M (1 - Fm) (p - 1), Fm
+# its empirical Fresnel curve of x = a / 90 degrees.
+function metallic_factor(M, p, a,   x, Fm) {
+    x = a / (2 * atan2(1, 1))
+    Fm = 0.014567225 / (x - 1.12) ^ 2 - 0.011612903
+    if (Fm < 0) Fm = 0
+    if (Fm > 1) Fm = 1
+    return 1 + M * (1 - Fm) * (p - 1)
+}

@@ -12,6 +12,26 @@ tests_unit_test_photon_SOURCES = tests/unit/test_photon.c \
 tests_unit_test_photon_CFLAGS = $(TEST_CFLAGS)
 tests_unit_test_photon_LDADD = $(TEST_LDADD)
 tests_unit_test_pfast_SOURCES = tests/unit/test_pfast.c \
-	tests/unit/parse_util.h tests/testutil.h
+	tests/unit/parse_util.h tests/unit/pmap_same.h tests/testutil.h
 tests_unit_test_pfast_CFLAGS = $(TEST_CFLAGS)
 tests_unit_test_pfast_LDADD = $(TEST_LDADD)
+# photons in media (src/photon/pmedia.c): extinction, media photons
+check_PROGRAMS += tests/unit/test_pmedia
+TESTS += tests/unit/test_pmedia
+tests_unit_test_pmedia_SOURCES = tests/unit/test_pmedia.c \
+	tests/unit/photon_world.c tests/unit/photon_world.h tests/testutil.h
+tests_unit_test_pmedia_CFLAGS = $(TEST_CFLAGS)
+tests_unit_test_pmedia_LDADD = $(TEST_LDADD)
+check_PROGRAMS += tests/unit/test_ptexcache
+TESTS += tests/unit/test_ptexcache
+tests_unit_test_ptexcache_SOURCES = tests/unit/test_ptexcache.c \
+	tests/unit/parse_util.h tests/unit/pmap_same.h tests/testutil.h
+tests_unit_test_ptexcache_CFLAGS = $(TEST_CFLAGS)
+tests_unit_test_ptexcache_LDADD = $(TEST_LDADD)
+# photons through filtering surfaces without an interior (trace.c)
+check_PROGRAMS += tests/unit/test_pfilter
+TESTS += tests/unit/test_pfilter
+tests_unit_test_pfilter_SOURCES = tests/unit/test_pfilter.c \
+	tests/unit/photon_world.c tests/unit/photon_world.h tests/testutil.h
+tests_unit_test_pfilter_CFLAGS = $(TEST_CFLAGS)
+tests_unit_test_pfilter_LDADD = $(TEST_LDADD)

@@ -340,3 +340,24 @@ struct pmap_world tw_world(struct tw_scene *t)
                             1e-9 };
     return w;
 }
+
+void tw_floor_mean(const struct photon_map *m, double out[3])
+{
+    static iris_finish fin;
+    fin.diffuse = 1;
+    fin.brilliance = 1;
+    const int n = 24;
+    out[0] = out[1] = out[2] = 0;
+    for (int i = 0; i < n; i++)
+        for (int j = 0; j < n; j++) {
+            vec3 p = v3(-0.8 + 1.6 * (i + 0.5) / n, 0,
+                        -0.8 + 1.6 * (j + 0.5) / n);
+            struct photon_shade_input in = { p, v3(0, 1, 0), v3(0, 1, 0),
+                                             v3(0, -1, 0), { 1, 1, 1 }, 1.0,
+                                             &fin, NULL };
+            double rgb[3];
+            photon_map_shade(m, &in, rgb);
+            for (int c = 0; c < 3; c++)
+                out[c] += rgb[c] / (n * n);
+        }
+}

@@ -7,15 +7,23 @@
 // the test's Snell's-law trace puts them.
 #version 3.7;
 #ifndef (LAW) #declare LAW = 0; #end
+// GLASS (check "glass catalogue"): 0 F2, 1 fused_silica, 2 N-BAF10 from
+// iris's glass "NAME" catalogue; CY, SPAN the wall's window (the test
+// centres it on its own prediction: the glasses deviate the beam
+// differently)
+#ifndef (GLASS) #declare GLASS = 0; #end
+#ifndef (CY) #declare CY = -0.58; #end
+#ifndef (SPAN) #declare SPAN = 0.36; #end
 global_settings {
   assumed_gamma 1
   max_trace_level 10
   photons { spacing 0.00002 autostop 0 }
 }
-// looking at the wall, y in [-0.76, -0.40], z in [-0.01, 0.01]: image
-// rows run along y (top row +y), 0.0015 a row
-camera { orthographic location <3.5, -0.58, 0> direction <1, 0, 0>
-  right <0, 0, 0.02> up <0, 0.36, 0> }
+// looking at the wall, y in [CY - SPAN/2, CY + SPAN/2] (by default
+// [-0.76, -0.40]), z in [-0.01, 0.01]: image rows run along y (top row
+// +y), SPAN/240 (0.0015) a row at +H240
+camera { orthographic location <3.5, CY, 0> direction <1, 0, 0>
+  right <0, 0, 0.02> up <0, SPAN, 0> }
 light_source { <-4.154, -0.562, 0> color rgb 1
   cylinder point_at <-0.5, 1.066, 0> radius 0.005 falloff 0.005 tightness 0
   photons { refraction on reflection off }
@@ -35,7 +43,13 @@ prism { linear_sweep linear_spline -1.5, 1.5, 4,
   interior { ior 1.62
     #ifdef (iris_version)
       #switch (LAW)
-        #case (0) glass "F2" #break
+        #case (0)
+          #switch (GLASS)
+            #case (0) glass "F2" #break
+            #case (1) glass "fused_silica" #break
+            #case (2) glass "N-BAF10" #break
+          #end
+        #break
         #case (1) dispersion 1.03 #break
         #case (2) cauchy 1.60, 0.008 #break
         #case (3) abbe 1.62, 30 #break
