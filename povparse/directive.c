@@ -13,6 +13,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "pp.h"
 
@@ -296,6 +297,25 @@ static void do_end(pp_state *ps, const pp_token *at)
     }
 }
 
+/* The array element a macro argument is, when the argument is nothing but
+** Name[i]... ('first' is its first token; the ',' or ')' after it is
+** read): POV-Ray passes it by reference, as it does an identifier. */
+static pp_value *element_argument(pp_state *ps, const pp_token *first)
+{
+    if (first->kind != T_IDENT || first->val.kind != V_ARRAY ||
+        !ps->elem_slot || ps->elem_file != first->file ||
+        ps->elem_start != first->off || ps->tok.file != first->file ||
+        ps->tok.off < ps->elem_end)
+        return NULL;
+    /* only blanks between the last ']' and the ',' or ')' */
+    const char *text = ps->files[first->file].text;
+    for (uint32_t i = ps->elem_end; i < ps->tok.off; i++)
+        if (text[i] != ' ' && text[i] != '\t' && text[i] != '\n' &&
+            text[i] != '\r')
+            return NULL;
+    return ps->elem_slot;
+}
+
 void pp_call_macro(pp_state *ps, const pp_macro *m, const pp_token *call)
 {
     if (ps->macro_depth >= ps->opt.max_macro_depth)
@@ -304,9 +324,12 @@ void pp_call_macro(pp_state *ps, const pp_macro *m, const pp_token *call)
     pp_expect(ps, T_LPAREN, "'(' after the macro name");
     pp_value *vals = NULL;
     pp_sym **refs = NULL;
+    pp_value **slots = NULL;
+    int n_slots = 0;
     if (m->n_params) {
         vals = pp_salloc(ps, (size_t)m->n_params * sizeof *vals);
         refs = pp_salloc(ps, (size_t)m->n_params * sizeof *refs);
+        slots = pp_salloc(ps, (size_t)m->n_params * sizeof *slots);
     }
     int n = 0;
     if (!pp_accept(ps, T_RPAREN)) {
@@ -333,9 +356,15 @@ void pp_call_macro(pp_state *ps, const pp_macro *m, const pp_token *call)
                 pp_unget(ps);
                 ps->tok = id;
             }
+            pp_token first = ps->tok;
             pp_unget(ps);
+            ps->elem_slot = NULL;
+            slots[n] = NULL;
             vals[n++] = pp_rvalue(ps);
             pp_next(ps);
+            if (ps->tok.kind == T_COMMA || ps->tok.kind == T_RPAREN)
+                slots[n - 1] = element_argument(ps, &first);
+            n_slots += slots[n - 1] != NULL;
             if (ps->tok.kind == T_RPAREN)
                 break;
             if (ps->tok.kind != T_COMMA) {
@@ -357,12 +386,23 @@ void pp_call_macro(pp_state *ps, const pp_macro *m, const pp_token *call)
     pp_push_frame(ps, FR_MACRO, m->file, m->body_off, call);
     ps->frames[ps->n_frames - 1].macro = m;
     int scope = ps->n_scopes - 1;
+    pp_frame *fr = &ps->frames[ps->n_frames - 1];
+    if (n_slots > 0) {
+        fr->elem_params = pp_salloc(ps, (size_t)n_slots * sizeof(pp_sym *));
+        fr->elem_slots = pp_salloc(ps, (size_t)n_slots * sizeof(pp_value *));
+        fr->elem_index = pp_salloc(ps, (size_t)n_slots * sizeof(int));
+    }
     for (int i = 0; i < n; i++) {
         pp_sym *s = sym_define(ps, scope, m->params[i], strlen(m->params[i]));
         if (refs[i])
             s->ref = refs[i];
         else
             s->val = vals[i];
+        if (slots[i]) {
+            fr->elem_params[fr->n_elem_params] = s;
+            fr->elem_index[fr->n_elem_params] = i;
+            fr->elem_slots[fr->n_elem_params++] = slots[i];
+        }
     }
     pp_token at = *call;
     pp_push_cond(ps, C_MACRO, &at);
@@ -451,6 +491,43 @@ static void do_for(pp_state *ps, const pp_token *at)
     }
 }
 
+/* The file #fopen opens. POV-Ray writes relative to its working
+** directory, the scene's for iris, also when a macro of a library file
+** (makegrass.inc) does the writing; it reads from there or along the
+** library path, here the directory of the file naming it (first, as
+** before) or the scene's. */
+static void fopen_path(pp_state *ps, const pp_token *name, const char *path,
+                       bool write, char *full, size_t size)
+{
+    if (path[0] == '/' || ps->n_files == 0) {
+        snprintf(full, size, "%s", path);
+        return;
+    }
+    snprintf(full, size, "%s/%s", ps->files[name->file].dir, path);
+    if (write || name->file == 0)
+        snprintf(full, size, "%s/%s", ps->files[0].dir, path);
+    else if (!pp_memfile_find(ps, full) && access(full, F_OK) != 0) {
+        char scene[4096];
+        snprintf(scene, sizeof scene, "%s/%s", ps->files[0].dir, path);
+        if (pp_memfile_find(ps, scene) || access(scene, F_OK) == 0)
+            snprintf(full, size, "%s", scene);
+    }
+}
+
+/* Takes a slot among the open files: closed ones leave theirs, so that a
+** scene may open files one after another without limit. */
+static void add_open_file(pp_state *ps, const pp_token *at, pp_fileh *fh)
+{
+    int n = 0;
+    for (int i = 0; i < ps->n_open_files; i++)
+        if (ps->open_files[i]->fp || ps->open_files[i]->mem)
+            ps->open_files[n++] = ps->open_files[i];
+    ps->n_open_files = n;
+    if (n >= 32)
+        pp_error(ps, at, "too many open files (32 at once)");
+    ps->open_files[ps->n_open_files++] = fh;
+}
+
 /* #fopen Name "file" read|write|append */
 static void do_fopen(pp_state *ps)
 {
@@ -467,20 +544,28 @@ static void do_fopen(pp_state *ps)
     if (!write && mode.kind != T_READ)
         pp_error(ps, &mode, "expected read, write or append");
     pp_fileh *fh = pp_salloc(ps, sizeof *fh);
+    memset(fh, 0, sizeof *fh);
     fh->write = write;
     fh->path = path;
+    char full[4096];
+    fopen_path(ps, &name, path, write, full, sizeof full);
+    pp_memfile *mem = write ? NULL : pp_memfile_find(ps, full);
     if (write && !ps->opt.allow_writes) {
-        pp_warning(ps, &mode, "#fopen for writing refused (writes are not "
-                   "allowed); output to \"%s\" is dropped", path);
+        if (!pp_memfile_find(ps, full)) /* once a file, not once a loop */
+            pp_warning(ps, &mode, "#fopen for writing refused (writes are "
+                       "not allowed); output to \"%s\" is kept in memory "
+                       "for this parse only", path);
+        fh->mem = pp_memfile_open(ps, full, mode.kind == T_APPEND);
+        add_open_file(ps, &name, fh);
+    } else if (mem) {
+        /* what this parse wrote (and could not put on disk) */
+        if (mem->len > 0) {
+            fh->fp = fmemopen(mem->buf, mem->len, "r");
+            if (!fh->fp)
+                pp_error(ps, &mode, "cannot open \"%s\"", full);
+            add_open_file(ps, &name, fh);
+        }
     } else {
-        if (ps->n_open_files >= 32)
-            pp_error(ps, &name, "too many open files");
-        char full[4096];
-        if (path[0] != '/' && ps->n_files > 0)
-            snprintf(full, sizeof full, "%s/%s", ps->files[name.file].dir,
-                     path);
-        else
-            snprintf(full, sizeof full, "%s", path);
         if (write && !pp_write_allowed(ps, full))
             pp_error(ps, &path_tok, "writing \"%s\" is refused: scenes may "
                      "write only inside their own directory", path);
@@ -490,7 +575,7 @@ static void do_fopen(pp_state *ps)
                              mode.kind == T_WRITE ? "w" : "a");
         if (!fh->fp)
             pp_error(ps, &mode, "cannot open \"%s\"", full);
-        ps->open_files[ps->n_open_files++] = fh;
+        add_open_file(ps, &name, fh);
     }
     pp_sym *s = sym_define(ps, 0, pp_tok_text(ps, &name), name.len);
     s->val.kind = V_FILE;
@@ -503,6 +588,24 @@ static pp_fileh *file_ident(pp_state *ps)
     if (ps->tok.val.kind != V_FILE)
         pp_error(ps, &ps->tok, "not a file opened by #fopen");
     return ps->tok.val.u.fh;
+}
+
+/* After an item: POV-Ray's Parse_Read_Value reads the next token and
+** keeps it only if it is a comma; when that token is the end of the file,
+** the item still counts but the file is at its end (the #read then skips
+** the remaining variables and undefines the file identifier). So a last
+** line without a trailing comma ends a #while (defined(F)) loop at once. */
+static bool item_ends_file(FILE *fp)
+{
+    int c;
+    do {
+        c = fgetc(fp);
+    } while (c == ' ' || c == '\t' || c == '\n' || c == '\r');
+    if (c == EOF)
+        return true;
+    if (c != ',')
+        ungetc(c, fp);
+    return false;
 }
 
 /* Reads one comma-separated item (number, vector or string) from 'fp'. */
@@ -546,34 +649,62 @@ static void do_read(pp_state *ps)
 {
     pp_expect(ps, T_LPAREN, "'('");
     pp_fileh *fh = file_ident(ps);
+    pp_token file = ps->tok;
+    if (fh->write)
+        pp_error(ps, &file, "cannot #read a file opened for writing");
+    bool at_end = false;
     while (pp_accept(ps, T_COMMA)) {
         ident(ps, "a variable to read into");
         pp_token name = ps->tok;
         pp_value v;
-        if (fh->fp && !fh->write && read_item(ps, fh->fp, &v)) {
+        if (at_end)
+            continue;
+        if (fh->fp && read_item(ps, fh->fp, &v)) {
             pp_sym *s = sym_lookup(ps, pp_tok_text(ps, &name), name.len);
             if (!s)
                 s = sym_define(ps, 0, pp_tok_text(ps, &name), name.len);
             sym_resolve(s)->val = v;
+            at_end = item_ends_file(fh->fp);
+        } else {
+            at_end = true; /* this variable and the rest keep their values */
         }
     }
     pp_expect(ps, T_RPAREN, "')'");
+    /* POV-Ray closes a file whose end a #read met and undefines its
+    ** identifier: scenes loop with #while (defined(File)). */
+    if (at_end) {
+        if (fh->fp)
+            fclose(fh->fp);
+        fh->fp = NULL;
+        sym_undef(ps, pp_tok_text(ps, &file), file.len);
+    }
+}
+
+/* Sends text to the file on disk or to the copy kept in memory. */
+static void put(pp_state *ps, pp_fileh *fh, const char *s)
+{
+    if (fh->fp)
+        fputs(s, fh->fp);
+    else if (fh->mem)
+        pp_memfile_write(ps, fh->mem, s, strlen(s));
 }
 
 /* Writes value 'v' as POV-Ray's #write does. */
-static void write_value(FILE *fp, const pp_value *v)
+static void write_value(pp_state *ps, pp_fileh *fh, const pp_value *v)
 {
-    if (!fp)
-        return;
+    char buf[64];
     if (v->kind == V_STRING) {
-        fputs(v->u.str, fp);
+        put(ps, fh, v->u.str);
     } else if (v->kind == V_FLOAT) {
-        fprintf(fp, "%g", v->v[0]);
+        snprintf(buf, sizeof buf, "%g", v->v[0]);
+        put(ps, fh, buf);
     } else if (v->kind == V_VECTOR || v->kind == V_COLOUR) {
-        fputc('<', fp);
-        for (int i = 0; i < v->dim; i++)
-            fprintf(fp, i ? ",%g" : "%g", v->v[i]);
-        fputc('>', fp);
+        put(ps, fh, "<");
+        for (int i = 0; i < v->dim; i++) {
+            snprintf(buf, sizeof buf, i ? ",%g" : "%g", v->v[i]);
+            put(ps, fh, buf);
+        }
+        put(ps, fh, ">");
     }
 }
 
@@ -582,12 +713,15 @@ static void do_write(pp_state *ps)
 {
     pp_expect(ps, T_LPAREN, "'('");
     pp_fileh *fh = file_ident(ps);
+    pp_token file = ps->tok;
+    if (!fh->write)
+        pp_error(ps, &file, "cannot #write a file opened for reading");
     for (;;) {
         pp_accept(ps, T_COMMA); /* optional */
         if (pp_accept(ps, T_RPAREN))
             return;
         pp_value v = pp_expr(ps);
-        write_value(fh->write ? fh->fp : NULL, &v);
+        write_value(ps, fh, &v);
     }
 }
 
@@ -774,11 +908,18 @@ void pp_directive(pp_state *ps, const pp_token *hash)
         return;
     case T_FOPEN: do_fopen(ps); return;
     case T_FCLOSE: {
-        pp_fileh *fh = file_ident(ps);
+        /* A name that is no open file is accepted, as POV-Ray does: a
+        ** #read at the end of a file has closed and undefined it. */
+        ident(ps, "a file identifier");
+        if (ps->tok.val.kind != V_FILE)
+            return;
+        pp_fileh *fh = ps->tok.val.u.fh;
         if (fh->fp) {
             fclose(fh->fp);
             fh->fp = NULL;
         }
+        fh->mem = NULL;
+        sym_undef(ps, pp_tok_text(ps, &ps->tok), ps->tok.len);
         return;
     }
     case T_READ: do_read(ps); return;

@@ -321,6 +321,13 @@ static void object(FILE *o, int d, const iris_object *ob,
         fprintf(o, "vertices %d normals %d uvs %d triangles %d textures %d\n",
                 ob->u.mesh.n_vertices, ob->u.mesh.n_normals, ob->u.mesh.n_uvs,
                 ob->u.mesh.n_triangles, ob->u.mesh.n_textures);
+        if (ob->u.mesh.tri_texture && ob->u.mesh.n_triangles > 0) {
+            /* each face's texture_list index (the first 16) */
+            fprintf(o, "  face textures");
+            for (int i = 0; i < ob->u.mesh.n_triangles && i < 16; i++)
+                fprintf(o, " %d", (int)ob->u.mesh.tri_texture[i]);
+            fputc('\n', o);
+        }
         break;
     case IRIS_OBJ_POLYGON:
         fprintf(o, "points %d\n", ob->u.polygon.n_points);
@@ -489,6 +496,8 @@ void iris_scene_dump(const iris_scene *s, FILE *o)
     fputs("  up ", o); vec(o, c->up); fputc('\n', o);
     if (c->angle > 0)
         fprintf(o, "  angle %.6g\n", c->angle);
+    if (c->v_angle > 0)
+        fprintf(o, "  vertical angle %.6g\n", c->v_angle);
     if (c->aperture > 0)
         fprintf(o, "  aperture %.6g blur_samples %d\n", c->aperture,
                 c->blur_samples);

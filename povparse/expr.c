@@ -16,6 +16,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <time.h>
 
 #include "math/vec3.h"
 #include "pp.h"
@@ -179,7 +180,10 @@ static void binop(pp_state *ps, const pp_token *at, pp_value *a,
 
 static void lparen(pp_state *ps) { pp_expect(ps, T_LPAREN, "'('"); }
 static void rparen(pp_state *ps) { pp_expect(ps, T_RPAREN, "')'"); }
-static void comma(pp_state *ps) { pp_expect(ps, T_COMMA, "','"); }
+/* Between a built-in function's arguments: POV-Ray's Parse_Comma, which
+** takes a comma if there is one ('vrotate(<1,0,0> <0,90,0>)' is valid;
+** only min/max insist on theirs). */
+static void comma(pp_state *ps) { pp_accept(ps, T_COMMA); }
 
 static double arg1(pp_state *ps)
 {
@@ -557,6 +561,35 @@ bool pp_starts_expr(pp_state *ps)
     }
 }
 
+bool pp_float_follows(pp_state *ps)
+{
+    if (pp_next_is_directive(ps))
+        return false;
+    pp_next(ps);
+    bool yes = pp_starts_expr(ps) && ps->tok.kind != T_LT &&
+               ps->tok.kind != T_STRING;
+    pp_unget(ps);
+    return yes;
+}
+
+/* Whether this parse wrote 'name' (at 'full' beside the file asking, or
+** in the scene's directory, where writes go) while writes were refused
+** (memfile.c). Out of factor(), whose frame every level of parentheses
+** pays for. */
+static __attribute__((noinline)) bool written(pp_state *ps,
+                                              const char *full,
+                                              const char *name)
+{
+    if (!ps->memfiles)
+        return false;
+    if (pp_memfile_find(ps, full))
+        return true;
+    char scene[4096];
+    snprintf(scene, sizeof scene, "%s/%s",
+             ps->n_files > 0 ? ps->files[0].dir : ".", name);
+    return name[0] != '/' && pp_memfile_find(ps, scene);
+}
+
 /* Reads the indices of an array reference; the '[' is next. */
 pp_value pp_array_element(pp_state *ps, const pp_token *at, pp_array *arr)
 {
@@ -574,6 +607,7 @@ pp_value pp_array_element(pp_state *ps, const pp_token *at, pp_array *arr)
     pp_value v = arr->items[idx];
     if (v.kind == V_NONE)
         pp_error(ps, at, "array element used before it was given a value");
+    ps->elem_slot = &arr->items[idx];
     return v;
 }
 
@@ -705,12 +739,16 @@ static pp_value factor(pp_state *ps)
     case T_FALSE: case T_NO: case T_OFF: return fval(0);
     case T_CLOCK: return fval(ps->opt.clock);
     case T_CLOCK_DELTA: return fval(0);
-    case T_CLOCK_ON: return fval(0);
+    /* POV-Ray 3.7 sets clock_on when +K is given; iris cannot tell +K0
+    ** from no +K, so a zero clock reads as off. */
+    case T_CLOCK_ON: return fval(ps->opt.clock != 0);
     case T_FRAME_NUMBER: return fval(ps->opt.frame_number);
-    /* a still image is the animation of one frame, 1 to 1 (POV-Ray) */
-    case T_INITIAL_FRAME: case T_FINAL_FRAME: return fval(1);
+    /* A still image, with or without +K, reads initial_frame = final_frame
+    ** = 0 and initial_clock = final_clock = 0 in POV-Ray 3.7 (checked with
+    ** povray 3.7.0 and #debug; tests/parse/cases/user_scenes2.pov). */
+    case T_INITIAL_FRAME: case T_FINAL_FRAME: return fval(0);
     case T_INITIAL_CLOCK: return fval(0);
-    case T_FINAL_CLOCK: return fval(1);
+    case T_FINAL_CLOCK: return fval(0);
     case T_IMAGE_WIDTH: return fval(ps->opt.image_width);
     case T_IMAGE_HEIGHT: return fval(ps->opt.image_height);
     case T_VERSION: return fval(ps->version);
@@ -811,9 +849,13 @@ static pp_value factor(pp_state *ps)
         lparen(ps);
         iris_vec3 p = pp_vector(ps);
         rparen(ps);
+        /* POV-Ray only warns ("Possible Parse Error") and yields <0,0,0>:
+        ** math.inc's VRotation, used by transforms.inc's Reorient_Trans,
+        ** normalizes a zero cross product for parallel vectors. */
         if (v3_len(p) == 0)
-            pp_error(ps, &at, "vnormalize: zero-length vector");
-        p = v3_norm(p);
+            pp_warning(ps, &at, "vnormalize: zero-length vector (result <0,0,0>)");
+        else
+            p = v3_norm(p);
         return vval(3, p.x, p.y, p.z, 0);
     }
     case T_VCROSS: {
@@ -953,7 +995,10 @@ static pp_value factor(pp_state *ps)
             snprintf(full, sizeof full, "%s/%s", ps->files[at.file].dir, s);
         else
             snprintf(full, sizeof full, "%s", s);
-        /* A file the scene may not read does not exist for it. */
+        /* A file the scene may not read does not exist for it; one it
+        ** wrote while writes were refused does. */
+        if (written(ps, full, s))
+            return fval(1);
         return fval(stat(full, &st) == 0 && pp_read_allowed(ps, full));
     }
     case T_MIN_EXTENT: case T_MAX_EXTENT: {
@@ -993,10 +1038,18 @@ static pp_value factor(pp_state *ps)
         int prec = pp_int(ps);
         rparen(ps);
         need_numeric(ps, &at, &v);
-        if (n < 1)
-            n = 1;
+        /* POV-Ray prints 2 to 5 components, and a float as its first
+        ** with zeros after it (Parse_Unknown_Vector does not promote) */
+        if (n < 2)
+            n = 2;
         if (n > 5)
             n = 5;
+        if (v.kind == V_FLOAT) {
+            for (int i = 1; i < 5; i++)
+                v.v[i] = 0;
+            v.kind = V_VECTOR;
+            v.dim = n;
+        }
         pp_value_promote(&v, n);
         char *buf = pp_salloc(ps, 2048);
         size_t used = 0;
@@ -1062,13 +1115,41 @@ static pp_value factor(pp_state *ps)
                                       : tolower((unsigned char)*p));
         return sval(r);
     }
-    case T_DATETIME:
+    case T_DATETIME: {
+        /* datetime(days [, format]): 'days' counts from 2000-01-01 00:00
+        ** UTC (POV-Ray's 'now' scale: 10957 days after the Unix epoch),
+        ** rounded to the second, formatted by strftime in UTC; the default
+        ** format is POV-Ray's "%Y-%m-%d %H:%M:%SZ". */
         lparen(ps);
-        pp_float(ps);
-        if (pp_accept(ps, T_COMMA))
-            pp_string(ps);
+        double days = pp_float(ps);
+        const char *fmt = "%Y-%m-%d %H:%M:%SZ";
+        pp_token ft = at;
+        if (pp_accept(ps, T_COMMA)) {
+            pp_next(ps);
+            ft = ps->tok;
+            pp_unget(ps);
+            fmt = pp_string(ps);
+            if (!*fmt)
+                pp_error(ps, &ft, "datetime: empty format string");
+        }
         rparen(ps);
-        return sval("");
+        double secs = floor((days + 10957.0) * 86400.0 + 0.5);
+        if (!(fabs(secs) < 1e15))
+            pp_error(ps, &at, "datetime: time out of range");
+        time_t stamp = (time_t)secs;
+        struct tm tmv;
+        char buf[201];
+        size_t n = 0;
+        if (gmtime_r(&stamp, &tmv)) {
+            /* the format is the scene's, as POV-Ray's datetime takes it */
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wformat-nonliteral"
+            n = strftime(buf, sizeof buf, fmt, &tmv);
+#pragma GCC diagnostic pop
+        }
+        buf[n] = 0; /* POV-Ray: an empty string when it does not fit */
+        return sval(pp_strdup(ps, buf, n));
+    }
     default:
         if (is_colour_kw(k))
             return colour_body(ps);

@@ -474,6 +474,30 @@ static void stamp_noise_generator(pp_state *ps, iris_pigment *pg,
         stamp_noise_generator(ps, pg->entries[i].pigment, depth + 1);
 }
 
+static void free_images(void *images) { iris_fn_free_images(images); }
+
+/* A pattern or pigment function that reads an image, a density file or
+** an object gets them loaded now (src/fn/fnimages.c), so that it has its
+** values while the scene is parsed as well as in the render; the scene
+** frees them. */
+static void load_images(pp_state *ps, iris_fn *fn)
+{
+    iris_scene *sc = ps->scene;
+    if (!iris_fn_load_images(&fn->code[0], sc->settings.assumed_gamma,
+                             ps->version))
+        pp_nomem(ps);
+    if (!fn->code[0].images)
+        return;
+    iris_scene_cleanup *c = pp_alloc(ps, sizeof *c);
+    c->free = free_images;
+    c->data = (void *)fn->code[0].images;
+    /* appended, so that the images go in the order they came */
+    iris_scene_cleanup **end = &sc->cleanups;
+    while (*end)
+        end = &(*end)->next;
+    *end = c;
+}
+
 /* F(x,y,z) = the grey level of pigment 'pg' at (x,y,z), POV-Ray's
 ** Greyscale() (0.297 R + 0.589 G + 0.114 B; src/fn's component 5): the
 ** value of pigment_pattern { pg }. */
@@ -491,7 +515,9 @@ iris_fn *pp_pigment_grey_fn(pp_state *ps, iris_pigment *pg)
     emit(&c, IRIS_FN_PATTERN, 5, 0, 0, 1);
     c.code[0].pattern = &pg->pattern;
     c.code[0].pigment = pg;
-    return finish_fn(&c, 1);
+    iris_fn *fn = finish_fn(&c, 1);
+    load_images(ps, fn);
+    return fn;
 }
 
 /* function [ '(' params ')' ] '{' body '}' ; the current token is
@@ -544,7 +570,9 @@ iris_fn *pp_function(pp_state *ps)
         if (k == T_PIGMENT)
             c.code[c.n - 1].pigment = pg;
         pp_expect(ps, T_RBRACE, "'}'");
-        return finish_fn(&c, k == T_PIGMENT ? 5 : 1);
+        iris_fn *fn = finish_fn(&c, k == T_PIGMENT ? 5 : 1);
+        load_images(ps, fn);
+        return fn;
     }
     if (k == T_SPLINE) {
         /* a spline function: S(t) is the spline's value; the keys are

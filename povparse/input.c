@@ -142,16 +142,77 @@ void pp_pop_frame(pp_state *ps)
         sym_pop_scope(ps);
         ps->include_depth--;
     } else if (fr->kind == FR_MACRO) {
+        /* parameters passed an array element give their value back to
+        ** it, unless the macro #undef'd them */
+        for (int i = 0; i < fr->n_elem_params; i++) {
+            pp_sym *p = fr->elem_params[i];
+            const char *name = fr->macro->params[fr->elem_index[i]];
+            if (!sym_is_live(ps, p) || strlen(name) != p->name_len ||
+                memcmp(name, p->name, p->name_len) != 0)
+                continue;
+            p = sym_resolve(p);
+            if (p && p->val.kind != V_NONE)
+                *fr->elem_slots[i] = p->val;
+        }
         sym_pop_scope(ps);
         ps->macro_depth--;
     }
     ps->n_frames--;
 }
 
+/* #include of a file this parse wrote while writes were refused
+** (memfile.c), named relative to the including file or the scene as
+** locate() would find it on disk. Its text is taken as it is now: a
+** scene may write the file again and include the new text. */
+static bool include_written(pp_state *ps, const char *name, uint32_t from,
+                            const pp_token *at)
+{
+    if (!ps->memfiles)
+        return false;
+    const char *dirs[2] = { NULL, NULL };
+    if (from < (uint32_t)ps->n_files)
+        dirs[0] = ps->files[from].dir;
+    if (ps->n_files > 0)
+        dirs[1] = ps->files[0].dir;
+    for (int i = 0; i < 2; i++) {
+        char buf[4096];
+        if (name[0] != '/' && !dirs[i])
+            continue;
+        if (name[0] == '/')
+            snprintf(buf, sizeof buf, "%s", name);
+        else
+            snprintf(buf, sizeof buf, "%s/%s", dirs[i], name);
+        pp_memfile *m = pp_memfile_find(ps, buf);
+        if (!m)
+            continue;
+        int limit = ps->opt.max_include_depth;
+        if (ps->include_depth >= limit)
+            pp_error(ps, at, "#include nested more than %d deep (does a "
+                     "file include itself?)", limit);
+        uint32_t f = UINT32_MAX; /* the same text included before */
+        for (int k = 0; k < ps->n_files && f == UINT32_MAX; k++)
+            if (!strcmp(ps->files[k].path, m->path) &&
+                ps->files[k].len == m->len &&
+                !memcmp(ps->files[k].text, m->buf, m->len))
+                f = (uint32_t)k;
+        if (f == UINT32_MAX) {
+            char *text = pp_salloc(ps, m->len + 1);
+            memcpy(text, m->buf, m->len + 1);
+            f = pp_add_text(ps, m->path, text, m->len);
+        }
+        ps->include_depth++;
+        pp_push_frame(ps, FR_INCLUDE, f, 0, at);
+        return true;
+    }
+    return false;
+}
+
 void pp_open_file(pp_state *ps, const char *path, bool is_include,
                   const pp_token *at)
 {
     uint32_t from = at ? at->file : UINT32_MAX;
+    if (is_include && include_written(ps, path, from, at))
+        return;
     const char *full = is_include ? locate(ps, path, from) : path;
     if (!full) {
         if (at)
@@ -340,6 +401,9 @@ static void resolve_element(pp_state *ps)
     pp_token id = ps->tok;
     pp_value v = pp_array_element(ps, &id, id.val.u.arr);
     uint32_t end = ps->tok.off + ps->tok.len;
+    ps->elem_file = id.file;
+    ps->elem_start = id.off;
+    ps->elem_end = ps->tok.file == id.file ? end : id.off;
     ps->tok = id;
     ps->tok.val = v;
     ps->tok.sym = NULL;

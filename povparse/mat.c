@@ -254,7 +254,7 @@ static void warp_block(pp_state *ps, iris_pattern *p)
         case T_BLACK_HOLE:
             w = block_warp(ps, p, IRIS_WARP_BLACK_HOLE);
             w->centre = pp_vector(ps);
-            pp_expect(ps, T_COMMA, "','");
+            pp_accept(ps, T_COMMA); /* optional, as everywhere in POV-Ray */
             w->radius = pp_float(ps);
             w->strength = 1;
             w->falloff = 2;
@@ -271,7 +271,7 @@ static void warp_block(pp_state *ps, iris_pattern *p)
                 pp_unget(ps);
                 if (pp_starts_expr(ps)) {
                     w->orientation = pp_vector(ps);
-                    pp_expect(ps, T_COMMA, "','");
+                    pp_accept(ps, T_COMMA); /* optional: 'planar z 0.5' */
                     w->offset.x = pp_float(ps);
                 }
             }
@@ -430,14 +430,66 @@ static bool is_image_type(int k)
 }
 
 /* Reads [type] "file" of an image_map/bump_map/height_field. */
+/* function W, H { body }: the image POV-Ray makes of a function
+** (Make_Pattern_Image): pixel (j, i) of row i from the top is the
+** function at (j / (W - 1), i / (H - 1), 0), a float function as grey, a
+** pigment function as its colour with alpha 1 - transmit, each stored in
+** 16 bits (0..1; the rounding is below 1e-5 and not copied). The
+** function token is current. */
+static void function_image(pp_state *ps, iris_image_ref *img)
+{
+    pp_token at = ps->tok;
+    double fw = pp_float(ps);
+    pp_accept(ps, T_COMMA);
+    double fh = pp_float(ps);
+    int w = (int)(fw + 0.5), h = (int)(fh + 0.5);
+    if (!(fw + 0.5 >= 2) || !(fh + 0.5 >= 2) || fw > 16384 || fh > 16384)
+        pp_error(ps, &at, "a function image needs 2 to 16384 pixels a side, "
+                 "not %g x %g", fw, fh);
+    iris_fn *fn = pp_function(ps);
+    float *px = pp_alloc(ps, (size_t)w * (size_t)h * 4 * sizeof *px);
+    for (int i = 0; i < h; i++) {
+        for (int j = 0; j < w; j++) {
+            double p[3] = { (double)j / (w - 1), (double)i / (h - 1), 0 };
+            float *o = px + 4 * ((size_t)i * (size_t)w + (size_t)j);
+            double c[5] = { 0, 0, 0, 0, 0 };
+            if (fn->n_results == 5 && fn->n_code == 1 &&
+                fn->code[0].op == IRIS_FN_PATTERN && fn->code[0].pigment) {
+                iris_fn_insn one = fn->code[0];
+                iris_fn f1 = *fn;
+                f1.code = &one;
+                f1.n_results = 1;
+                for (int k = 0; k < 5; k++) {
+                    one.arg = k;
+                    c[k] = iris_fn_eval(&f1, p, 3);
+                }
+            } else {
+                c[0] = c[1] = c[2] = iris_fn_eval(fn, p, 3);
+            }
+            for (int k = 0; k < 3; k++)
+                o[k] = (float)fmin(fmax(c[k], 0.0), 1.0);
+            o[3] = (float)fmin(fmax(1.0 - c[4], 0.0), 1.0);
+        }
+    }
+    char name[64];
+    snprintf(name, sizeof name, "function image %dx%d #%d", w, h,
+             ps->n_function_images++);
+    img->path = pp_strdup(ps, name, strlen(name));
+    img->pixels = px;
+    img->pixels_w = w;
+    img->pixels_h = h;
+}
+
 static iris_image_ref *image_file(pp_state *ps)
 {
     iris_image_ref *img = pp_alloc(ps, sizeof *img);
     pp_next(ps);
     if (is_image_type(ps->tok.kind))
         pp_next(ps);
-    if (ps->tok.kind == T_FUNCTION)
-        pp_error(ps, &ps->tok, "image from a function is not supported");
+    if (ps->tok.kind == T_FUNCTION) {
+        function_image(ps, img);
+        return img;
+    }
     pp_unget(ps);
     pp_token at = ps->tok;
     const char *name = pp_string(ps);
@@ -554,11 +606,8 @@ static void fractal_defaults(iris_pattern *p)
 static void slope_range(pp_state *ps, double *r)
 {
     for (int i = 0; i < 2; i++) {
-        if (!pp_accept(ps, T_COMMA))
-            return;
-        pp_next(ps);
-        pp_unget(ps);
-        if (pp_starts_expr(ps))
+        pp_accept(ps, T_COMMA); /* optional too: 'slope { y 0.2 0.8 }' */
+        if (pp_float_follows(ps))
             r[i] = pp_float(ps);
     }
 }
@@ -831,7 +880,8 @@ static bool pattern_mod(pp_state *ps, iris_pattern *p)
             return false;
         int type = pp_int(ps);
         double factor = 1;
-        if (pp_accept(ps, T_COMMA))
+        /* POV-Ray: 'exterior 1, 0.5' or 'exterior 1 0.5' (Parse_Comma) */
+        if (pp_accept(ps, T_COMMA) || pp_float_follows(ps))
             factor = pp_float(ps);
         if (p->kind == IRIS_PAT_PAVEMENT)
             return true;
@@ -1126,10 +1176,13 @@ iris_texture *pp_tex_transform(pp_state *ps, const iris_texture *t,
     n->normal = pp_nor_transform(ps, t->normal, xf);
     /* a transform between the map's pattern and its texture_map applies
     ** to the pattern (the entries, parsed later, do not get it) */
-    if (t->map_pattern.kind != IRIS_PAT_NONE && !t->n_entries)
+    /* (a uv-mapped one lives in uv space, which they do not move) */
+    bool map_xf = !t->map_pattern.uv_mapping;
+    if (t->map_pattern.kind != IRIS_PAT_NONE && !t->n_entries && map_xf)
         pattern_xf(&n->map_pattern, xf);
     if (t->n_entries) {
-        pattern_xf(&n->map_pattern, xf);
+        if (map_xf)
+            pattern_xf(&n->map_pattern, xf);
         n->entries = pp_alloc(ps, (size_t)n->n_entries * sizeof *n->entries);
         memcpy(n->entries, t->entries, (size_t)n->n_entries * sizeof *n->entries);
         for (int i = 0; i < n->n_entries; i++)
@@ -1653,8 +1706,12 @@ iris_finish *pp_finish(pp_state *ps, const iris_finish *base)
         case T_DIFFUSE:
             diffuse_albedo = pp_accept(ps, T_ALBEDO);
             f->diffuse = pp_float(ps);
+            /* POV-Ray: optional comma, then an optional float: 'diffuse
+            ** 0.6 0.3' sets the back side as 'diffuse 0.6, 0.3' does. */
             if (pp_accept(ps, T_COMMA))
                 f->diffuse_back = pp_float(ps);
+            else
+                opt_float(ps, &f->diffuse_back);
             break;
         case T_BRILLIANCE: f->brilliance = pp_float(ps); break;
         case T_PHONG:
@@ -1742,24 +1799,72 @@ iris_texture *pp_texture_new(pp_state *ps, const pp_token *at)
     return t;
 }
 
+/* A copy of pigment 'p' evaluated at the surface's <u, v, 0>, the
+** pigments of its pigment_map too (POV-Ray evaluates a map's entries at
+** the map pattern's point, here the uv point). */
+static iris_pigment *pig_uv(pp_state *ps, const iris_pigment *p)
+{
+    if (!p)
+        return NULL;
+    iris_pigment *n = pp_alloc(ps, sizeof *n);
+    *n = *p;
+    n->pattern.uv_mapping = true;
+    if (n->n_entries && n->is_pigment_map) {
+        n->entries = pp_alloc(ps, (size_t)n->n_entries * sizeof *n->entries);
+        memcpy(n->entries, p->entries, (size_t)n->n_entries * sizeof *n->entries);
+        for (int i = 0; i < n->n_entries; i++)
+            n->entries[i].pigment = pig_uv(ps, p->entries[i].pigment);
+    }
+    return n;
+}
+
+/* pig_uv for normals (and their normal_map). */
+static iris_normal *nor_uv(pp_state *ps, const iris_normal *p)
+{
+    if (!p)
+        return NULL;
+    iris_normal *n = pp_alloc(ps, sizeof *n);
+    *n = *p;
+    n->pattern.uv_mapping = true;
+    if (n->n_entries && !n->is_slope_map) {
+        n->entries = pp_alloc(ps, (size_t)n->n_entries * sizeof *n->entries);
+        memcpy(n->entries, p->entries, (size_t)n->n_entries * sizeof *n->entries);
+        for (int i = 0; i < n->n_entries; i++)
+            n->entries[i].normal = nor_uv(ps, p->entries[i].normal);
+    }
+    return n;
+}
+
 /* texture { uv_mapping ... }: POV-Ray evaluates the whole texture at
 ** the surface's <u, v, 0>; here its pigment and normal are marked so
 ** (the layers of a texture_map are not). */
 static iris_texture *uv_texture(pp_state *ps, iris_texture *t)
 {
-    if (t->pigment) {
-        iris_pigment *p = pp_alloc(ps, sizeof *p);
-        *p = *t->pigment;
-        p->pattern.uv_mapping = true;
-        t->pigment = p;
-    }
-    if (t->normal) {
-        iris_normal *n = pp_alloc(ps, sizeof *n);
-        *n = *t->normal;
-        n->pattern.uv_mapping = true;
-        t->normal = n;
-    }
+    t->pigment = pig_uv(ps, t->pigment);
+    t->normal = nor_uv(ps, t->normal);
     return t;
+}
+
+iris_texture *pp_tex_uv_mapped(pp_state *ps, const iris_texture *t)
+{
+    if (!t)
+        return NULL;
+    iris_texture *n = pp_alloc(ps, sizeof *n);
+    *n = *t;
+    uv_texture(ps, n);
+    if (n->map_pattern.kind != IRIS_PAT_NONE) {
+        n->map_pattern.uv_mapping = true;
+        if (n->n_entries) {
+            n->entries = pp_alloc(ps, (size_t)n->n_entries * sizeof *n->entries);
+            memcpy(n->entries, t->entries,
+                   (size_t)n->n_entries * sizeof *n->entries);
+            for (int i = 0; i < n->n_entries; i++)
+                n->entries[i].texture =
+                    pp_tex_uv_mapped(ps, t->entries[i].texture);
+        }
+    }
+    n->next = pp_tex_uv_mapped(ps, t->next);
+    return n;
 }
 
 /* The items of a texture up to 'end'. */
@@ -1842,6 +1947,21 @@ static iris_texture *texture_body(pp_state *ps, int end)
                                                   at.val.u.map->e,
                                                   at.val.u.map->n,
                                                   V_TEXTURE_MAP);
+                continue;
+            }
+            /* texture { Jade }: POV-Ray takes a pigment, normal or finish
+            ** identifier for that part of a plain texture (a concession
+            ** to old scenes that textures.inc's pigments invite) */
+            if (at.val.kind == V_PIGMENT) {
+                t->pigment = at.val.u.pig;
+                continue;
+            }
+            if (at.val.kind == V_NORMAL) {
+                t->normal = at.val.u.nor;
+                continue;
+            }
+            if (at.val.kind == V_FINISH) {
+                t->finish = at.val.u.fin;
                 continue;
             }
             break;

@@ -130,7 +130,8 @@ iris_media *pp_media(pp_state *ps)
         }
         case T_SAMPLES: {
             double lo = pp_float(ps), hi = lo;
-            if (pp_accept(ps, T_COMMA))
+            /* POV-Ray: Parse_Comma, then Allow_Float: 'samples 5 10' */
+            if (pp_accept(ps, T_COMMA) || pp_float_follows(ps))
                 hi = pp_float(ps);
             if (!(lo >= 1))
                 pp_error(ps, &at, "media needs at least one sample per "

@@ -116,6 +116,16 @@ static void transform_rec(pp_state *ps, iris_object *o,
             if (o->u.blob.components[i].texture)
                 o->u.blob.components[i].texture = pp_tex_transform(
                     ps, o->u.blob.components[i].texture, xf);
+    /* a mesh's own textures (texture_list, triangle textures) move with
+    ** it, as POV-Ray's Mesh::Transform does; a new array, because copies
+    ** of a declared mesh share the old one */
+    if (textures && o->kind == IRIS_OBJ_MESH && o->u.mesh.n_textures > 0) {
+        iris_mesh_data *m = &o->u.mesh;
+        iris_texture **t = pp_alloc(ps, (size_t)m->n_textures * sizeof *t);
+        for (int i = 0; i < m->n_textures; i++)
+            t[i] = pp_tex_transform(ps, m->textures[i], xf);
+        m->textures = t;
+    }
     for (pp_light_node *l = ((pp_obj *)o)->lights; l; l = l->next) {
         pp_light_transform(l->light, xf);
         if (l->light->looks_like)
@@ -281,8 +291,8 @@ static iris_texture *own_top_texture(pp_state *ps, iris_object *o,
     return t;
 }
 
-/* Object modifiers; false when the current token is none. */
-static bool object_mod(pp_state *ps, iris_object *o)
+/* One object modifier; false when the current token is none. */
+static bool object_mod_item(pp_state *ps, iris_object *o)
 {
     pp_token at = ps->tok;
     switch (at.kind) {
@@ -350,7 +360,20 @@ static bool object_mod(pp_state *ps, iris_object *o)
     case T_CLIPPED_BY: clip_bound(ps, o, true); return true;
     case T_BOUNDED_BY: clip_bound(ps, o, false); return true;
     case T_PHOTONS: object_photons(ps, o); return true;
-    case T_UV_MAPPING: case T_CUTAWAY_TEXTURES: return true;
+    case T_UV_MAPPING: {
+        ((pp_obj *)o)->uv_mapping = true;
+        /* a mesh's own textures (texture_list, triangle textures) too */
+        iris_mesh_data *m = o->kind == IRIS_OBJ_MESH ? &o->u.mesh : NULL;
+        if (m && m->n_textures > 0 && m->textures) {
+            iris_texture **nt = pp_alloc(ps, (size_t)m->n_textures *
+                                                 sizeof *nt);
+            for (int i = 0; i < m->n_textures; i++)
+                nt[i] = pp_tex_uv_mapped(ps, m->textures[i]);
+            m->textures = nt;
+        }
+        return true;
+    }
+    case T_CUTAWAY_TEXTURES: ((pp_obj *)o)->cutaway = true; return true;
     case T_RADIOSITY:
         pp_expect(ps, T_LBRACE, "'{'");
         pp_skip_block(ps);
@@ -365,6 +388,30 @@ static bool object_mod(pp_state *ps, iris_object *o)
         return false;
     }
     }
+}
+
+/* After an object's uv_mapping, every texture it is given is evaluated at
+** the surface's <u, v, 0>, and the object's later transforms leave it
+** (POV-Ray's UV_FLAG: trace.cpp takes the uv point for the whole texture;
+** Transform_Textures is skipped). Marked as each texture arrives, before
+** any transform that follows it. */
+static void uv_mark(pp_state *ps, iris_object *o)
+{
+    if (!((pp_obj *)o)->uv_mapping)
+        return;
+    o->texture = pp_tex_uv_mapped(ps, o->texture);
+    o->interior_texture = pp_tex_uv_mapped(ps, o->interior_texture);
+}
+
+/* Object modifiers; false when the current token is none. */
+static bool object_mod(pp_state *ps, iris_object *o)
+{
+    int k = ps->tok.kind;
+    bool r = object_mod_item(ps, o);
+    if (r && (k == T_TEXTURE || k == T_PIGMENT || k == T_NORMAL ||
+              k == T_MATERIAL || k == T_INTERIOR_TEXTURE))
+        uv_mark(ps, o);
+    return r;
 }
 
 /* Reads modifiers up to the closing '}' of the object opened at 'open'. */
@@ -585,6 +632,36 @@ static int count(pp_state *ps, int max, const char *what)
 
 #define MAX_ITEMS (1 << 24)
 
+/* True when the next tokens are a float expression, not the '<' or vector
+** identifier of the next face, nor the '}' or a directive that ends the
+** list: POV-Ray's test for a texture index after a face. */
+static bool next_is_float(pp_state *ps)
+{
+    if (pp_next_is_directive(ps))
+        return false;
+    pp_next(ps);
+    bool f = pp_starts_expr(ps);
+    switch (ps->tok.kind) {
+    case T_LT: case T_STRING:
+    case T_X: case T_Y: case T_Z: case T_T: case T_U: case T_V:
+    case T_VNORMALIZE: case T_VCROSS: case T_VROTATE: case T_VAXIS_ROTATE:
+    case T_VTURBULENCE: case T_MIN_EXTENT: case T_MAX_EXTENT: case T_TRACE:
+        f = false;
+        break;
+    case T_IDENT: {
+        const pp_value *v = &ps->tok.val;
+        if (v->kind == V_ARRAY && v->u.arr->n > 0)
+            v = &v->u.arr->items[0]; /* its elements' kind */
+        f = v->kind == V_FLOAT;
+        break;
+    }
+    default:
+        break;
+    }
+    pp_unget(ps);
+    return f;
+}
+
 /* mesh2 { vertex_vectors{} normal_vectors{} uv_vectors{} texture_list{}
 **         face_indices{} normal_indices{} uv_indices{} ... } */
 static void mesh2(pp_state *ps, iris_object *o)
@@ -656,34 +733,25 @@ static void mesh2(pp_state *ps, iris_object *o)
                 m->tri_vertices[3 * i] = a;
                 m->tri_vertices[3 * i + 1] = b;
                 m->tri_vertices[3 * i + 2] = c;
-                /* optional texture indices: one or three */
-                if (!pp_next_is_directive(ps)) {
+                if (m->tri_texture) /* none: the object's texture */
+                    m->tri_texture[i] = -1;
+                /* optional texture indices: one or three, each any
+                ** float expression (mod(I+J, 2)); the first is the face's
+                ** texture (the other two blend it per vertex in POV-Ray,
+                ** which iris does not) */
+                for (int k = 0; k < 3; k++) {
+                    pp_accept(ps, T_COMMA);
+                    if (!next_is_float(ps))
+                        break;
                     pp_next(ps);
-                    bool more = ps->tok.kind == T_COMMA;
-                    if (more) {
-                        pp_next(ps);
-                        more = ps->tok.kind == T_NUMBER ||
-                               (ps->tok.kind == T_IDENT &&
-                                ps->tok.val.kind == V_FLOAT);
-                    }
+                    pp_token tt = ps->tok;
                     pp_unget(ps);
-                    if (more) {
-                        int t = pp_int(ps);
-                        if (m->tri_texture)
-                            m->tri_texture[i] = t < m->n_textures ? t : 0;
-                        if (pp_accept(ps, T_COMMA)) {
-                            pp_next(ps);
-                            bool three = ps->tok.kind == T_NUMBER ||
-                                         (ps->tok.kind == T_IDENT &&
-                                          ps->tok.val.kind == V_FLOAT);
-                            pp_unget(ps);
-                            if (three) {
-                                pp_float(ps);
-                                comma(ps);
-                                pp_float(ps);
-                            }
-                        }
-                    }
+                    double tf = pp_float(ps);
+                    if (!(tf >= 0) || tf >= m->n_textures)
+                        pp_error(ps, &tt, "texture index %g out of range "
+                                 "[0, %d]", tf, m->n_textures - 1);
+                    if (k == 0 && m->tri_texture)
+                        m->tri_texture[i] = (int32_t)tf;
                 }
             }
             pp_accept(ps, T_COMMA);
@@ -1013,6 +1081,9 @@ static void isosurface(pp_state *ps, iris_object *o)
             break;
         case T_MAX_TRACE: o->u.isosurface.max_trace = pp_int(ps); break;
         case T_ALL_INTERSECTIONS: o->u.isosurface.all_intersections = true; break;
+        /* POV-Ray's isosurface reads 'open' among its own keywords, so
+        ** that max_gradient and the others may still follow it */
+        case T_OPEN: o->open = true; break;
         default:
             pp_unget(ps);
             if (!o->u.isosurface.fn)
@@ -1059,7 +1130,9 @@ static void shape_body(pp_state *ps, iris_object *o, int kw, const pp_token *at)
         o->u.disc.centre = pp_vector(ps); comma(ps);
         o->u.disc.normal = pp_vector(ps); comma(ps);
         o->u.disc.radius = pp_float(ps);
-        if (pp_accept(ps, T_COMMA))
+        /* POV-Ray: an optional comma, then a hole radius if a float
+        ** follows ('disc { C N 1 0.5 }' has a hole too) */
+        if (pp_accept(ps, T_COMMA) || next_is_float(ps))
             o->u.disc.hole_radius = pp_float(ps);
         break;
     case T_TRIANGLE: case T_SMOOTH_TRIANGLE: {
@@ -1179,10 +1252,17 @@ static void shape_body(pp_state *ps, iris_object *o, int kw, const pp_token *at)
     case T_TEXT: {
         pp_next(ps);
         if (ps->tok.kind == T_INTERNAL) {
+            /* POV-Ray's built-in fonts are copies of the four it ships
+            ** (fileutil.cpp): 1 timrom, 2 cyrvetic, 3 crystal, any other
+            ** number povlogo; iris reads the installed files */
+            static const char *const internal[] = {
+                "povlogo.ttf", "timrom.ttf", "cyrvetic.ttf", "crystal.ttf" };
+            pp_next(ps);
+            pp_token kt = ps->tok;
+            pp_unget(ps);
             double k = pp_float(ps);
-            char buf[32];
-            snprintf(buf, sizeof buf, "internal %d", (int)fmax(0, fmin(k, 1e6)));
-            o->u.text.font = pp_strdup(ps, buf, strlen(buf));
+            int id = k >= 1 && k < 4 ? (int)k : 0;
+            o->u.text.font = pp_find_file(ps, &kt, internal[id]);
         } else {
             if (ps->tok.kind != T_TTF)
                 pp_unget(ps);
@@ -1586,6 +1666,27 @@ static void light_group_lights(pp_state *ps, iris_object *o)
     o->no_global_lights = !((pp_obj *)o)->global_lights;
 }
 
+/* cutaway_textures: in POV-Ray an untextured part of a difference takes,
+** where it is hit, the texture of the difference's first object if that
+** object contains the point (CSG::Determine_Textures), instead of the
+** default texture. Every visible point of a difference lies inside its
+** first object, so when that object is a textured simple shape its texture
+** is the answer everywhere, and the parser can hand it down. Returns NULL
+** when the rule does not apply: no cutaway_textures, a texture on the
+** difference or above it (that one is inherited as usual), or a first
+** object that is itself a CSG or untextured (POV-Ray then looks inside it
+** point by point; iris keeps the default texture there). Intersections
+** average the textures of all their textured members in POV-Ray; not done. */
+static iris_texture *cutaway_texture(const iris_object *o,
+                                     const iris_texture *inherited)
+{
+    if (!((const pp_obj *)o)->cutaway || inherited ||
+        o->kind != IRIS_OBJ_DIFFERENCE || o->u.csg.n_children < 2)
+        return NULL;
+    const iris_object *first = o->u.csg.children[0];
+    return is_csg(first) ? NULL : first->texture;
+}
+
 static void finalize(pp_state *ps, iris_object *o, iris_texture *tex,
                      iris_interior *inter, const iris_object *parent)
 {
@@ -1617,8 +1718,9 @@ static void finalize(pp_state *ps, iris_object *o, iris_texture *tex,
     if (o->interior == NULL && in)
         o->interior = in;
     if (is_csg(o)) {
+        iris_texture *cut = cutaway_texture(o, t);
         for (int i = 0; i < o->u.csg.n_children; i++)
-            finalize(ps, o->u.csg.children[i], t, in, o);
+            finalize(ps, o->u.csg.children[i], i > 0 && cut ? cut : t, in, o);
     } else if (!o->texture) {
         o->texture = t ? t : pp_default_texture(ps);
     }

@@ -190,6 +190,10 @@ static enum iris_status run(const char *name, const char *text, size_t len,
     if (setjmp(ps->jb)) {
         enum iris_status st = ps->fail_status ? ps->fail_status : IRIS_EPARSE;
         release(ps);
+        /* what the scene holds outside its arena (a function's images) */
+        for (iris_scene_cleanup *c = ps->scene ? ps->scene->cleanups : NULL;
+             c; c = c->next)
+            c->free(c->data);
         arena_destroy(ps->A);
         iris_free(ps);
         return st;

@@ -157,9 +157,19 @@ typedef struct pp_spline {
     double (*coeff)[5];    /* natural splines: from iris_fn_spline_coeffs */
 } pp_spline;
 
+/* A file a scene wrote while writes are refused (memfile.c): kept for
+** the rest of the parse so that the scene reads back what it wrote. */
+typedef struct pp_memfile {
+    struct pp_memfile *next;
+    const char *path;      /* normalised directory/name */
+    char *buf;             /* scratch arena; len bytes and a NUL */
+    size_t len, cap;
+} pp_memfile;
+
 /* A file opened by #fopen. */
 typedef struct pp_fileh {
     FILE *fp;
+    pp_memfile *mem;       /* a refused write goes here instead of fp */
     bool write;
     const char *path;
 } pp_fileh;
@@ -195,6 +205,12 @@ typedef struct pp_frame {
     const pp_macro *macro;
     int cond_base;         /* cond stack depth when the frame started */
     int scope;             /* its symbol table index */
+    /* macro parameters passed an array element (Swap(A[i], A[j])): their
+    ** values go back to the elements when the macro returns */
+    int n_elem_params;
+    pp_sym **elem_params;
+    int *elem_index;       /* which parameter of 'macro' each one is */
+    pp_value **elem_slots;
 } pp_frame;
 
 /* Conditional/loop stack entries (#if, #while, #for, #switch, macro). */
@@ -225,6 +241,9 @@ typedef struct pp_obj {
     pp_light_node *lights; /* light_sources inside a CSG */
     bool is_light_group;
     bool global_lights;    /* light_group: global_lights on */
+    bool uv_mapping;       /* object { uv_mapping ... }: its textures are
+                           ** evaluated at <u, v, 0> (POV-Ray's UV_FLAG) */
+    bool cutaway;          /* cutaway_textures (CUTAWAY_TEXTURES_FLAG) */
 } pp_obj;
 
 struct pp_state {
@@ -279,6 +298,12 @@ struct pp_state {
 
     pp_fileh *open_files[32];
     int n_open_files;
+    pp_memfile *memfiles;  /* refused writes, newest first */
+    int n_function_images; /* image_map { function ... }: their names */
+    /* The array element an identifier with indices last stood for
+    ** (input.c resolve_element): its slot and source extent */
+    pp_value *elem_slot;
+    uint32_t elem_file, elem_start, elem_end;
 
     /* Resolved directories reads may use (access.c); [0] = the scene's */
     const char **io_roots;
@@ -348,6 +373,11 @@ bool pp_read_allowed(pp_state *ps, const char *path);
 void pp_check_read(pp_state *ps, const pp_token *at, const char *path);
 /* True when writes are allowed and 'path' lies in the scene's tree. */
 bool pp_write_allowed(pp_state *ps, const char *path);
+
+/* ---- memfile.c: refused writes kept in memory -------------------- */
+pp_memfile *pp_memfile_open(pp_state *ps, const char *path, bool append);
+void pp_memfile_write(pp_state *ps, pp_memfile *m, const char *s, size_t n);
+pp_memfile *pp_memfile_find(pp_state *ps, const char *path);
 
 /* ---- lex.c -------------------------------------------------------- */
 void lex_init_keywords(pp_state *ps);
@@ -419,6 +449,9 @@ iris_fn_spline pp_spline_view(const pp_spline *s);
 void pp_value_promote(pp_value *v, int dim);
 /* True when the current token can start a float/vector expression. */
 bool pp_starts_expr(pp_state *ps);
+/* Whether the next token starts a float expression (not '<'), without
+** consuming it: POV-Ray's Allow_Float test for an optional float. */
+bool pp_float_follows(pp_state *ps);
 iris_colour pp_value_colour(const pp_value *v);
 /* The element A[i]...: the indices follow. */
 pp_value pp_array_element(pp_state *ps, const pp_token *at, pp_array *arr);
@@ -444,6 +477,9 @@ iris_transform *pp_transform_block(pp_state *ps);  /* after 'transform' */
 /* Parses one transform keyword (translate/rotate/scale/matrix/transform)
 ** at the current token into 'out'; false if the token is none. */
 bool pp_transform_item(pp_state *ps, iris_transform *out);
+/* A copy of texture 't' (its layers, texture_map patterns and entries)
+** evaluated at the surface's <u, v, 0>: an object's uv_mapping. */
+iris_texture *pp_tex_uv_mapped(pp_state *ps, const iris_texture *t);
 /* Composes 'xf' into every pattern of a copied texture/pigment/normal. */
 iris_texture *pp_tex_transform(pp_state *ps, const iris_texture *t,
                                const iris_transform *xf);

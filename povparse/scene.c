@@ -216,9 +216,26 @@ iris_camera *pp_camera(pp_state *ps, const iris_camera *base)
         case T_ANGLE: {
             angle = pp_float(ps);
             has_angle = true;
-            /* an optional vertical angle for spherical cameras */
-            if (pp_accept(ps, T_COMMA))
-                pp_float(ps);
+            /* the spherical camera's optional vertical angle: 'angle H, V'
+            ** or 'angle H V' (POV-Ray: an optional comma, then a float if
+            ** one follows) */
+            bool comma = pp_accept(ps, T_COMMA);
+            bool more = comma;
+            if (!comma && c->kind == IRIS_CAM_SPHERICAL &&
+                !pp_next_is_directive(ps)) {
+                pp_next(ps);
+                more = pp_starts_expr(ps) && ps->tok.kind != T_LT;
+                pp_unget(ps);
+            }
+            if (more) {
+                pp_next(ps);
+                pp_token vt = ps->tok;
+                pp_unget(ps);
+                double v = pp_float(ps);
+                if (!(v >= 0))
+                    pp_error(ps, &vt, "negative vertical camera angle");
+                c->v_angle = v;
+            }
             break;
         }
         case T_APERTURE: c->aperture = pp_float(ps); break;
@@ -228,8 +245,8 @@ iris_camera *pp_camera(pp_state *ps, const iris_camera *base)
             int first = pp_int(ps), second = 0;
             if (first <= 0)
                 pp_error(ps, &at, "illegal number of focal blur samples");
-            if (pp_accept(ps, T_COMMA))
-                second = pp_int(ps);
+            if (pp_accept(ps, T_COMMA) || pp_float_follows(ps))
+                second = pp_int(ps); /* POV-Ray: 'blur_samples 4 16' too */
             if (second == 0) {
                 c->blur_samples = first;
                 c->blur_samples_min = 0;
@@ -403,12 +420,15 @@ static void global_photons(pp_state *ps, iris_photon_settings *p)
             break;
         case T_GATHER:
             p->gather_min = pp_int(ps);
-            pp_expect(ps, T_COMMA, "','");
+            pp_accept(ps, T_COMMA); /* optional in POV-Ray */
             p->gather_max = pp_int(ps);
             break;
         case T_RADIUS:
             p->radius = pp_float(ps);
-            for (int i = 0; i < 3 && pp_accept(ps, T_COMMA); i++) {
+            /* up to three more, commas optional (POV-Ray: Parse_Comma,
+            ** Allow_Float) */
+            for (int i = 0; i < 3 && (pp_accept(ps, T_COMMA) ||
+                                      pp_float_follows(ps)); i++) {
                 double v = pp_float(ps);
                 if (i == 0)
                     p->radius_mul = v;
@@ -420,7 +440,7 @@ static void global_photons(pp_state *ps, iris_photon_settings *p)
         case T_AUTOSTOP: p->autostop = pp_float(ps); break;
         case T_EXPAND_THRESHOLDS:
             p->expand_tol = pp_float(ps);
-            pp_expect(ps, T_COMMA, "','");
+            pp_accept(ps, T_COMMA); /* optional in POV-Ray */
             p->expand_min = pp_int(ps);
             break;
         case T_MEDIA:
@@ -484,7 +504,7 @@ static void global_radiosity(pp_state *ps, iris_global_settings *g)
             r->count = pp_int(ps);
             if (r->count < 1 || r->count > 100000)
                 pp_error(ps, &at, "radiosity count must be 1 to 100000");
-            if (pp_accept(ps, T_COMMA))
+            if (pp_accept(ps, T_COMMA) || pp_float_follows(ps))
                 pp_int(ps); /* the direction pool: iris's set is fixed */
             break;
         case T_BRIGHTNESS: r->brightness = pp_float(ps); break;
@@ -505,7 +525,7 @@ static void global_radiosity(pp_state *ps, iris_global_settings *g)
             r->nearest_count = pp_int(ps);
             if (r->nearest_count < 1 || r->nearest_count > 20)
                 pp_error(ps, &at, "nearest_count must be 1 to 20");
-            if (pp_accept(ps, T_COMMA))
+            if (pp_accept(ps, T_COMMA) || pp_float_follows(ps))
                 pp_int(ps); /* the pretrace's minimum: not used */
             break;
         case T_PRETRACE_START: r->pretrace_start = pp_float(ps); break;

@@ -94,6 +94,10 @@ typedef struct iris_fn_insn {
     const struct iris_pigment *pigment; /* PATTERN of a pigment function */
     const iris_fn_spline *spline;       /* SPLINE */
     const struct iris_transform *xform; /* TRANSFORM */
+    /* PATTERN whose pattern or pigment reads images (image_map,
+    ** image_pattern, density_file) or objects: what it reads, loaded by
+    ** iris_fn_load_images(); NULL = nothing to load */
+    const void *images;
 } iris_fn_insn;
 
 /* A compiled function: 'n_params' named parameters, 'n_code' insns. */
@@ -116,6 +120,17 @@ struct iris_fn {
 ** VM does not crash either. Thread-safe.
 */
 double iris_fn_eval(const iris_fn *fn, const double *args, int n_args);
+
+/*
+** Loads what the PATTERN insn 'in' reads (images, density files, objects
+** of an object pattern) into in->images, so that the function sees them
+** as a render's textures do; nothing when it reads none. 'assumed_gamma'
+** and 'version' are the scene's, for the images' colours (0: none given).
+** Free with iris_fn_free_images(in->images). False when out of memory.
+*/
+bool iris_fn_load_images(iris_fn_insn *in, double assumed_gamma,
+                         double version);
+void iris_fn_free_images(void *images);
 
 /* Evaluates internal function 'n' of functions.inc (f_sphere, f_noise3d,
 ** ...). Returns 0 for numbers it does not implement. */

@@ -121,6 +121,10 @@ typedef struct iris_warp {
 /* An image referenced by image_map, bump_map or height_field. */
 typedef struct iris_image_ref {
     const char *path;      /* resolved path; the renderer loads it */
+    /* image_map { function W, H { ... } }: the image the parser computed,
+    ** W x H linear RGBA floats, top row first; 'path' only names it */
+    const float *pixels;
+    int pixels_w, pixels_h;
     int map_type;          /* 0 planar, 1 spherical, 2 cylindrical, 5 torus */
     int interpolate;       /* 0 none, 2 bilinear, 4 normalised distance */
     bool once;
@@ -379,7 +383,8 @@ struct iris_object {
     bool double_illuminate, sturm, open, no_radiosity;
     int n_clipped_by;
     iris_object **clipped_by;  /* each in world space */
-    iris_object *bounded_by;   /* a hint only */
+    iris_object *bounded_by;   /* tested before the object (POV-Ray's
+                                  Ray_In_Bound), also on CSG */
 
     /* Photons */
     bool photon_target;
@@ -506,6 +511,8 @@ typedef struct iris_camera {
     int cylinder_type;         /* 1..4 for IRIS_CAM_CYLINDER */
     iris_vec3 location, direction, right, up, sky, look_at;
     double angle;              /* degrees, as given (0 = none) */
+    double v_angle;            /* spherical: vertical field in degrees,
+                                  'angle H, V' (0 = H/2, POV-Ray's default) */
     /* focal blur: aperture 0 = none; blur_samples is the maximum and
     ** blur_samples_min the minimum before the confidence test may stop
     ** (0: none, as `blur_samples N` alone); focal_distance is resolved by
@@ -629,8 +636,17 @@ typedef struct iris_scene_warning {
 typedef struct iris_arena iris_arena;
 
 /* The whole scene. */
+/* What iris_scene_destroy() frees besides the arena: data a scene refers
+** to that lives outside it (a function's loaded images, src/fn). */
+typedef struct iris_scene_cleanup {
+    struct iris_scene_cleanup *next;
+    void (*free)(void *data);
+    void *data;
+} iris_scene_cleanup;
+
 typedef struct iris_scene {
     iris_arena *arena;         /* owns everything below */
+    iris_scene_cleanup *cleanups; /* run by iris_scene_destroy, in order */
     double version;            /* #version, 3.7 if never given */
 
     int n_files;               /* files[0] is "" (unknown) */

@@ -17,6 +17,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "fn/fnimages.h"
 #include "iris/fn.h"
 #include "iris/scene.h"
 #include "material/material.h"
@@ -109,6 +110,8 @@ static double point_value(const iris_fn_insn *in, const double *p, int n)
         const double *m = in->xform->m[k];
         return m[0] * x + m[1] * y + m[2] * z + m[3];
     }
+    if (in->images) /* it reads images: evaluated with them loaded */
+        return fn_images_value(in, x, y, z);
     if (in->pigment) {
         double c[5];
         mat_pigment_at(in->pigment, x, y, z, c);

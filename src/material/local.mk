@@ -4,4 +4,5 @@ libiris_core_la_SOURCES += %reldir%/material.h %reldir%/mat_internal.h \
 	%reldir%/tiling.c %reldir%/tiling.h %reldir%/penrose.c \
 	%reldir%/penrose.h \
 	%reldir%/fractal_pattern.c %reldir%/fractal_pattern.h \
-	%reldir%/pigment.c %reldir%/normal.c %reldir%/texture.c
+	%reldir%/pigment.c %reldir%/normal.c %reldir%/texture.c \
+	%reldir%/objpattern.c %reldir%/objpattern.h

@@ -10,6 +10,7 @@
 #include "image/df3.h"
 #include "iris/image.h"
 #include "material/material.h"
+#include "material/objpattern.h"
 
 /* One image loaded for an image_map, bump_map or image_pattern. */
 struct mat_image {
@@ -31,6 +32,7 @@ struct mat_ctx {
     bool quick_colour;         /* quality below 6 (mat_ctx_set_quick_colour) */
     int n_images;
     struct mat_image *images;
+    struct objpat_set objpats; /* the objects of object patterns */
 };
 
 /* Maps world point 'p' to the pattern's space: transform, then warps. */

@@ -20,7 +20,8 @@
 ** classic turbulence themselves instead of warping by it; agate and the
 ** spirals read its parameters too.
 **
-** Depends on: util, math, image (image maps). Used by: render, photon.
+** Depends on: util, math, image (image maps), geometry (object patterns).
+** Used by: render, photon.
 */
 #ifndef IRIS_MATERIAL_MATERIAL_H
 #define IRIS_MATERIAL_MATERIAL_H

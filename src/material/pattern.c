@@ -961,6 +961,10 @@ static double raw_value(const struct mat_ctx *ctx, const iris_pattern *pat,
     case IRIS_PAT_SLOPE: return slope(pat, p, pt);
     case IRIS_PAT_TILING: return pattern_tiling(pat->params[0], p);
     case IRIS_PAT_DENSITY_FILE: return mat_density_file(ctx, pat, p);
+    case IRIS_PAT_OBJECT:
+        /* POV-Ray's ObjectPattern: entry 1 inside the object, 0 outside */
+        return pat->object &&
+               objpat_inside(ctx ? &ctx->objpats : NULL, pat->object, p);
     default:
         return 0.0;
     }

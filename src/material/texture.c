@@ -33,6 +33,10 @@ struct image_list {
     int n, cap;
     const iris_image_ref **refs;
     unsigned char *use;        /* USE_* of each file */
+    /* the walk also prepares the objects of object patterns */
+    struct objpat_set *objpats;
+    const iris_scene *scene;
+    FILE *log;
 };
 
 static bool add_ref_as(struct image_list *l, const iris_image_ref *ref,
@@ -72,6 +76,9 @@ static bool walk_texture(struct image_list *l, const iris_texture *t,
 
 static bool walk_pattern(struct image_list *l, const iris_pattern *p)
 {
+    if (p->kind == IRIS_PAT_OBJECT && p->object)
+        return objpat_add(l->objpats, l->scene, p->object, l->log) ==
+               IRIS_OK;
     if (p->kind == IRIS_PAT_DENSITY_FILE)
         return add_ref_as(l, p->image, USE_DF3);
     /* per-index filter/transmit needs the palette indices */
@@ -174,7 +181,7 @@ enum iris_status mat_ctx_create(const iris_scene *scene, FILE *log,
             ctx->n_waves = scene->settings.number_of_waves;
         ctx->legacy_opacity = scene->version > 0 && scene->version < 3.7;
     }
-    struct image_list l = { 0, 0, NULL, NULL };
+    struct image_list l = { 0, 0, NULL, NULL, &ctx->objpats, scene, log };
     bool ok = true;
     if (scene) {
         for (int i = 0; ok && i < scene->n_objects; i++)
@@ -192,7 +199,15 @@ enum iris_status mat_ctx_create(const iris_scene *scene, FILE *log,
         struct mat_image *mi = &ctx->images[ctx->n_images++];
         mi->ref = l.refs[i];
         char err[256] = "";
-        if ((l.use[i] & USE_COLOURS) &&
+        if ((l.use[i] & USE_COLOURS) && mi->ref->pixels) {
+            /* an image the parser computed from a function */
+            const iris_image_ref *r = mi->ref;
+            ok = iris_image_init(&mi->img, r->pixels_w, r->pixels_h) ==
+                 IRIS_OK;
+            if (ok)
+                memcpy(mi->img.pixels, r->pixels, (size_t)r->pixels_w *
+                       (size_t)r->pixels_h * 4 * sizeof(float));
+        } else if ((l.use[i] & USE_COLOURS) &&
             iris_image_read(&mi->img, mi->ref->path, err, sizeof err) !=
             IRIS_OK) {
             fprintf(log ? log : stderr,
@@ -219,6 +234,7 @@ enum iris_status mat_ctx_create(const iris_scene *scene, FILE *log,
     }
     iris_free((void *)l.refs);
     iris_free(l.use);
+    objpat_seal(&ctx->objpats);
     if (!ok) {
         mat_ctx_destroy(ctx);
         return IRIS_ENOMEM;
@@ -238,6 +254,7 @@ void mat_ctx_destroy(struct mat_ctx *ctx)
         iris_df3_fini(&ctx->images[i].df3);
     }
     iris_free(ctx->images);
+    objpat_fini(&ctx->objpats);
     iris_free(ctx);
 }
 

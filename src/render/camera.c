@@ -113,7 +113,8 @@ static bool angular_ray(const iris_camera *cam, double u, double v, ray *r)
         break;
     }
     default: { /* spherical: angle = horizontal field, half of it vertical */
-        double ha = cam->angle > 0 ? cam->angle : 360.0, va = ha * 0.5;
+        double ha = cam->angle > 0 ? cam->angle : 360.0;
+        double va = cam->v_angle > 0 ? cam->v_angle : ha * 0.5;
         y0 *= va * deg;
         x0 *= ha * deg;
         d = rotate_about(rotate_about(D, R, -y0), U, x0);

@@ -16,7 +16,9 @@
 **      barycentric weights.
 ** (x, y) above are POV-Ray 3.7's image position, iris's + (0.5, -0.5)
 ** (camera.h), clipped to the image.
-** For 0-2 the origin is the face's centroid; the direction is the face
+** POV-Ray 3.7 holds a mesh's vertices and normals in single precision
+** (MESH_DATA's SNGL_VECT): the corners and normals are rounded so here too.
+** For 0-2 the origin is the face's centroid (summed in single precision); the direction is the face
 ** normal (P3 - P1) x (P2 - P1), normalised (POV-Ray's
 ** Compute_Mesh_Triangle), or with 'smooth' (3 only) the unit vertex
 ** normals weighted by the barycentric coordinates (POV-Ray's
@@ -32,16 +34,27 @@
 #include "math/transform.h"
 #include "render/meshcam.h"
 
-/* The flat normal of the triangle p1 p2 p3, in the mesh's own space. */
-static vec3 face_normal(vec3 p1, vec3 p2, vec3 p3)
+/* 'v' rounded to single precision, as POV-Ray 3.7 stores a mesh's
+** vertices and normals (MESH_DATA's SNGL_VECT arrays). */
+static vec3 v3_single(vec3 v)
 {
-    return v3_norm(v3_cross(v3_sub(p3, p1), v3_sub(p2, p1)));
+    return v3((float)v.x, (float)v.y, (float)v.z);
 }
 
+/* The flat normal of the triangle p1 p2 p3, in the mesh's own space, as
+** POV-Ray keeps it: normalised in double, stored in single precision. */
+static vec3 face_normal(vec3 p1, vec3 p2, vec3 p3)
+{
+    return v3_single(v3_norm(v3_cross(v3_sub(p3, p1), v3_sub(p2, p1))));
+}
+
+/* The corners of triangle 't' as POV-Ray holds them (single precision):
+** a ray that grazes an edge or a shadow's rim goes the same way only
+** from the same origin, to the last bit. */
 static void tri_points(const iris_mesh_data *m, int t, vec3 p[3])
 {
     for (int k = 0; k < 3; k++)
-        p[k] = m->vertices[m->tri_vertices[3 * t + k]];
+        p[k] = v3_single(m->vertices[m->tri_vertices[3 * t + k]]);
 }
 
 /* Origin and direction from the face centroid of triangle 't'. */
@@ -49,7 +62,12 @@ static void centroid_ray(const iris_mesh_data *m, int t, vec3 *o, vec3 *d)
 {
     vec3 p[3];
     tri_points(m, t, p);
-    *o = v3_scale(v3_add(v3_add(p[0], p[1]), p[2]), 1.0 / 3.0);
+    /* POV-Ray adds the single-precision corners and divides by 3 in
+    ** single precision too */
+    float x = (float)p[0].x + (float)p[1].x + (float)p[2].x;
+    float y = (float)p[0].y + (float)p[1].y + (float)p[2].y;
+    float z = (float)p[0].z + (float)p[1].z + (float)p[2].z;
+    *o = v3(x / 3.0f, y / 3.0f, z / 3.0f);
     *d = face_normal(p[0], p[1], p[2]);
 }
 
@@ -84,12 +102,11 @@ static bool uv_ray(const iris_mesh_data *m, bool smooth, double u, double v,
             /* POV-Ray stores mesh normals normalised and does not
             ** normalise their blend (Smooth_Mesh_Normal): the blend's
             ** length scales the location.z offset */
+            const int32_t *ni = &m->tri_normals[3 * t];
             vec3 n = v3_add(
-                v3_add(v3_scale(v3_norm(m->normals[m->tri_normals[3 * t]]),
-                                b1),
-                       v3_scale(v3_norm(m->normals[m->tri_normals[3 * t + 1]]),
-                                b2)),
-                v3_scale(v3_norm(m->normals[m->tri_normals[3 * t + 2]]), b3));
+                v3_add(v3_scale(v3_single(v3_norm(m->normals[ni[0]])), b1),
+                       v3_scale(v3_single(v3_norm(m->normals[ni[1]])), b2)),
+                v3_scale(v3_single(v3_norm(m->normals[ni[2]])), b3));
             if (v3_len(n) > 0)
                 *d = n;
         }

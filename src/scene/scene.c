@@ -16,6 +16,8 @@ void iris_scene_destroy(iris_scene *scene)
 {
     if (!scene)
         return;
+    for (iris_scene_cleanup *c = scene->cleanups; c; c = c->next)
+        c->free(c->data);
     /* The scene itself lives in its arena. */
     arena_destroy(scene->arena);
 }

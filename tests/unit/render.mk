@@ -15,6 +15,12 @@ TESTS += tests/unit/test_tiling
 tests_unit_test_tiling_SOURCES = tests/unit/test_tiling.c tests/testutil.h
 tests_unit_test_tiling_CFLAGS = $(TEST_CFLAGS)
 tests_unit_test_tiling_LDADD = $(TEST_LDADD)
+check_PROGRAMS += tests/unit/test_objpattern
+TESTS += tests/unit/test_objpattern
+tests_unit_test_objpattern_SOURCES = tests/unit/test_objpattern.c \
+	tests/scene_builder.h tests/testutil.h
+tests_unit_test_objpattern_CFLAGS = $(TEST_CFLAGS)
+tests_unit_test_objpattern_LDADD = $(TEST_LDADD)
 
 check_PROGRAMS += tests/unit/test_render
 TESTS += tests/unit/test_render
@@ -63,3 +69,8 @@ tests_unit_test_fractal_pattern_SOURCES = tests/unit/test_fractal_pattern.c \
 	tests/testutil.h
 tests_unit_test_fractal_pattern_CFLAGS = $(TEST_CFLAGS)
 tests_unit_test_fractal_pattern_LDADD = $(TEST_LDADD)
+check_PROGRAMS += tests/unit/test_srgb8
+TESTS += tests/unit/test_srgb8
+tests_unit_test_srgb8_SOURCES = tests/unit/test_srgb8.c tests/testutil.h
+tests_unit_test_srgb8_CFLAGS = $(TEST_CFLAGS)
+tests_unit_test_srgb8_LDADD = $(TEST_LDADD)

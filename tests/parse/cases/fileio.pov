@@ -1,5 +1,7 @@
 // #fopen/#read/#fclose of a data file; #write is refused without
-// allow_writes (a located warning); #warning; #debug.
+// allow_writes (a located warning) and its text kept in memory, so the
+// scene sees the file exist (file_exists = 1, as in POV-Ray, which writes
+// it); #warning; #debug.
 // options: -q
 #fopen In "inc/data.txt" read
 #read (In, A, S, V)
