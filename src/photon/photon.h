@@ -64,6 +64,9 @@ struct photon_options {
     bool no_tex_cache;         /* evaluate every hit's texture, also those
                                   of one colour everywhere (trace.h,
                                   ptrace_tex; tests and benchmarks) */
+    bool no_siblings;          /* one wavelength per photon, also where
+                                  the path does not depend on it (trace.h,
+                                  ptrace_sibs; tests and benchmarks) */
 };
 
 /* What a build did, for -v and the benchmarks. */

@@ -37,6 +37,10 @@
 ** which gather windows cut through; a random offset per ring; the R2
 ** lattice over Cartesian cells of the target plane: all noisier.)
 **
+** Sibling wavelengths (trace.h): where no interior disperses and there
+** are no media, the photon also carries u + 1/3 and u + 2/3 (mod 1), a
+** third of the power each, along one path (shoot_one).
+**
 ** Threads. The rings of all combos are laid end to end and numbered
 ** photon by photon; batches of PHOTON_BATCH consecutive photon indices
 ** are the work items of par_for(). A photon's random stream is keyed by
@@ -124,6 +128,7 @@ struct shoot {
     double jitter;
     double u0;                 /* random offset of the wavelength lattice */
     struct ptrace_out *outs;   /* one per batch */
+    int64_t slab_per;          /* slab slots per photon (sibling_records) */
     struct pstore_raw *slab;   /* PHOTON_BATCH slots per batch, batch b's
                                   from b·PHOTON_BATCH (NULL: each batch
                                   grows its own buffer) */
@@ -371,9 +376,11 @@ static double spacing_for(const struct shoot *s)
 ** photons; shooting them would run out of memory or time with no hint
 ** why. The cap is what the memory this process may still allocate
 ** (membudget.h: MemAvailable, ulimit -v/-d, the cgroup's memory.max,
-** whichever is least) holds at MEMBUDGET_PHOTON_BYTES a photon, after
-** the global map's share: about 3.8e8 photons on an idle 24 GB machine,
-** so a pass of 1e8 photons runs (issue 8). Past it the build fails with a
+** whichever is least) holds at MEMBUDGET_PHOTON_BYTES a record, after
+** the global map's share, and at sibling_records() records an emitted
+** photon: about 3.8e8 photons on an idle 24 GB machine, 1.27e8 under a
+** coloured light (three records a photon), so a pass of 1e8 photons runs
+** (issue 8). Past it the build fails with a
 ** located error before anything is allocated ("a clear error before a
 ** run would exceed the memory available"), rather than being killed or
 ** silently shooting fewer photons than the scene asks for. A caller that
@@ -382,12 +389,33 @@ static double spacing_for(const struct shoot *s)
 */
 #define PMAP_MAX_PHOTONS 1e12 /* no cap but memory's */
 
+/* The records an emitted photon stores: PTRACE_SIBS when some combo
+** shoots sibling wavelengths (trace.h) from a light of chromatic emission,
+** whose every path is chromatic and stores one record per sibling; else
+** 1. A white light's photons turn chromatic only at coloured surfaces,
+** unknown here: if they then store more records than the budget holds,
+** shoot_batch()'s store cap stops the pass with a located error, as for
+** photons that deposit more than once. Media are not known yet
+** (make_rings): they only lower the real count. */
+static double sibling_records(const struct shoot *s)
+{
+    if (s->opts->no_siblings)
+        return 1.0;
+    for (int ci = 0; ci < s->n_combos; ci++)
+        if (s->combos[ci].tc.no_dispersion && s->combos[ci].tc.chromatic)
+            return PTRACE_SIBS;
+    return 1.0;
+}
+
+/* The photons a pass may emit; '*records' gets the records it may
+** store (the store's cap while shooting, shoot_batch()). */
 static double photon_cap(const struct shoot *s, struct membudget *b,
-                         double *global)
+                         double *global, double *records)
 {
     const struct photon_options *o = s->opts;
     membudget_available(b);
     *global = 0.0;
+    *records = INFINITY; /* clamping bounds what is shot, not stored */
     if (o->max_photons > 0)
         return (double)o->max_photons;
     *global = !pmap_wants_global(s->scene) ? 0.0
@@ -397,8 +425,9 @@ static double photon_cap(const struct shoot *s, struct membudget *b,
     double cap = fmin(PMAP_MAX_PHOTONS, room / MEMBUDGET_PHOTON_BYTES);
     /* pstore_knn's indices are uint32_t: a 512 GB machine is the first
     ** that could store more photons */
-    cap = fmin(cap, 4.0e9);
-    return fmax(cap, 1000.0);
+    cap = fmax(fmin(cap, 4.0e9), 1000.0);
+    *records = cap;
+    return fmax(cap / sibling_records(s), 1000.0);
 }
 
 /* The ring step and extent of combo 'c' at 'spacing' (as make_rings). */
@@ -467,9 +496,7 @@ static double cap_spacing(struct shoot *s, double spacing)
 {
     struct membudget b;
     double global;
-    double cap = photon_cap(s, &b, &global);
-    /* clamping (max_photons) bounds what is shot, not what is stored */
-    s->store_cap = s->opts->max_photons > 0 ? INFINITY : cap;
+    double cap = photon_cap(s, &b, &global, &s->store_cap);
     s->budget = b;
     double est = estimate_photons(s, spacing);
     if (!(est > cap) || s->n_combos == 0)
@@ -487,7 +514,8 @@ static double cap_spacing(struct shoot *s, double spacing)
                     "than the %s %s leaves (%.3g photons); raise 'spacing' "
                     "or lower 'count'\n", file,
                     (unsigned)loc.line, (unsigned)loc.col, spacing, est,
-                    membudget_format(membudget_photon_peak(est, global),
+                    membudget_format(membudget_photon_peak(
+                                         est * sibling_records(s), global),
                                      need, sizeof need),
                     membudget_format(b.bytes, have, sizeof have), b.what,
                     cap);
@@ -660,13 +688,28 @@ static void shoot_one(const struct shoot *s, const struct ring *rg, int64_t j,
     if (a < 1e-5)
         return;
     double u = s->u0 + lambda_lattice(rg - s->rings, k_phi, k_area);
-    double lambda = spec_sample_uniform(u - floor(u));
-    double power = rg->cell * a *
-                   (c->tc.chromatic ? spec_emitter_eval(&c->em, lambda)
-                                    : c->flat_emission);
-    if (!(power > 0.0))
+    u -= floor(u);
+    /* Sibling wavelengths u + j/S (trace.h) where the path cannot depend
+    ** on lambda: no dispersive interior, no media (global photons are
+    ** global.c's) */
+    struct ptrace_sibs sb;
+    sb.n = c->tc.no_dispersion && !c->tc.media.scene &&
+                   !s->opts->no_siblings
+               ? PTRACE_SIBS
+               : 1;
+    bool any = false;
+    for (int k = 0; k < sb.n; k++) {
+        double uj = u + (double)k / sb.n;
+        sb.lambda[k] = spec_sample_uniform(uj < 1.0 ? uj : uj - 1.0);
+        sb.power[k] = rg->cell * a / sb.n *
+                      (c->tc.chromatic ? spec_emitter_eval(&c->em,
+                                                           sb.lambda[k])
+                                       : c->flat_emission);
+        any = any || sb.power[k] > 0.0;
+    }
+    if (!any)
         return;
-    ptrace_photon(s->w, &c->tc, o, d, lambda, power, &r, out);
+    ptrace_photon_sibs(s->w, &c->tc, o, d, &sb, &r, out);
 }
 
 static void shoot_batch(void *ctx, int64_t item, int thread)
@@ -792,16 +835,17 @@ static enum iris_status concat_batches(struct shoot *s, int64_t n_batches,
     size_t at = 0;
     for (int64_t b = 0; b < n_batches; b++) {
         struct ptrace_out *o = &s->outs[b];
-        /* at <= b·PHOTON_BATCH, the slice's start: a move down */
+        /* at <= b·PHOTON_BATCH·slab_per, the slice's start: a move down */
         if (o->n > 0 && o->ph != s->slab + at)
             memmove(s->slab + at, o->ph, o->n * sizeof *o->ph);
         at += o->n;
         o->ph = NULL;
         o->n = 0;
         o->borrowed = false;
-        int64_t next = (b + 1) * PHOTON_BATCH; /* the next slice */
-        release_pages(s->slab + at,
-                      s->slab + (next < s->n_photons ? next : s->n_photons));
+        /* the next slice */
+        int64_t next = (b + 1) * PHOTON_BATCH * s->slab_per;
+        int64_t end = s->n_photons * s->slab_per;
+        release_pages(s->slab + at, s->slab + (next < end ? next : end));
     }
     *all = NULL;
     *total = at;
@@ -881,13 +925,18 @@ static enum iris_status build_caustic(const iris_scene *scene,
         ** the batches write where the map will be (concat_batches). Its
         ** pages are touched only where written. Without it (too large)
         ** each batch grows its own buffer. */
-        s.slab = iris_malloc((size_t)s.n_photons * sizeof *s.slab);
+        /* Under a coloured light with sibling wavelengths, one slot per
+        ** sibling (sibling_records()): each path stores that many. */
+        s.slab_per = (int64_t)sibling_records(&s);
+        s.slab = iris_malloc((size_t)(s.n_photons * s.slab_per) *
+                             sizeof *s.slab);
         for (int64_t b = 0; s.slab && b < n_batches; b++) {
             int64_t lo = b * PHOTON_BATCH;
-            s.outs[b].ph = s.slab + lo;
-            s.outs[b].cap = (size_t)(s.n_photons - lo < PHOTON_BATCH
-                                         ? s.n_photons - lo
-                                         : PHOTON_BATCH);
+            s.outs[b].ph = s.slab + lo * s.slab_per;
+            s.outs[b].cap = (size_t)((s.n_photons - lo < PHOTON_BATCH
+                                          ? s.n_photons - lo
+                                          : PHOTON_BATCH) *
+                                     s.slab_per);
             s.outs[b].borrowed = true;
         }
     }

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /*
-** trace.c: transport of one photon at one wavelength.
+** trace.c: transport of one photon at one wavelength (or three siblings).
 **
 ** Where POV-Ray's photons are not physical, these are (DESIGN.md):
 **  - At a refracting surface POV-Ray spawns both a reflected and a
@@ -27,6 +27,11 @@
 ** is stored as white (pstore.h): it stands for the whole spectrum, and the
 ** estimate weighs it by the spectrum's mean instead of by one wavelength's
 ** RGB weight, so scenes without dispersion get no colour noise.
+** Sibling wavelengths (trace.h, ptrace_sibs; issue 5): where no interior
+** disperses and there are no media, a photon carries three wavelengths
+** along one path, a spectral roulette weighs each by its own probability
+** over their mean, and a chromatic path stores one record per sibling; a
+** spectral transmittance collapses them to one (sib_collapse).
 ** Global photons (c->global; global.c, radiosity{}) take the same path
 ** with Lambertian bounces at diffuse surfaces, by Russian roulette on the
 ** albedo, and are stored from the second diffuse surface on.
@@ -518,10 +523,71 @@ static double fresnel_n(const iris_object *const *stack,
     return n / top_ior(stack, n_stack, lambda);
 }
 
+/* Keeps sibling 0 alone with the power of all (x n): its wavelength is
+** the photon's lattice value u, uniform on its own, so the expected power
+** at every wavelength is unchanged; its surface evaluation at lambda[0]
+** stays valid (no draw, no new texture evaluation). */
+static void sib_collapse(struct ptrace_sibs *s)
+{
+    s->power[0] *= (double)s->n;
+    s->n = 1;
+}
+
+/* Multiplies the siblings' powers by transmittance 't' (at lambda[0]);
+** one that depends on lambda ('grey_t' false) collapses them first. */
+static void sib_filter(struct ptrace_sibs *s, double t, bool grey_t)
+{
+    if (!grey_t && s->n > 1)
+        sib_collapse(s);
+    for (int j = 0; j < s->n; j++)
+        s->power[j] *= t;
+}
+
+static bool sib_alive(const struct ptrace_sibs *s)
+{
+    for (int j = 0; j < s->n; j++)
+        if (s->power[j] > 0.0)
+            return true;
+    return false;
+}
+
+/* Stores the siblings at 'p': one white record (their summed power) when
+** nothing on the path depended on lambda, else one record per sibling
+** with power > 0 at its own wavelength. */
+static void deposit_sibs(struct ptrace_out *out, vec3 p,
+                         const struct ptrace_sibs *s, double factor,
+                         bool chroma, vec3 from)
+{
+    if (!chroma) {
+        double sum = s->power[0];
+        for (int j = 1; j < s->n; j++)
+            sum += s->power[j];
+        deposit(out, p, sum * factor, -1.0, from);
+        return;
+    }
+    for (int j = 0; j < s->n && !out->failed; j++)
+        if (s->power[j] > 0.0)
+            deposit(out, p, s->power[j] * factor, s->lambda[j], from);
+}
+
 void ptrace_photon(const struct pmap_world *w, const struct ptrace_combo *c,
                    vec3 o, vec3 d, double lambda, double power, rng *r,
                    struct ptrace_out *out)
 {
+    struct ptrace_sibs s = { 1, { lambda }, { power } };
+    ptrace_photon_sibs(w, c, o, d, &s, r, out);
+}
+
+void ptrace_photon_sibs(const struct pmap_world *w,
+                        const struct ptrace_combo *c, vec3 o, vec3 d,
+                        struct ptrace_sibs *s, rng *r,
+                        struct ptrace_out *out)
+{
+    /* media and global photons take one wavelength (pmedia.c and the
+    ** diffuse bounces read one); the shooter gives them one */
+    if (s->n > 1 && (c->media.scene || c->global || !c->no_dispersion))
+        sib_collapse(s);
+    double lambda = s->lambda[0]; /* the one that decides eval_surface() */
     /* the media the photon is in, innermost last, with the top-level
     ** object of each (the start's are top-level objects themselves) */
     const iris_object *stack[PTRACE_MAX_STACK], *tops[PTRACE_MAX_STACK];
@@ -543,7 +609,7 @@ void ptrace_photon(const struct pmap_world *w, const struct ptrace_combo *c,
     int n_diffuse = 0;         /* global: diffuse bounces so far */
     bool landed = false;       /* global: D^2 and fade applied */
     struct ior_memo im = { NULL, 1.0 };
-    for (int level = 1; level <= max_level && power > 0.0; level++) {
+    for (int level = 1; level <= max_level && sib_alive(s); level++) {
         ray ry = { o, d };
         h.eps = 0.0;
         if (!w->intersect(w->ctx, &ry, tmin, INFINITY, ACCEL_SKIP_NO_SHADOW,
@@ -553,17 +619,25 @@ void ptrace_photon(const struct pmap_world *w, const struct ptrace_combo *c,
         /* Media on the segment just crossed: extinction, media photons
         ** (pmedia.h; nothing when the scene has no media) */
         if (c->media.scene)
-            power = pmedia_segment(c, stack, n_stack, o, d, h.t, depth,
-                                   level, lambda, &chroma, power, r, out);
+            s->power[0] = pmedia_segment(c, stack, n_stack, o, d, h.t,
+                                         depth, level, lambda, &chroma,
+                                         s->power[0], r, out);
         depth += h.t;
         /* Absorption in the medium just crossed */
         if (n_stack > 0) {
             const iris_interior *fi = stack[n_stack - 1]->interior;
-            power *= fade_factor(fi, h.t, lambda);
-            if (fi && fi->fade_power > 0.0 &&
-                !(fi->fade_colour.r == fi->fade_colour.g &&
-                  fi->fade_colour.g == fi->fade_colour.b))
-                chroma = true;
+            bool tinted = fi && fi->fade_power > 0.0 &&
+                          !(fi->fade_colour.r == fi->fade_colour.g &&
+                            fi->fade_colour.g == fi->fade_colour.b);
+            if (tinted && s->n > 1) {
+                for (int j = 0; j < s->n; j++)
+                    s->power[j] *= fade_factor(fi, h.t, s->lambda[j]);
+            } else {
+                double f = fade_factor(fi, h.t, lambda);
+                for (int j = 0; j < s->n; j++)
+                    s->power[j] *= f;
+            }
+            chroma = chroma || tinted;
         }
         const iris_object *obj = h.obj;
         /* The first surface must belong to the target */
@@ -584,7 +658,7 @@ void ptrace_photon(const struct pmap_world *w, const struct ptrace_combo *c,
         bool diffusive = fin && fin->diffuse > 0.0 && sf.opacity > 0.0;
         if (c->global && diffusive) {
             if (!landed)
-                power *= landing_factor(c, depth);
+                s->power[0] *= landing_factor(c, depth);
             landed = true;
             if (c->max_diffuse > 0 && n_diffuse > c->max_diffuse)
                 return; /* past POV-Ray's recursion_limit (global.c) */
@@ -592,15 +666,15 @@ void ptrace_photon(const struct pmap_world *w, const struct ptrace_combo *c,
                 /* the direction field holds the surface normal on the
                 ** photon's side: the global estimate is Lambertian and
                 ** needs only which surface the photon lit (global.c) */
-                deposit(out, h.p, power, chroma ? lambda : -1.0, nf);
+                deposit(out, h.p, s->power[0], chroma ? lambda : -1.0, nf);
                 if (out->failed)
                     return;
             }
         }
         /* Store caustic photons (after at least one bounce) */
         if (!c->global && level > 1 && obj->photon_collect && diffusive) {
-            double p = power * landing_factor(c, depth);
-            deposit(out, h.p, p, chroma ? lambda : -1.0, v3_neg(d));
+            deposit_sibs(out, h.p, s, landing_factor(c, depth), chroma,
+                         v3_neg(d));
             if (out->failed)
                 return;
         }
@@ -608,7 +682,7 @@ void ptrace_photon(const struct pmap_world *w, const struct ptrace_combo *c,
         double transm = sf.transm;
         if (obj->photon_pass_through) {
             /* Straight on, filtered; POV-Ray counts the level too */
-            power *= transm;
+            sib_filter(s, transm, sf.transm_grey);
             chroma = chroma || !sf.transm_grey;
             o = h.p;
             continue;
@@ -639,7 +713,7 @@ void ptrace_photon(const struct pmap_world *w, const struct ptrace_combo *c,
             }
             if (!(p_d < 0.999) || !(refr_ok || (refl_ok && sf.reflects)))
                 return;
-            power /= 1.0 - p_d;
+            s->power[0] /= 1.0 - p_d;
         }
         /* The event's draw is taken on the two branches that use it, not
         ** before a photon that ends here (a diffuse floor): the stream is
@@ -696,7 +770,7 @@ void ptrace_photon(const struct pmap_world *w, const struct ptrace_combo *c,
             } else {
                 d = v3_norm(v3_add(v3_scale(d, eta),
                                    v3_scale(nf, eta * cos_i - cos_t)));
-                power *= transm;
+                sib_filter(s, transm, sf.transm_grey);
                 chroma = chroma || !sf.transm_grey;
                 if (action == 0 && n_stack < PTRACE_MAX_STACK) {
                     tops[n_stack] = h.top ? h.top : obj;
@@ -728,20 +802,45 @@ void ptrace_photon(const struct pmap_world *w, const struct ptrace_combo *c,
             ** 3/4 of the photons behind two such faces: 5% colour
             ** errors, tests/unit/test_pfilter.c. POV-Ray spawns both at
             ** full power. */
+            /* Siblings (ptrace_photon_sibs): the roulette takes the mean
+            ** reflectivity P of the siblings and weighs each by its own
+            ** p_j / P (q is the same for all: a tinted one collapses them
+            ** first); one sibling gives the rule above exactly. */
+            double q = !h.interior && refr_flag ? transm : 0.0;
+            if (q > 0.0 && !sf.transm_grey && s->n > 1)
+                sib_collapse(s);
             double p = refl_ok && sf.reflects
                            ? clamp01(reflectance(sf.refl, lambda)) : 0.0;
-            double q = !h.interior && refr_flag ? transm : 0.0;
+            double pj[PTRACE_SIBS] = { p };
+            bool spectral = s->n > 1 && refl_ok && sf.reflects &&
+                            !grey(sf.refl);
+            if (spectral) {
+                for (int j = 1; j < s->n; j++) {
+                    pj[j] = clamp01(reflectance(sf.refl, s->lambda[j]));
+                    p += pj[j];
+                }
+                p /= s->n;
+            }
             chroma = chroma || (p > 0.0 && !grey(sf.refl)) ||
                      (q > 0.0 && !sf.transm_grey);
             if (q <= 0.0) {
                 if (!(u < p))
                     return;
+                if (spectral)
+                    for (int j = 0; j < s->n; j++)
+                        s->power[j] *= pj[j] / p;
                 d = v3_norm(v3_reflect(d, nf));
             } else if (p <= 0.0) {
-                power *= q;
+                sib_filter(s, q, true);
             } else {
                 bool mirror = u * (p + q) < p;
-                power *= p + q;
+                if (spectral && mirror) {
+                    for (int j = 0; j < s->n; j++)
+                        s->power[j] *= pj[j] * (p + q) / p;
+                } else {
+                    for (int j = 0; j < s->n; j++)
+                        s->power[j] *= p + q;
+                }
                 if (mirror)
                     d = v3_norm(v3_reflect(d, nf));
             }

@@ -101,4 +101,30 @@ void ptrace_photon(const struct pmap_world *w, const struct ptrace_combo *c,
                    vec3 o, vec3 d, double lambda, double power, rng *r,
                    struct ptrace_out *out);
 
+/*
+** Sibling wavelengths (issue 5). A photon whose path does not depend on
+** lambda (no dispersion, no media: the shooter decides) carries
+** PTRACE_SIBS wavelengths lambda_j = frac(u + j/S) of its lattice value u,
+** each with 1/S of the power, along one path: a spectral roulette (a
+** coloured mirror) takes the siblings' mean probability and weighs each
+** by its own; fades multiply each by its own factor. A spectral
+** transmittance collapses them to sibling 0 with all the power (trace.c,
+** sib_collapse). A chromatic path stores one record per sibling, so a
+** gather of k records sees k/S paths but S wavelengths of each: the colour
+** noise of a focusing mirror's caustic, whose neighbouring cells carry
+** correlated lattice wavelengths, falls (docs/photons.md).
+*/
+#define PTRACE_SIBS 3
+struct ptrace_sibs {
+    int n;                     /* 1..PTRACE_SIBS */
+    double lambda[PTRACE_SIBS];
+    double power[PTRACE_SIBS]; /* before the D^2 factor */
+};
+
+/* ptrace_photon() with siblings 's' (changed: their powers) */
+void ptrace_photon_sibs(const struct pmap_world *w,
+                        const struct ptrace_combo *c, vec3 o, vec3 d,
+                        struct ptrace_sibs *s, rng *r,
+                        struct ptrace_out *out);
+
 #endif

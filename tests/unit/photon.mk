@@ -35,3 +35,10 @@ tests_unit_test_pfilter_SOURCES = tests/unit/test_pfilter.c \
 	tests/unit/photon_world.c tests/unit/photon_world.h tests/testutil.h
 tests_unit_test_pfilter_CFLAGS = $(TEST_CFLAGS)
 tests_unit_test_pfilter_LDADD = $(TEST_LDADD)
+# sibling wavelengths on paths that do not depend on lambda (trace.h)
+check_PROGRAMS += tests/unit/test_psib
+TESTS += tests/unit/test_psib
+tests_unit_test_psib_SOURCES = tests/unit/test_psib.c \
+	tests/unit/photon_world.c tests/unit/photon_world.h tests/testutil.h
+tests_unit_test_psib_CFLAGS = $(TEST_CFLAGS)
+tests_unit_test_psib_LDADD = $(TEST_LDADD)
