@@ -7,7 +7,34 @@
 #ifndef IRIS_TESTS_PMAP_SAME_H
 #define IRIS_TESTS_PMAP_SAME_H
 
+#include <string.h>
+
 #include "photon/pmap.h"
+
+/* Builds the photon maps of scene 'sc' twice, on 2 threads with 'seed',
+** material context 'mc' (may be NULL) and a tenth of the default global
+** photons (a fast test): m[0] with the default options, m[1] after
+** 'second' has changed them (the way under comparison turned off). */
+static inline void build_photon_map_pair(
+    const iris_scene *sc, const struct accel *a, struct mat_ctx *mc,
+    uint64_t seed, void (*second)(struct photon_options *),
+    struct photon_map *m[2], struct photon_stats st[2])
+{
+    for (int k = 0; k < 2; k++) {
+        struct photon_options o;
+        memset(&o, 0, sizeof o);
+        o.threads = 2;
+        o.seed = seed;
+        o.mat = mc;
+        o.global_photons = 40000;
+        if (k == 1)
+            second(&o);
+        m[k] = NULL;
+        assert_int_equal(photon_map_build(sc, a, &o, &m[k], &st[k]),
+                         IRIS_OK);
+        assert_non_null(m[k]);
+    }
+}
 
 /* The caustic map of 'a' and 'b', or, when they have one, their global
 ** maps with their irradiance points: the same count (over 1000, else the

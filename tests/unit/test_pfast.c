@@ -177,6 +177,12 @@ static const char *const ROOM =
     "plane { -x, -3 pigment { color rgb <0.2, 0.8, 0.2> } }\n"
     "sphere { <0.5, 1, 0.5>, 0.8 pigment { color rgb 0.9 } }\n";
 
+/* The second map's options: the fast-path way turned off. */
+static void no_fastpath(struct photon_options *o)
+{
+    o->no_fastpath = true;
+}
+
 /* The photon maps built through either query: the same records. */
 static void same_map(const char *sdl, bool with_mat)
 {
@@ -190,20 +196,9 @@ static void same_map(const char *sdl, bool with_mat)
     struct mat_ctx *mc = NULL;
     if (with_mat)
         assert_int_equal(mat_ctx_create(sc, stderr, &mc), IRIS_OK);
-    struct photon_map *m[2] = { NULL, NULL };
+    struct photon_map *m[2];
     struct photon_stats st[2];
-    for (int k = 0; k < 2; k++) {
-        struct photon_options o;
-        memset(&o, 0, sizeof o);
-        o.threads = 2;
-        o.seed = 7;
-        o.mat = mc;
-        o.no_fastpath = k == 1;
-        o.global_photons = 40000; /* a tenth of the default: a fast test */
-        assert_int_equal(photon_map_build(sc, a, &o, &m[k], &st[k]),
-                         IRIS_OK);
-        assert_non_null(m[k]);
-    }
+    build_photon_map_pair(sc, a, mc, 7, no_fastpath, m, st);
     assert_int_equal(st[0].shot, st[1].shot);
     assert_int_equal(st[0].shot_global, st[1].shot_global);
     assert_same_photon_maps(m[0], m[1]);

@@ -83,6 +83,12 @@ static const char *const ROOM =
     "  color rgb 0.5 } }\n"
     "sphere { <0.5, 1, 0.5>, 0.8 pigment { color rgb 0.9 } }\n";
 
+/* The second map's options: the cached way turned off. */
+static void no_cache(struct photon_options *o)
+{
+    o->no_tex_cache = true;
+}
+
 /* The photon maps built with and without the cache: the same records
 ** (the caustic map, or the global map and its irradiance points). */
 static void same_map(const char *sdl, bool with_mat)
@@ -94,20 +100,9 @@ static void same_map(const char *sdl, bool with_mat)
     struct mat_ctx *mc = NULL;
     if (with_mat)
         assert_int_equal(mat_ctx_create(sc, stderr, &mc), IRIS_OK);
-    struct photon_map *m[2] = { NULL, NULL };
+    struct photon_map *m[2];
     struct photon_stats st[2];
-    for (int k = 0; k < 2; k++) {
-        struct photon_options o;
-        memset(&o, 0, sizeof o);
-        o.threads = 2;
-        o.seed = 11;
-        o.mat = mc;
-        o.no_tex_cache = k == 1;
-        o.global_photons = 40000; /* a tenth of the default: a fast test */
-        assert_int_equal(photon_map_build(sc, a, &o, &m[k], &st[k]),
-                         IRIS_OK);
-        assert_non_null(m[k]);
-    }
+    build_photon_map_pair(sc, a, mc, 11, no_cache, m, st);
     assert_true(st[0].tex_cached > 1000);
     assert_int_equal(st[1].tex_cached, 0);
     assert_int_equal(st[0].shot, st[1].shot);
