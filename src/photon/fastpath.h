@@ -25,6 +25,13 @@ struct pfast *pfast_build(const iris_scene *scene, const struct accel *a);
 
 void pfast_destroy(struct pfast *f);
 
+/*
+** Whether 'f' answers with its plain scan: no primitive transformed and
+** no sphere whose texture may read uv, so the query calls no function.
+** Either scan gives the same hits (tests/unit/test_pfast.c runs both).
+*/
+bool pfast_plain(const struct pfast *f);
+
 /* The accel 'f' was built from. */
 const struct accel *pfast_accel(const struct pfast *f);
 

@@ -1007,6 +1007,184 @@ static void test_threads(void **state)
     scene_free(sc);
 }
 
+/* One face of test_csg_polytope's polytope: inside is n·x < d (POV-Ray's
+** plane), n a unit world normal. */
+struct face {
+    vec3 n;
+    double d;
+};
+
+/*
+** The nearest crossing t > tmin of ray o + t·dir with the convex polytope
+** that is the intersection of the half-spaces 'f', solved here without
+** src/accel or src/geometry: the ray is inside face i for t beyond its
+** crossing where n·dir < 0 (entering) and before it where n·dir > 0
+** (leaving), so it is inside the polytope between the largest entry and
+** the smallest exit. *face_out is the face crossed there. Returns
+** INFINITY for a miss, NAN when the answer is too close to call in
+** double (an edge, where two faces cross within 1e-7, or a graze).
+*/
+static double brute_polytope(const struct face *f, int nf, vec3 o, vec3 dir,
+                             double tmin, int *face_out)
+{
+    double t_in = -INFINITY, t_out = INFINITY, t_in2 = -INFINITY,
+           t_out2 = INFINITY;
+    int f_in = -1, f_out = -1;
+    for (int i = 0; i < nf; i++) {
+        double dn = v3_dot(f[i].n, dir), num = f[i].d - v3_dot(f[i].n, o);
+        if (fabs(dn) < 1e-9) {
+            if (!(num > 1e-9))
+                return fabs(num) < 1e-9 ? NAN : INFINITY;
+            continue;
+        }
+        double t = num / dn;
+        if (dn < 0) {
+            if (t > t_in) {
+                t_in2 = t_in;
+                t_in = t;
+                f_in = i;
+            } else if (t > t_in2) {
+                t_in2 = t;
+            }
+        } else {
+            if (t < t_out) {
+                t_out2 = t_out;
+                t_out = t;
+                f_out = i;
+            } else if (t < t_out2) {
+                t_out2 = t;
+            }
+        }
+    }
+    if (t_out - t_in < 1e-7)
+        return t_out - t_in > -1e-7 ? NAN : INFINITY;
+    if (fabs(t_in - tmin) < 1e-7 || fabs(t_out - tmin) < 1e-7)
+        return NAN;
+    if (t_in > tmin) {
+        if (t_in - t_in2 < 1e-7)
+            return NAN;
+        *face_out = f_in;
+        return t_in;
+    }
+    if (t_out > tmin) {
+        if (t_out2 - t_out < 1e-7)
+            return NAN;
+        *face_out = f_out;
+        return t_out;
+    }
+    return INFINITY;
+}
+
+/*
+** A cut stone: the intersection of many planes, each rotated and moved
+** as the parser leaves the leaves of a transformed CSG (the facets of
+** scenes/gem.pov). The query keeps the nearest crossing that lies inside
+** every other child, testing the crossings in order of t until one
+** passes (node.c lazy_nearest); more than 64 children take the general
+** path. For a truncated cube of 14 faces and a random polytope of 70,
+** rays from outside and from inside must meet the face and t that
+** brute_polytope() computes from the world planes (relative 1e-9:
+** both solve the same linear equations, iris in each plane's object
+** space; rays where two faces or the entry and exit come within 1e-7 are
+** left out, as their face is not determined in double).
+*/
+static void test_csg_polytope(void **state)
+{
+    (void)state;
+    const int counts[2] = { 14, 70 };
+    for (int k = 0; k < 2; k++) {
+        int nf = counts[k];
+        iris_scene *sc = scene_new();
+        rng g;
+        rng_seed(&g, 21, (uint64_t)k, 0);
+        iris_object *cut = add(sc, obj(sc, IRIS_OBJ_INTERSECTION));
+        cut->u.csg.n_children = nf;
+        cut->u.csg.children = arena_array(sc->arena, (size_t)nf,
+                                          sizeof(iris_object *));
+        struct face f[70];
+        vec3 rot = v3(360 * rng_uniform(&g), 360 * rng_uniform(&g),
+                      360 * rng_uniform(&g));
+        vec3 move = v3(2 * rng_uniform(&g) - 1, 2 * rng_uniform(&g) - 1,
+                       2 * rng_uniform(&g) - 1);
+        xform r, m;
+        xf_rotate(&r, rot);
+        xf_translate(&m, move);
+        for (int i = 0; i < nf; i++) {
+            vec3 n;
+            double d;
+            if (k == 0 && i < 6) { /* the cube's faces */
+                double c[3] = { 0, 0, 0 };
+                c[i / 2] = i % 2 ? -1 : 1;
+                n = v3(c[0], c[1], c[2]);
+                d = 1;
+            } else if (k == 0) { /* its eight corners cut */
+                int j = i - 6;
+                n = v3_norm(v3(j & 1 ? -1 : 1, j & 2 ? -1 : 1, j & 4 ? -1 : 1));
+                d = 1.4;
+            } else { /* a random facet at distance 1 to 1.2 */
+                do
+                    n = v3(2 * rng_uniform(&g) - 1, 2 * rng_uniform(&g) - 1,
+                           2 * rng_uniform(&g) - 1);
+                while (v3_len2(n) > 1 || v3_len2(n) < 0.01);
+                n = v3_norm(n);
+                d = 1 + 0.2 * rng_uniform(&g);
+            }
+            iris_object *pl = obj(sc, IRIS_OBJ_PLANE);
+            pl->u.plane.normal = n;
+            pl->u.plane.distance = d;
+            apply(pl, &r);
+            apply(pl, &m);
+            cut->u.csg.children[i] = pl;
+            /* The world plane: the rotated normal, moved along itself */
+            f[i].n = v3_norm(xf_dir(&r, n));
+            f[i].d = d + v3_dot(f[i].n, move);
+        }
+        struct accel *a = build(sc);
+        int checked = 0, hits = 0, inside = 0;
+        for (int i = 0; i < 4000; i++) {
+            /* half the rays from a shell around it, half from within */
+            bool from_in = i % 2;
+            double rad = from_in ? 0.5 * rng_uniform(&g) : 4;
+            vec3 o;
+            do
+                o = v3(2 * rng_uniform(&g) - 1, 2 * rng_uniform(&g) - 1,
+                       2 * rng_uniform(&g) - 1);
+            while (v3_len2(o) > 1 || v3_len2(o) < 0.01);
+            o = v3_add(move, v3_scale(v3_norm(o), rad));
+            vec3 aim = v3_add(move, v3(2.4 * rng_uniform(&g) - 1.2,
+                                       2.4 * rng_uniform(&g) - 1.2,
+                                       2.4 * rng_uniform(&g) - 1.2));
+            vec3 dir = v3_norm(v3_sub(aim, o));
+            if (!(v3_len2(dir) > 0))
+                continue;
+            double tmin = accel_epsilon(a);
+            int face = -1;
+            double want = brute_polytope(f, nf, o, dir, tmin, &face);
+            if (isnan(want))
+                continue;
+            checked++;
+            struct hit h;
+            bool got = shoot(a, o, dir, &h);
+            if (isinf(want)) {
+                assert_false(got);
+                continue;
+            }
+            assert_true(got);
+            hits++;
+            inside += from_in;
+            assert_near(h.t, want, 1e-9 * (1 + want));
+            assert_vec(h.n, f[face].n, 1e-9);
+            assert_ptr_equal(h.obj, cut->u.csg.children[face]);
+        }
+        /* Most rays are decided, most of those hit, from both sides */
+        assert_true(checked > 3900);
+        assert_true(hits > 2500);
+        assert_true(inside > 1500);
+        accel_destroy(a);
+        scene_free(sc);
+    }
+}
+
 /* A stretched sphere for test_fast_paths: unit sphere at 'c' scaled by
 ** 's', rotated by 'rot' degrees, translated by 't'. */
 static iris_object *ellipsoid(iris_scene *sc, vec3 c, double r, vec3 s,
@@ -1202,6 +1380,7 @@ int main(void)
         cmocka_unit_test(test_threads),
         cmocka_unit_test(test_self_hit),
         cmocka_unit_test(test_fast_paths),
+        cmocka_unit_test(test_csg_polytope),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -127,6 +127,59 @@ static int compare_queries(const char *sdl, int n)
     return hits;
 }
 
+/* Untransformed spheres and planes only, no uv read: the plain scan
+** (fastpath.c query_plain), with several of each kind, an overlap, an
+** inverse sphere and plane, a no_shadow sphere and a tiny one. */
+static const char *const PLAIN =
+    "light_source { <3, 9, -4> color rgb 1 }\n"
+    "plane { <0.3, 1, 0.1>, -0.5 pigment { color rgb 0.8 } }\n"
+    "sphere { <1, 1, 0>, 1 pigment { color rgbf <1, 0.9, 0.8, 0.9> }\n"
+    "  interior { ior 1.33 } }\n"
+    "sphere { <-1, 0.5, 0.5>, 0.7 inverse pigment { color rgb 1 } }\n"
+    "sphere { <-0.5, 0.8, 0>, 0.6 no_shadow pigment { color rgb 1 } }\n"
+    "sphere { <0, 3, 0>, 0.01 pigment { color rgb 1 } }\n"
+    "plane { x, 6 inverse pigment { color rgb 0.5 } }\n"
+    "plane { -z, 5 pigment { color rgb 0.5 } }\n";
+
+/* Whether the scan of scene 'sdl' is the plain one. */
+static bool takes_plain(const char *sdl)
+{
+    iris_scene *sc = pt_scene_with(sdl, NULL);
+    struct accel *a = NULL;
+    char err[256];
+    assert_int_equal(accel_build(sc, &a, stderr, err, sizeof err), IRIS_OK);
+    struct pfast *f = pfast_build(sc, a);
+    assert_non_null(f);
+    bool plain = pfast_plain(f);
+    pfast_destroy(f);
+    accel_destroy(a);
+    iris_scene_destroy(sc);
+    return plain;
+}
+
+/* Each scan is the one meant, so the comparisons below test both: the
+** ball and PLAIN take the plain scan, MIXED (transforms, a patterned
+** sphere) the general one. */
+static void test_which_scan(void **state)
+{
+    (void)state;
+    assert_true(takes_plain(BALL));
+    assert_true(takes_plain(PLAIN));
+    assert_false(takes_plain(MIXED));
+    /* one patterned sphere, untransformed, is enough to need uv */
+    assert_false(takes_plain(
+        "sphere { 0, 1 pigment { uv_mapping checker color rgb 1 "
+        "color rgb 0 } }\n"));
+    assert_false(takes_plain(
+        "plane { y, 0 translate 1 pigment { color rgb 1 } }\n"));
+}
+
+static void test_same_hits_plain(void **state)
+{
+    (void)state;
+    assert_true(compare_queries(PLAIN, 20000) > 10000);
+}
+
 static void test_same_hits_ball(void **state)
 {
     (void)state;
@@ -232,6 +285,8 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_same_hits_ball),
         cmocka_unit_test(test_same_hits_mixed),
+        cmocka_unit_test(test_which_scan),
+        cmocka_unit_test(test_same_hits_plain),
         cmocka_unit_test(test_not_eligible),
         cmocka_unit_test(test_same_map),
         cmocka_unit_test(test_same_map_material),
