@@ -29,6 +29,7 @@
 #include "geometry/julia_hcx.h"
 
 #include <math.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -91,6 +92,12 @@ static bool setup(const iris_object *o, struct jset *j)
         j->exit2 = j->radius * j->radius + 1e-7;
     }
     j->iters = o->u.julia.iterations > 0 ? o->u.julia.iterations : 20;
+    /* One inside point (and its normal) costs 'iters' iterations, counted
+    ** only afterwards: past the ray's whole budget, max_iteration 1e9 took
+    ** minutes per ray. A point still bounded after MAX_WORK iterations
+    ** counts as inside (issue 7: bounded time). */
+    if (j->iters > MAX_WORK)
+        j->iters = (int)MAX_WORK;
     j->step_min = o->u.julia.precision > 0 ? 1 / o->u.julia.precision
                                            : 1.0 / 20;
     j->cube = o->u.julia.fn == IRIS_JULIA_CUBE;
@@ -106,7 +113,8 @@ static void lift(const struct jset *j, vec3 p, double q[4])
            j->s[3];
 }
 
-static void qmul(const double a[4], const double b[4], double r[4])
+/* Inline: the quaternion normal calls it 7 times per iteration. */
+static inline void qmul(const double a[4], const double b[4], double r[4])
 {
     double t[4] = {
         a[0] * b[0] - a[1] * b[1] - a[2] * b[2] - a[3] * b[3],
@@ -120,6 +128,13 @@ static void qmul(const double a[4], const double b[4], double r[4])
 
 static bool hcx_run(const struct jset *j, vec3 p, vec3 d, double *dist,
                     double (*z)[4], long *work);
+
+/* 2^n exactly, as ldexp(1, n), without the libm call for small n (the
+** hypercomplex march asks for it at every step) */
+static double pow2(int n)
+{
+    return n >= 0 && n < 63 ? (double)((uint64_t)1 << n) : ldexp(1, n);
+}
 
 /*
 ** One step q <- q² + c or q³ + c, from the closed forms of a quaternion
@@ -221,19 +236,25 @@ static void hstack_fini(struct hstack *s)
 ** POV-Ray's hypercomplex normal from the stack: the derivative product
 ** z_0 · factor(z_1) ... factor(z_(nmax-1)) against z_nmax · pw.
 */
-static vec3 hcx_stack_normal(const struct jset *j, double (*z)[4], int nmax,
-                             double pw)
+static inline vec3 hcx_stack_normal(const struct jset *j, double (*z)[4],
+                                    int nmax, double pw)
 {
     double dp[4], n[4], g[3];
     for (int k = 0; k < 4; k++) {
         dp[k] = z[0][k];
         n[k] = z[nmax][k] * pw;
     }
-    for (int i = 1; i < nmax; i++) {
-        double f[4];
-        hcx_normal_factor(j->fn, j->e, z[i], f);
-        hcx_mul(dp, f, dp);
-    }
+    /* sqr and cube: the factor is z_i itself (hcx_normal_factor), used
+    ** in place here, with no call per row */
+    if (j->fn == IRIS_JULIA_SQR || j->fn == IRIS_JULIA_CUBE)
+        for (int i = 1; i < nmax; i++)
+            hcx_mul(dp, z[i], dp);
+    else
+        for (int i = 1; i < nmax; i++) {
+            double f[4];
+            hcx_normal_factor(j->fn, j->e, z[i], f);
+            hcx_mul(dp, f, dp);
+        }
     hcx_normal(dp, n, g);
     return v3(g[0], g[1], g[2]);
 }
@@ -261,8 +282,8 @@ static bool hcx_run(const struct jset *j, vec3 p, vec3 d, double *dist,
     ** z = y, a typo fixed only in 3.8 (Iteration_HCompl_Func): iris
     ** renders 3.7's surfaces and normals.
     */
-    bool fn = j->fn != IRIS_JULIA_SQR && j->fn != IRIS_JULIA_CUBE &&
-              j->fn != IRIS_JULIA_RECIPROCAL;
+    bool square = j->fn == IRIS_JULIA_SQR || j->fn == IRIS_JULIA_CUBE;
+    bool fn = !square && j->fn != IRIS_JULIA_RECIPROCAL;
     if (fn && !dist)
         p.z = p.y;
     lift(j, p, z[0]);
@@ -275,7 +296,7 @@ static bool hcx_run(const struct jset *j, vec3 p, vec3 d, double *dist,
             if (dist) {
                 /* sqr's normal carries POV-Ray's 2^n: it scales the step */
                 double pw = j->fn == IRIS_JULIA_SQR
-                                ? ldexp(1, i > 1 ? i - 1 : 1) : 1;
+                                ? pow2(i > 1 ? i - 1 : 1) : 1;
                 vec3 g = hcx_stack_normal(j, z, i - 1, pw);
                 double step = v3_dot(g, d);
                 *dist = j->step_min;
@@ -289,7 +310,10 @@ static bool hcx_run(const struct jset *j, vec3 p, vec3 d, double *dist,
             return false;
         }
         double r[4];
-        hcx_map(j->fn, j->e, q, r);
+        if (square)
+            hcx_mul(q, q, r); /* hcx_map's sqr and cube, inline */
+        else
+            hcx_map(j->fn, j->e, q, r);
         for (int k = 0; k < 4; k++)
             z[i][k] = r[k] + j->c[k];
     }
@@ -327,7 +351,9 @@ static void hcx_hits(const struct jset *j, vec3 ro, vec3 d, double dl,
     while (depth < b && work < MAX_WORK) {
         vec3 ip;
         for (;;) {
-            dist = fmax(dist, j->step_min);
+            /* fmax(dist, step_min) without the libm call: a NaN
+            ** step gives step_min as fmax does */
+            dist = dist > j->step_min ? dist : j->step_min;
             depth += dist;
             if (depth > b || work >= MAX_WORK)
                 goto done;
@@ -487,7 +513,10 @@ void geom_julia_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
     bool in = iterate(&j, v3_madd(ro, d, t), d, &dist, &work);
     for (int step = 0; step < MAX_STEPS && t < b && work < MAX_WORK;
          step++) {
-        double tn = fmin(t + fmax(dist, j.step_min), b), dn;
+        /* fmin(t + fmax(dist, step_min), b) without the libm calls
+        ** (the same values: a NaN dist steps by step_min) */
+        double adv = t + (dist > j.step_min ? dist : j.step_min);
+        double tn = adv < b ? adv : b, dn;
         bool inn = iterate(&j, v3_madd(ro, d, tn), d, &dn, &work);
         if (inn != in) {
             /* Bisect to 1e-12 of the set's radius, a thousandth of the

@@ -147,19 +147,6 @@ static cplx cfunc(int fn, const double e[2], cplx z)
     }
 }
 
-void hcx_mul(const double a[4], const double b[4], double r[4])
-{
-    /* i² = j² = -1, k² = +1, ij = k, ik = -j, jk = -i */
-    double t[4] = {
-        a[0] * b[0] - a[1] * b[1] - a[2] * b[2] + a[3] * b[3],
-        a[1] * b[0] + a[0] * b[1] - a[3] * b[2] - a[2] * b[3],
-        a[2] * b[0] - a[3] * b[1] + a[0] * b[2] - a[1] * b[3],
-        a[3] * b[0] + a[2] * b[1] + a[1] * b[2] + a[0] * b[3]
-    };
-    for (int k = 0; k < 4; k++)
-        r[k] = t[k];
-}
-
 /* 1/q; 0 where q is a zero divisor (POV-Ray leaves it unset) */
 static void hcx_reciprocal(const double q[4], double r[4])
 {
@@ -207,12 +194,4 @@ void hcx_normal_factor(int fn, const double e[2], const double q[4],
     } else {
         hcx_map(fn, e, q, r);
     }
-}
-
-void hcx_normal(const double dp[4], const double n[4], double out[3])
-{
-    /* n · (dp e) for e = 1, i, j: the x, y, z partials of n·(dp p) */
-    out[0] = dp[0] * n[0] + dp[1] * n[1] + dp[2] * n[2] + dp[3] * n[3];
-    out[1] = -dp[1] * n[0] + dp[0] * n[1] - dp[3] * n[2] + dp[2] * n[3];
-    out[2] = -dp[2] * n[0] - dp[3] * n[1] + dp[0] * n[2] + dp[1] * n[3];
 }

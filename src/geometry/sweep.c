@@ -647,6 +647,55 @@ static void wall_hits(const struct geom_profile *p, int i, int e, int axis,
     }
 }
 
+/*
+** The crossing of the ray whose shadow on the profile's plane is
+** (ou, ov) + t (du, dv), t in (ta, tb), with the wall over straight
+** segment 'i' of a linear extrusion.
+*/
+static void flat_wall_hit(const struct geom_profile *p, int i, int axis,
+                          double ou, double ov, double du, double dv,
+                          double ta, double tb, struct isect_list *out)
+{
+    iris_vec2 A = p->a[i], B = p->b[i];
+    double eu = B.u - A.u, ev = B.v - A.v;
+    double den = du * ev - dv * eu;
+    if (den == 0)
+        return;
+    double t = -((ou - A.u) * ev - (ov - A.v) * eu) / den;
+    double pu = ou + t * du - A.u, pv = ov + t * dv - A.v;
+    double s = (pu * eu + pv * ev) / (eu * eu + ev * ev);
+    /* Half-open, so a crossing at a shared corner counts once */
+    if (!(t > ta && t < tb) || s < 0 || s >= 1)
+        return;
+    iris_vec2 n2 = seg_normal(p, i, s);
+    isect_push(out, t, join(n2.u, n2.v, 0, axis), s, 0);
+}
+
+/*
+** The walls of group 'g' of a linear extrusion of straight segments
+** (text), run by run (geom.h): a crossing lies on its segment and on the
+** ray's shadow between a and b (the span inside the group's box), so a
+** run whose box, widened by run_pad, misses the shadow's box has none.
+** The segments tested find what testing them all finds.
+*/
+static void flat_runs(const struct geom_profile *p, int g, int axis,
+                      double ou, double ov, double du, double dv, double a,
+                      double b, double ta, double tb, struct isect_list *out)
+{
+    double u0 = ou + a * du, u1 = ou + b * du;
+    double v0 = ov + a * dv, v1 = ov + b * dv;
+    double pad = p->run_pad;
+    double ulo = (u0 < u1 ? u0 : u1) - pad, uhi = (u0 < u1 ? u1 : u0) + pad;
+    double vlo = (v0 < v1 ? v0 : v1) - pad, vhi = (v0 < v1 ? v1 : v0) + pad;
+    for (int k = p->group_run[g]; k < p->group_run[g + 1]; k++) {
+        if (p->run_hi[k].u < ulo || p->run_lo[k].u > uhi ||
+            p->run_hi[k].v < vlo || p->run_lo[k].v > vhi)
+            continue;
+        for (int i = p->run_first[k]; i < p->run_first[k + 1]; i++)
+            flat_wall_hit(p, i, axis, ou, ov, du, dv, ta, tb, out);
+    }
+}
+
 void geom_extrude_hits(const struct geom_profile *p, int axis, vec3 ro,
                        vec3 rd, double t0, double t1, struct isect_list *out)
 {
@@ -681,6 +730,10 @@ void geom_extrude_hits(const struct geom_profile *p, int axis, vec3 ro,
             vec3 bhi = v3(p->group_hi[g].u + m, p->group_hi[g].v + m, 0);
             if (!geom_clip_box(blo, bhi, v3(ou, ov, 0), v3(du, dv, 0), &a, &b))
                 continue;
+            if (p->n_runs && p->n_curves == 0 && isfinite(a) && isfinite(b)) {
+                flat_runs(p, g, axis, ou, ov, du, dv, a, b, ta, tb, out);
+                continue;
+            }
         }
         for (int i = f; i < end; i++) {
             if (!p->conic && p->curve && p->curve[i] >= 0) {
@@ -690,42 +743,32 @@ void geom_extrude_hits(const struct geom_profile *p, int axis, vec3 ro,
                 i = e - 1;
                 continue;
             }
+            if (!p->conic) {
+                flat_wall_hit(p, i, axis, ou, ov, du, dv, ta, tb, out);
+                continue;
+            }
             iris_vec2 A = p->a[i], B = p->b[i];
             double eu = B.u - A.u, ev = B.v - A.v;
-            double t, s;
-            if (!p->conic) {
-                double den = du * ev - dv * eu;
-                if (den == 0)
-                    continue;
-                t = -((ou - A.u) * ev - (ov - A.v) * eu) / den;
-                double pu = ou + t * du - A.u, pv = ov + t * dv - A.v;
-                s = (pu * eu + pv * ev) / (eu * eu + ev * ev);
-            } else {
-                /* The plane through the apex and the segment at h = 1 */
-                vec3 a3 = join(A.u, A.v, 1, axis), b3 = join(B.u, B.v, 1, axis);
-                vec3 N = v3_cross(a3, b3);
-                double den = v3_dot(N, rd);
-                if (den == 0)
-                    continue;
-                t = -v3_dot(N, ro) / den;
-                double h = oh + t * dh;
-                if (!(h > 0))
-                    continue;
-                double pu = (ou + t * du) / h - A.u, pv = (ov + t * dv) / h - A.v;
-                s = (pu * eu + pv * ev) / (eu * eu + ev * ev);
-            }
+            /* The plane through the apex and the segment at h = 1 */
+            vec3 a3 = join(A.u, A.v, 1, axis), b3 = join(B.u, B.v, 1, axis);
+            vec3 N = v3_cross(a3, b3);
+            double den = v3_dot(N, rd);
+            if (den == 0)
+                continue;
+            double t = -v3_dot(N, ro) / den;
+            double h = oh + t * dh;
+            if (!(h > 0))
+                continue;
+            double pu = (ou + t * du) / h - A.u, pv = (ov + t * dv) / h - A.v;
+            double s = (pu * eu + pv * ev) / (eu * eu + ev * ev);
             /* Half-open, so a crossing at a shared corner counts once */
             if (!(t > ta && t < tb) || s < 0 || s >= 1)
                 continue;
             iris_vec2 n2 = seg_normal(p, i, s);
             vec3 n = join(n2.u, n2.v, 0, axis);
-            if (p->conic) {
-                vec3 a3 = join(A.u, A.v, 1, axis), b3 = join(B.u, B.v, 1, axis);
-                vec3 N = v3_cross(a3, b3);
-                /* Smooth tangent direction is lost on the cone: use the
-                ** plane, turned to the outward side */
-                n = v3_dot(N, n) < 0 ? v3_neg(N) : N;
-            }
+            /* Smooth tangent direction is lost on the cone: use the
+            ** plane, turned to the outward side */
+            n = v3_dot(N, n) < 0 ? v3_neg(N) : N;
             isect_push(out, t, n, s, 0);
         }
     }

@@ -39,3 +39,9 @@ tests_unit_test_geom_bound_SOURCES = tests/unit/test_geom_bound.c \
 	tests/testutil.h
 tests_unit_test_geom_bound_CFLAGS = $(TEST_CFLAGS)
 tests_unit_test_geom_bound_LDADD = $(TEST_LDADD)
+check_PROGRAMS += tests/unit/test_geom_runs
+TESTS += tests/unit/test_geom_runs
+tests_unit_test_geom_runs_SOURCES = tests/unit/test_geom_runs.c \
+	tests/testutil.h
+tests_unit_test_geom_runs_CFLAGS = $(TEST_CFLAGS)
+tests_unit_test_geom_runs_LDADD = $(TEST_LDADD)
