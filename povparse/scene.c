@@ -257,6 +257,12 @@ iris_camera *pp_camera(pp_state *ps, const iris_camera *base)
                 c->blur_samples = second;
                 c->blur_samples_min = first;
             }
+            /* The renderer keeps a table entry per sample and may trace
+            ** them all per pixel: 'blur_samples 1e9' allocated 24 GB.
+            ** POV-Ray has no limit; its examples use at most a few hundred */
+            if (c->blur_samples > 65536)
+                pp_error(ps, &at, "blur_samples %d out of range [1, 65536]",
+                         c->blur_samples);
             break;
         }
         case T_FOCAL_POINT:

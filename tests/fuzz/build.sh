@@ -66,6 +66,21 @@ for t in fuzz_parse fuzz_plan fuzz_render; do
         $libs -o "$out/$t"
     echo "built $out/$t"
 done
+# A libFuzzer dictionary of the SDL's words (session 7): every reserved
+# word of povparse/tokens.def, the directives with their '#', and the
+# punctuation that opens blocks and vectors. Mutations then splice whole
+# keywords in, where byte flips almost never make one.
+{
+    sed -n 's/^\(TOK\|ALIAS\)([A-Z_0-9]*, *\("[^"]*"\)).*/\2/p' \
+        "$top/povparse/tokens.def"
+    for w in declare local undef macro end while for if ifdef ifndef else \
+             elseif switch case range break include version debug warning \
+             error fopen fclose read write default; do
+        echo "\"#$w\""
+    done
+    printf '"%s"\n' '{' '}' '<' '>' ',' ';' '(' ')' '[' ']' '//' '/*' '*/'
+} >"$out/sdl.dict"
+echo "wrote $out/sdl.dict ($(wc -l <"$out/sdl.dict") entries)"
 if [ -n "$2" ]; then
     corpus="$out/seed"
     mkdir -p "$corpus"
@@ -73,6 +88,6 @@ if [ -n "$2" ]; then
     for t in fuzz_parse fuzz_plan fuzz_render; do
         mkdir -p "$out/corpus-$t"
         "$out/$t" -max_total_time="$2" -timeout=10 -rss_limit_mb=2048 \
-            -max_len=8192 "$out/corpus-$t" "$corpus"
+            -max_len=8192 -dict="$out/sdl.dict" "$out/corpus-$t" "$corpus"
     done
 fi

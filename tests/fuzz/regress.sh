@@ -56,7 +56,8 @@ for t in fuzz_parse fuzz_plan; do
     mkdir -p "$tmp/$t" "$tmp/seed"
     [ -n "$(ls "$tmp/seed")" ] || sh "$top_srcdir/tests/fuzz/seed.sh" "$tmp/seed"
     (cd "$tmp" && exec "$out/$t" -max_total_time="$secs" -timeout=10 \
-        -rss_limit_mb=2048 -max_len=8192 -artifact_prefix="$tmp/$t-" \
+        -rss_limit_mb=2048 -max_len=8192 -dict="$out/sdl.dict" \
+        -artifact_prefix="$tmp/$t-" \
         "$tmp/$t" "$corpus" "$tmp/seed") >"$log" 2>&1
     st=$?
     stats=$(grep -E '^#[0-9]+[[:space:]]+(DONE|pulse|NEW|REDUCE)' "$log" |

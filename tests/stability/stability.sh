@@ -72,7 +72,7 @@ run_case() {
     name=$1; bound=$2; todo=$3; scene=$4; shift 4
     args="$*"
     size="+W$W +H$H"
-    case $name in trap*|*endless) size="+W24 +H18" ;; esac
+    case $name in trap*|*endless*) size="+W24 +H18" ;; esac
     why=""
     # Random (spectral, photon) and deep (trap) cases render twice, side
     # by side on the two cores; the plain RGB ones once, to save time.
@@ -201,6 +201,7 @@ run_case shapes_stiff   "rgb 1" "" shapes.pov Declare=KIND=1
 run_case shapes_extreme "rgb 1" "" shapes.pov Declare=KIND=2
 run_case shapes_transforms "rgb 1" "" shapes.pov Declare=KIND=3
 run_case shapes_endless "rgb 1" "" shapes.pov Declare=KIND=4
+run_case shapes_endless_1e9 "rgb 1" "" shapes.pov Declare=KIND=4 Declare=JITER=1e9
 
 # A 1e-4 shell in a scene a million times larger (a hidden sphere of
 # radius 1e6): the hidden sphere must not change a pixel. The global

@@ -15,6 +15,10 @@
 // src/geometry caps or sorts the work per ray.
 #version 3.7;
 #ifndef (KIND) #declare KIND = 0; #end
+// JITER: the julia fractal's max_iteration in KIND 4 (1e9: every inside
+// point ran all of them before the per-ray budget was checked; minutes
+// per ray until julia.c capped it at the budget, 1e6)
+#ifndef (JITER) #declare JITER = 1000000; #end
 #include "stage.inc"
 #declare T = texture { pigment { rgb 1 } finish { Matte } }
 
@@ -61,7 +65,7 @@
 #case (4)
     julia_fractal {
         <-0.083, 0.0, -0.83, -0.025> quaternion sqr
-        max_iteration 1000000 precision 1e9
+        max_iteration JITER precision 1e9
         scale 0.5 translate <-0.6, 0.7, 0> texture { T }
     }
     isosurface {
