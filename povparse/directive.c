@@ -34,12 +34,24 @@ static void ident(pp_state *ps, const char *what)
     }
 }
 
-/* Parses '(' float ')' as the condition of #if/#while/#case. */
+/* A float among a directive's own parameters (pp.h's header_frames). */
+static double header_float(pp_state *ps)
+{
+    int frames = ps->header_frames, conds = ps->header_conds;
+    ps->header_frames = ps->n_frames;
+    ps->header_conds = ps->n_conds;
+    double v = pp_float(ps);
+    ps->header_frames = frames;
+    ps->header_conds = conds;
+    return v;
+}
+
+/* Parses '(' float ')' as the condition of #if/#while/#switch. */
 static double cond_value(pp_state *ps)
 {
     /* POV-Ray reads a float here: '#if (A < B)' compares inside the
     ** parentheses, and a '<' after them starts a vector */
-    return pp_float(ps);
+    return header_float(ps);
 }
 
 /* Assigns 'v' to array element [..] of 'arr'; reads the indices. */
@@ -84,6 +96,11 @@ static void do_declare(pp_state *ps, bool local)
             pp_error(ps, &name, "'%.*s' is not an array", (int)name.len,
                      text);
         slot = array_slot(ps, s->val.u.arr);
+        /* an element of an array held in an array: A[i][j] = ... */
+        while (slot->kind == V_ARRAY && pp_accept(ps, T_LBRACKET)) {
+            pp_unget(ps);
+            slot = array_slot(ps, slot->u.arr);
+        }
     }
     pp_expect(ps, T_EQUALS, "'='");
     /* #local writes to the table current at the '#local' (POV-Ray's
@@ -96,8 +113,33 @@ static void do_declare(pp_state *ps, bool local)
     ** write must still reach the caller's variable */
     pp_sym *before = slot || local
                          ? NULL : sym_resolve(sym_lookup(ps, text, name.len));
+    ps->no_expand++;
+    pp_next(ps);
+    ps->no_expand--;
+    bool named_array = ps->tok.kind == T_IDENT && ps->tok.val.kind == V_ARRAY;
+    pp_unget(ps);
     pp_value v = pp_rvalue(ps);
+    /* POV-Ray 3.5 and later require the ';' after a float, vector or
+    ** colour; POV-Ray stops at the token found instead, or, when that is
+    ** a directive in the same file or macro body (even the macro's
+    ** closing #end), at the value's last token (ps->tok: the expression
+    ** ended without reading on) */
+    bool strict = (v.kind == V_FLOAT || v.kind == V_VECTOR ||
+                   v.kind == V_COLOUR) && ps->version >= 3.5;
+    static const char no_semi[] = "a #declare or #local of a float, vector "
+        "or colour needs a ';' after the value (#version 3.5 and later)";
+    if (strict && ps->n_unget == 0) {
+        pp_frame *fr = &ps->frames[ps->n_frames - 1];
+        pp_token t;
+        lex_peek(ps, fr->file, fr->pos, &t);
+        if (t.kind == T_HASH)
+            pp_error(ps, &ps->tok, no_semi);
+    }
     pp_next_is_directive(ps); /* returns from macros that just ended */
+    /* '#declare B = A' makes B a copy of the array A, as in POV-Ray:
+    ** writing B[i] leaves A as it was (a new array is not copied) */
+    if (v.kind == V_ARRAY && named_array)
+        v.u.arr = pp_array_copy(ps, v.u.arr);
     if (scope > ps->n_scopes - 1)
         scope = ps->n_scopes - 1;
     if (slot) {
@@ -125,10 +167,15 @@ static void do_declare(pp_state *ps, bool local)
         target = sym_resolve(target);
         target->val = v;
     }
+    /* (a directive after a value that ended a file or macro may still be
+    ** followed by the ';': strings.inc's Parse_String includes the value) */
     if (!pp_next_is_directive(ps)) {
         pp_next(ps);
-        if (ps->tok.kind != T_SEMI)
+        if (ps->tok.kind != T_SEMI) {
+            if (strict)
+                pp_error(ps, &ps->tok, no_semi);
             pp_unget(ps);
+        }
     }
 }
 
@@ -157,7 +204,7 @@ static void branch(pp_state *ps, const pp_token *at, bool cond)
 }
 
 /* #ifdef / #ifndef ( identifier [index] ) */
-static bool is_defined(pp_state *ps)
+bool pp_is_defined(pp_state *ps)
 {
     pp_expect(ps, T_LPAREN, "'('");
     ps->no_expand++;
@@ -165,8 +212,20 @@ static bool is_defined(pp_state *ps)
     ps->no_expand--;
     bool def;
     if (ps->tok.kind != T_IDENT) {
-        /* POV-Ray: reserved words count as defined. */
-        def = ps->tok.kind > T_KW_FIRST;
+        /* POV-Ray 3.7 (checked with #ifdef on every reserved word): the
+        ** predefined identifiers of the animation and image size are
+        ** defined, every other reserved word (pi, x, clock, version...)
+        ** is not */
+        switch (ps->tok.kind) {
+        case T_CLOCK_DELTA: case T_FINAL_CLOCK: case T_FINAL_FRAME:
+        case T_FRAME_NUMBER: case T_IMAGE_HEIGHT: case T_IMAGE_WIDTH:
+        case T_INITIAL_CLOCK: case T_INITIAL_FRAME:
+            def = true;
+            break;
+        default:
+            def = false;
+            break;
+        }
     } else {
         pp_sym *s = sym_resolve(sym_lookup(ps, pp_tok_text(ps, &ps->tok),
                                            ps->tok.len));
@@ -199,7 +258,7 @@ static void switch_seek(pp_state *ps)
             continue;
         if (k == T_CASE) {
             pp_expect(ps, T_LPAREN, "'('");
-            double v = pp_float(ps);
+            double v = header_float(ps);
             pp_expect(ps, T_RPAREN, "')'");
             if (fabs(v - c->switch_val) < 1e-10) {
                 c->matched = true;
@@ -207,9 +266,9 @@ static void switch_seek(pp_state *ps)
             }
         } else if (k == T_RANGE) {
             pp_expect(ps, T_LPAREN, "'('");
-            double lo = pp_float(ps);
+            double lo = header_float(ps);
             pp_expect(ps, T_COMMA, "','");
-            double hi = pp_float(ps);
+            double hi = header_float(ps);
             pp_expect(ps, T_RPAREN, "')'");
             if (c->switch_val >= lo && c->switch_val <= hi) {
                 c->matched = true;
@@ -276,11 +335,13 @@ static void do_end(pp_state *ps, const pp_token *at)
                         "--max-loop-iterations=N)", limit);
         pp_sym *s = sym_resolve(c->for_sym);
         double v = (s->val.kind == V_FLOAT ? s->val.v[0] : 0) + c->for_step;
+        /* incremented before the test, as POV-Ray: after '#for (K, 0, 3)'
+        ** K is 4 */
+        s->val.kind = V_FLOAT;
+        s->val.dim = 1;
+        s->val.v[0] = v;
         if (c->for_step > 0 ? v <= c->for_end + 1e-10 * fabs(c->for_end)
                             : v >= c->for_end - 1e-10 * fabs(c->for_end)) {
-            s->val.kind = V_FLOAT;
-            s->val.dim = 1;
-            s->val.v[0] = v;
             fr->pos = c->loop_pos;
             ps->n_unget = 0;
             return;
@@ -341,11 +402,18 @@ void pp_call_macro(pp_state *ps, const pp_macro *m, const pp_token *call)
             ps->no_expand++;
             pp_next(ps);
             ps->no_expand--;
+            /* as POV-Ray: a macro cannot declare its caller's new
+            ** variable through a parameter, and an argument that starts
+            ** with an undeclared name is refused with the same words */
+            if (ps->tok.kind == T_IDENT && ps->tok.val.kind == V_NONE)
+                pp_error(ps, &ps->tok, "cannot pass the uninitialized "
+                         "identifier '%.*s' as a macro parameter (declare "
+                         "it first)", (int)ps->tok.len,
+                         pp_tok_text(ps, &ps->tok));
             if (ps->tok.kind == T_IDENT && ps->tok.val.kind != V_MACRO) {
                 pp_token id = ps->tok;
                 pp_next(ps);
                 if (ps->tok.kind == T_COMMA || ps->tok.kind == T_RPAREN) {
-                    /* an undeclared identifier arrives undefined */
                     refs[n] = id.sym;
                     vals[n] = id.val;
                     n++;
@@ -461,12 +529,12 @@ static void do_for(pp_state *ps, const pp_token *at)
     ident(ps, "the loop variable");
     pp_token name = ps->tok;
     pp_expect(ps, T_COMMA, "','");
-    double start = pp_float(ps);
+    double start = header_float(ps);
     pp_expect(ps, T_COMMA, "','");
-    double end = pp_float(ps);
+    double end = header_float(ps);
     double step = 1;
     if (pp_accept(ps, T_COMMA))
-        step = pp_float(ps);
+        step = header_float(ps);
     pp_expect(ps, T_RPAREN, "')'");
     if (step == 0)
         pp_error(ps, at, "#for step must not be 0");
@@ -807,10 +875,10 @@ void pp_directive(pp_state *ps, const pp_token *hash)
         branch(ps, &at, cond_value(ps) != 0);
         return;
     case T_IFDEF:
-        branch(ps, &at, is_defined(ps));
+        branch(ps, &at, pp_is_defined(ps));
         return;
     case T_IFNDEF:
-        branch(ps, &at, !is_defined(ps));
+        branch(ps, &at, !pp_is_defined(ps));
         return;
     case T_ELSE: case T_ELSEIF: {
         pp_frame *fr = &ps->frames[ps->n_frames - 1];
@@ -859,10 +927,10 @@ void pp_directive(pp_state *ps, const pp_token *hash)
         /* Inside a matched clause without #break: POV-Ray falls through;
         ** the label's value is read and ignored. */
         pp_expect(ps, T_LPAREN, "'('");
-        pp_float(ps);
+        header_float(ps);
         if (kw.kind == T_RANGE) {
             pp_expect(ps, T_COMMA, "','");
-            pp_float(ps);
+            header_float(ps);
         }
         pp_expect(ps, T_RPAREN, "')'");
         return;

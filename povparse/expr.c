@@ -97,12 +97,19 @@ static void need_finite(pp_state *ps, const pp_token *at, const pp_value *v)
 ** #if/#else. Such a directive computes nothing, so running it before
 ** the expression is complete is safe, and POV-Ray does so: a macro whose
 ** body is '#if (c) A[i] #else ... #end' can be followed by '* 2' in the
-** caller (arrays.inc's Rand_Array_Item in advanced/isocacti). Any other
-** directive (#declare, a loop's #end, ...) still ends the expression.
+** caller (arrays.inc's Rand_Array_Item in advanced/isocacti). The same
+** holds for a #switch's control flow: #break (to the #end of the switch
+** or loop it leaves), and, in a running #switch clause, #case/#range/#else
+** falling through and the switch's #end: a macro returning a value from a
+** clause, 'M(x) + 1' or concat(M(x), ...), goes on after the #switch as in
+** POV-Ray. Any other directive (#declare, a loop's #end, ...) still ends
+** the expression.
 */
 static bool next_directive_closes_if(pp_state *ps)
 {
-    if (ps->n_unget > 0 || ps->n_frames == 0)
+    if (ps->n_unget > 0 || ps->n_frames == 0 ||
+        (ps->n_frames == ps->header_frames &&
+         ps->n_conds == ps->header_conds))
         return false;
     pp_frame *cur = &ps->frames[ps->n_frames - 1];
     if (ps->n_conds <= cur->cond_base)
@@ -113,9 +120,20 @@ static bool next_directive_closes_if(pp_state *ps)
     if (t.kind != T_HASH)
         return false;
     lex_peek(ps, cur->file, pos, &kw);
-    if (kw.kind == T_ELSE || kw.kind == T_ELSEIF)
+    switch (kw.kind) {
+    case T_ELSEIF:
         return inner == C_IF;
-    return kw.kind == T_END && (inner == C_IF || inner == C_ELSE);
+    case T_ELSE:
+        return inner == C_IF || inner == C_SWITCH;
+    case T_CASE: case T_RANGE:
+        return inner == C_SWITCH;
+    case T_BREAK:
+        return inner == C_IF || inner == C_ELSE || inner == C_SWITCH;
+    case T_END:
+        return inner == C_IF || inner == C_ELSE || inner == C_SWITCH;
+    default:
+        return false;
+    }
 }
 
 /* pp_next_is_directive(), except for the directives that only close an
@@ -250,33 +268,237 @@ static const char *fmt_float(pp_state *ps, double f, int len, int prec)
     return pp_strdup(ps, buf, strlen(buf));
 }
 
+/* The box POV-Ray gives a cylinder or cone (Cone::Compute_BBox): in
+** its own frame, where the axis from 'base' to 'cap' is z, the box
+** [-r, r]^2 x [0, 1] with r the larger radius, taken to world space by
+** the rotation that turns z onto the axis about (-d.y, d.x, 0) (POV-Ray's
+** Compute_Coordinate_Transform) and then by the object's transform. Its
+** world box is tight along the axis: a cylinder from 0 to 2y has
+** max_extent y = 2, not 2 + r. */
+static void axial_bounds(const iris_object *o, vec3 base, vec3 cap, double r,
+                         vec3 *lo, vec3 *hi)
+{
+    vec3 d = v3_sub(cap, base);
+    double len = v3_len(d);
+    vec3 u = v3(1, 0, 0), w = v3(0, 1, 0);
+    if (len > 0) {
+        d = v3_scale(d, 1 / len);
+        if (fabs(d.z) <= 1 - 1e-10) {
+            /* Rodrigues: rotate x and y about k by acos(d.z) */
+            double kl = sqrt(d.x * d.x + d.y * d.y);
+            vec3 k = v3(-d.y / kl, d.x / kl, 0);
+            double c = d.z, sn = kl;
+            vec3 e[2] = { v3(1, 0, 0), v3(0, 1, 0) };
+            for (int i = 0; i < 2; i++) {
+                vec3 v = e[i];
+                vec3 kv = v3(k.y * v.z - k.z * v.y, k.z * v.x - k.x * v.z,
+                             k.x * v.y - k.y * v.x);
+                double kd = k.x * v.x + k.y * v.y + k.z * v.z;
+                e[i] = v3_add(v3_add(v3_scale(v, c), v3_scale(kv, sn)),
+                              v3_scale(k, kd * (1 - c)));
+            }
+            u = e[0];
+            w = e[1];
+        }
+    }
+    *lo = v3(1e30, 1e30, 1e30);
+    *hi = v3(-1e30, -1e30, -1e30);
+    for (int i = 0; i < 8; i++) {
+        vec3 p = v3_add(i & 4 ? cap : base,
+                        v3_add(v3_scale(u, i & 1 ? r : -r),
+                               v3_scale(w, i & 2 ? r : -r)));
+        if (o->has_transform)
+            p = xf_point(&o->transform, p);
+        *lo = v3_min(*lo, p);
+        *hi = v3_max(*hi, p);
+    }
+}
+
+/* The scale s when the linear part of 't' is s times a rotation, else 0:
+** POV-Ray moves a sphere's centre and radius under such a transform and
+** keeps its box tight; any other makes it an ellipsoid boxed by the
+** transformed corners (Sphere::Transform). */
+static double similarity_scale(const iris_transform *t)
+{
+    double c[3][3];
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++) {
+            c[i][j] = 0;
+            for (int k = 0; k < 3; k++)
+                c[i][j] += t->m[k][i] * t->m[k][j];
+        }
+    double s2 = c[0][0];
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            if (fabs(c[i][j] - (i == j ? s2 : 0)) > 1e-9 * s2)
+                return 0;
+    return sqrt(s2);
+}
+
+/* POV-Ray's SMALL_TOLERANCE: the half thickness it gives flat boxes. */
+#define POV_SMALL_TOLERANCE 0.001
+
+/* The largest radius of a sor's profile (Sor::Compute_Sor): POV-Ray fits
+** r^2(y) on each segment P[i+1]..P[i+2] with the cubic through both ends
+** whose slopes come from the neighbours, and bounds the segment by the
+** largest of r at its ends and at the cubic's turning points inside it,
+** so the box can pass the control points' radii. 'y_lo'/'y_hi' get the
+** heights of the first and last segment ends. */
+static double sor_radius(const iris_vec2 *P, int n, double *y_lo,
+                         double *y_hi)
+{
+    double rmax = 0;
+    *y_lo = 1e30;
+    *y_hi = -1e30;
+    for (int i = 0; i + 3 < n; i++) {
+        double y0 = P[i + 1].v, y1 = P[i + 2].v, h = y1 - y0;
+        double k0 = P[i + 1].u * P[i + 1].u, k1 = P[i + 2].u * P[i + 2].u;
+        double d0 = 2 * P[i + 1].u * (P[i + 2].u - P[i].u) /
+                    (P[i + 2].v - P[i].v);
+        double d1 = 2 * P[i + 2].u * (P[i + 3].u - P[i + 1].u) /
+                    (P[i + 3].v - P[i + 1].v);
+        *y_lo = fmin(*y_lo, y0);
+        *y_hi = fmax(*y_hi, y1);
+        rmax = fmax(rmax, fmax(fabs(P[i + 1].u), fabs(P[i + 2].u)));
+        if (!(fabs(h) > 0) || !isfinite(d0) || !isfinite(d1))
+            continue;   /* the parser rejects these profiles */
+        /* The Hermite cubic in t = (y - y0)/h; its derivative's roots in
+        ** [0, 1] are the turning points of r^2 on the segment. */
+        double m0 = d0 * h, m1 = d1 * h;
+        double a = 6 * k0 + 3 * m0 - 6 * k1 + 3 * m1;
+        double b = -6 * k0 - 4 * m0 + 6 * k1 - 2 * m1;
+        double c = m0;
+        double t[2];
+        int nt = 0;
+        if (fabs(a) < 1e-12 * (fabs(b) + fabs(c) + 1e-300)) {
+            if (b != 0)
+                t[nt++] = -c / b;
+        } else {
+            double disc = b * b - 4 * a * c;
+            if (disc >= 0) {
+                double q = sqrt(disc);
+                t[nt++] = (-b - q) / (2 * a);
+                t[nt++] = (-b + q) / (2 * a);
+            }
+        }
+        for (int j = 0; j < nt; j++) {
+            double u = t[j];
+            if (!(u >= 0 && u <= 1))
+                continue;
+            double u2 = u * u, u3 = u2 * u;
+            double r2 = (2 * u3 - 3 * u2 + 1) * k0 + (u3 - 2 * u2 + u) * m0 +
+                        (-2 * u3 + 3 * u2) * k1 + (u3 - u2) * m1;
+            rmax = fmax(rmax, sqrt(fmax(r2, 0)));
+        }
+    }
+    return rmax;
+}
+
 /* The object bounds used by min_extent/max_extent: world-space box of
 ** the simple primitives, unions of CSG children. False (and POV-Ray's
 ** infinite box, +-1e10) when the parser cannot bound 'o' itself. */
 static bool object_bounds(const iris_object *o, vec3 *lo, vec3 *hi)
 {
     vec3 a, b;
+    const pp_obj *po = (const pp_obj *)o;
+    if (po->has_box) {
+        *lo = po->box_lo;
+        *hi = po->box_hi;
+        return true;
+    }
     switch (o->kind) {
-    case IRIS_OBJ_SPHERE:
-        a = v3_add(o->u.sphere.centre, v3(-o->u.sphere.radius,
-                   -o->u.sphere.radius, -o->u.sphere.radius));
-        b = v3_add(o->u.sphere.centre, v3(o->u.sphere.radius,
-                   o->u.sphere.radius, o->u.sphere.radius));
+    case IRIS_OBJ_SPHERE: {
+        double r = o->u.sphere.radius, sc;
+        if (o->has_transform &&
+            (sc = similarity_scale(&o->transform)) > 0) {
+            vec3 c = xf_point(&o->transform, o->u.sphere.centre);
+            r *= sc;
+            *lo = v3_sub(c, v3(r, r, r));
+            *hi = v3_add(c, v3(r, r, r));
+            return true;
+        }
+        a = v3_add(o->u.sphere.centre, v3(-r, -r, -r));
+        b = v3_add(o->u.sphere.centre, v3(r, r, r));
         break;
+    }
     case IRIS_OBJ_BOX:
         a = v3_min(o->u.box.lo, o->u.box.hi);
         b = v3_max(o->u.box.lo, o->u.box.hi);
         break;
-    case IRIS_OBJ_CYLINDER: {
-        double r = o->u.cylinder.radius;
-        a = v3_sub(v3_min(o->u.cylinder.base, o->u.cylinder.cap), v3(r, r, r));
-        b = v3_add(v3_max(o->u.cylinder.base, o->u.cylinder.cap), v3(r, r, r));
+    case IRIS_OBJ_CYLINDER:
+        axial_bounds(o, o->u.cylinder.base, o->u.cylinder.cap,
+                     o->u.cylinder.radius, lo, hi);
+        return true;
+    case IRIS_OBJ_CONE:
+        axial_bounds(o, o->u.cone.base, o->u.cone.cap,
+                     fmax(o->u.cone.base_radius, o->u.cone.cap_radius),
+                     lo, hi);
+        return true;
+    case IRIS_OBJ_DISC: {
+        /* Disc::Compute_BBox: [-r, r]^2 x [-0.001, 0.001] in the disc's
+        ** frame (normal on z, the same rotation as a cylinder's axis). */
+        vec3 n = o->u.disc.normal, c = o->u.disc.centre;
+        double nl = v3_len(n);
+        if (nl > 0)
+            n = v3_scale(n, POV_SMALL_TOLERANCE / nl);
+        axial_bounds(o, v3_sub(c, n), v3_add(c, n), o->u.disc.radius,
+                     lo, hi);
+        return true;
+    }
+    case IRIS_OBJ_POLYGON: {
+        /* Polygon::Compute_BBox: the transformed vertices' box, a flat
+        ** side widened to +-0.001. */
+        int n = o->u.polygon.n_points;
+        if (n < 1)
+            break;
+        *lo = v3(1e30, 1e30, 1e30);
+        *hi = v3(-1e30, -1e30, -1e30);
+        for (int i = 0; i < n; i++) {
+            vec3 p = o->u.polygon.points[i];
+            if (o->has_transform)
+                p = xf_point(&o->transform, p);
+            *lo = v3_min(*lo, p);
+            *hi = v3_max(*hi, p);
+        }
+        double *l = &lo->x, *h = &hi->x;
+        for (int k = 0; k < 3; k++)
+            if (fabs(h[k] - l[k]) < POV_SMALL_TOLERANCE) {
+                l[k] -= POV_SMALL_TOLERANCE;
+                h[k] += POV_SMALL_TOLERANCE;
+            }
+        return true;
+    }
+    case IRIS_OBJ_SUPERELLIPSOID:
+        /* Superellipsoid::Compute_BBox: +-1.0001 whatever e and n are */
+        a = v3(-1.0001, -1.0001, -1.0001);
+        b = v3(1.0001, 1.0001, 1.0001);
+        break;
+    case IRIS_OBJ_SOR: {
+        double y0, y1;
+        double r = sor_radius(o->u.lathe.points, o->u.lathe.n_points,
+                              &y0, &y1);
+        if (o->u.lathe.n_points < 4)
+            goto unknown;
+        a = v3(-r, y0, -r);
+        b = v3(r, y1, r);
         break;
     }
-    case IRIS_OBJ_CONE: {
-        double r = fmax(o->u.cone.base_radius, o->u.cone.cap_radius);
-        a = v3_sub(v3_min(o->u.cone.base, o->u.cone.cap), v3(r, r, r));
-        b = v3_add(v3_max(o->u.cone.base, o->u.cone.cap), v3(r, r, r));
+    case IRIS_OBJ_SPHERE_SWEEP: {
+        /* SphereSweep::Compute_BBox in 3.7: every control sphere, its
+        ** radius doubled for a cubic_spline (Catmull-Rom) sweep, which
+        ** can overshoot them. */
+        int n = o->u.sphere_sweep.n_spheres;
+        double f = o->u.sphere_sweep.spline == 2 ? 2 : 1;
+        if (n < 1)
+            goto unknown;
+        a = v3(1e30, 1e30, 1e30);
+        b = v3(-1e30, -1e30, -1e30);
+        for (int i = 0; i < n; i++) {
+            double r = f * o->u.sphere_sweep.radii[i];
+            vec3 c = o->u.sphere_sweep.centres[i];
+            a = v3_min(a, v3_sub(c, v3(r, r, r)));
+            b = v3_max(b, v3_add(c, v3(r, r, r)));
+        }
         break;
     }
     case IRIS_OBJ_TORUS: {
@@ -313,6 +535,7 @@ static bool object_bounds(const iris_object *o, vec3 *lo, vec3 *hi)
         return known;
     }
     default:
+    unknown:
         *lo = v3(-1e10, -1e10, -1e10);
         *hi = v3(1e10, 1e10, 1e10);
         return false;
@@ -328,6 +551,11 @@ static bool object_bounds(const iris_object *o, vec3 *lo, vec3 *hi)
         *hi = v3_max(*hi, p);
     }
     return true;
+}
+
+bool pp_object_bounds(const iris_object *o, vec3 *lo, vec3 *hi)
+{
+    return object_bounds(o, lo, hi);
 }
 
 static const iris_object *object_arg(pp_state *ps)
@@ -459,6 +687,13 @@ static pp_value colour_body(pp_state *ps)
         case T_BLUE: c.v[2] = pp_float(ps); started = true; break;
         case T_FILTER: c.v[3] = pp_float(ps); started = true; break;
         case T_TRANSMIT: c.v[4] = pp_float(ps); started = true; break;
+        case T_ALPHA:
+            /* POV-Ray 3.1's colour component: 3.7 warns "Keyword ALPHA
+            ** discontinued. Use FILTER instead." and reads it as filter */
+            pp_warning(ps, &at, "'alpha' is discontinued: read as 'filter'");
+            c.v[3] = pp_float(ps);
+            started = true;
+            break;
         case T_SRGB: srgb = true; terms = 3; break;
         case T_SRGBF: srgb = true; terms = 4; break;
         case T_SRGBT: srgb = true; terms = -4; break;
@@ -477,7 +712,10 @@ static pp_value colour_body(pp_state *ps)
                 pp_value e = expr_cond(ps);
                 need_numeric(ps, &at, &e);
                 if (e.dim == 1) {
-                    c.v[0] = c.v[1] = c.v[2] = e.v[0];
+                    /* POV-Ray promotes a float to all five components:
+                    ** 'color 0.8' filters and transmits 0.8 */
+                    for (int i = 0; i < 5; i++)
+                        c.v[i] = e.v[0];
                 } else {
                     for (int i = 0; i < e.dim && i < 5; i++)
                         c.v[i] = e.v[i];
@@ -593,6 +831,7 @@ static __attribute__((noinline)) bool written(pp_state *ps,
 /* Reads the indices of an array reference; the '[' is next. */
 pp_value pp_array_element(pp_state *ps, const pp_token *at, pp_array *arr)
 {
+again:;
     long idx = 0;
     for (int d = 0; d < arr->ndim; d++) {
         pp_expect(ps, T_LBRACKET, "'['");
@@ -608,6 +847,12 @@ pp_value pp_array_element(pp_state *ps, const pp_token *at, pp_array *arr)
     if (v.kind == V_NONE)
         pp_error(ps, at, "array element used before it was given a value");
     ps->elem_slot = &arr->items[idx];
+    /* an array held in an array: A[i][j] goes on into it */
+    if (v.kind == V_ARRAY && pp_accept(ps, T_LBRACKET)) {
+        pp_unget(ps);
+        arr = v.u.arr;
+        goto again;
+    }
     return v;
 }
 
@@ -616,15 +861,18 @@ static pp_value call_fn(pp_state *ps, const iris_fn *fn)
 {
     double args[64];
     int n = 0;
+    /* exactly as many arguments as the function takes, commas optional
+    ** (POV-Ray: one too many stops at its ',', one too few at the ')') */
+    int want = pp_fn_arity(fn);
     lparen(ps);
-    if (!pp_accept(ps, T_RPAREN)) {
-        do {
-            double a = pp_float(ps);
-            if (n < 64)
-                args[n++] = a;
-        } while (pp_accept(ps, T_COMMA));
-        rparen(ps);
+    for (int i = 0; i < want; i++) {
+        if (i > 0)
+            comma(ps);
+        double a = pp_float(ps);
+        if (n < 64)
+            args[n++] = a;
     }
+    rparen(ps);
     if (fn->n_results > 1) {
         pp_value v;
         memset(&v, 0, sizeof v);
@@ -929,16 +1177,8 @@ static pp_value factor(pp_state *ps)
             pp_error(ps, &at, "rand: %g is not a stream made by seed()", s);
         return fval(pov_rand(&ps->rng[i]));
     }
-    case T_DEFINED: {
-        lparen(ps);
-        ps->no_expand++;
-        pp_next(ps);
-        ps->no_expand--;
-        bool d = ps->tok.kind > T_KW_FIRST ||
-                 (ps->tok.kind == T_IDENT && ps->tok.val.kind != V_NONE);
-        rparen(ps);
-        return fval(d);
-    }
+    case T_DEFINED:
+        return fval(pp_is_defined(ps));
     case T_DIMENSIONS: case T_DIMENSION_SIZE: {
         lparen(ps);
         pp_next(ps);

@@ -98,6 +98,28 @@ static int args(fnc *c)
     return n;
 }
 
+/* The arguments internal(N) takes, N = 0..78 (x, y, z and the
+** parameters of functions.inc's f_* names): measured with POV-Ray 3.7.0,
+** which accepts a call of function { internal(N) } with exactly this many
+** and stops on any other count. */
+static const unsigned char internal_arity[] = {
+    8, 8, 8, 8, 5, 5, 8, 7, 5, 4, 7, 4, 4, 4, 4, 9, 9, 6, 4, 7,   /* 0 */
+    6, 9, 4, 4, 13, 10, 10, 4, 4, 9, 4, 6, 7, 6, 9, 4, 4, 7, 4, 9, /* 20 */
+    8, 4, 4, 4, 7, 4, 6, 3, 4, 4, 10, 8, 9, 4, 4, 4, 6, 3, 9, 9,  /* 40 */
+    7, 4, 8, 7, 9, 4, 7, 10, 5, 3, 5, 6, 4, 4, 5, 9, 3, 3, 4,     /* 60 */
+};
+
+int pp_fn_arity(const iris_fn *fn)
+{
+    if (fn->n_code >= 1 && fn->code[0].op == IRIS_FN_SPLINE)
+        return 1;
+    if (fn->n_code >= 1 && fn->code[0].op == IRIS_FN_INTERNAL &&
+        fn->code[0].nargs == 0 && fn->code[0].arg >= 0 &&
+        fn->code[0].arg < (int)sizeof internal_arity)
+        return internal_arity[fn->code[0].arg];
+    return fn->n_params;
+}
+
 static int builtin_of(int k, int *arity)
 {
     *arity = 1;
@@ -264,6 +286,11 @@ static void cfactor(fnc *c)
         pp_value v = at.val;
         if (v.kind == V_FUNCTION) {
             int n = args(c);
+            int takes = pp_fn_arity(v.u.fn);
+            if (n != takes)
+                pp_error(ps, &at, "invalid number of parameters in the call "
+                         "of '%.*s': %d supplied, %d required", (int)at.len,
+                         pp_tok_text(ps, &at), n, takes);
             emit(c, IRIS_FN_CALL, 0, n, 0, 1 - n);
             c->code[c->n - 1].callee = v.u.fn;
             /* F(x,y,z).red and friends of pigment functions evaluate the

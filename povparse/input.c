@@ -251,12 +251,28 @@ void pp_open_file(pp_state *ps, const char *path, bool is_include,
 }
 
 /* Reports the innermost #if/#while/... still open when a frame ends. */
+/* The end of the file came before the #end of 'c'. Located as POV-Ray
+** locates its "End of file reached but #end expected": at the file's
+** last token (its last non-blank character here), on the line POV-Ray
+** names; the message says which directive is open. */
 static _Noreturn void missing_end(pp_state *ps, const pp_cond *c)
 {
     static const char *const names[] = { "#if", "#else", "#while", "#for",
                                           "#switch", "#macro" };
-    pp_error_at(ps, c->file, c->off, 1, "%s without a matching #end",
-                names[c->kind]);
+    uint32_t file = ps->frames[ps->n_frames - 1].file;
+    const pp_file *f = &ps->files[file];
+    size_t end = f->len;
+    while (end > 0 && (f->text[end - 1] == ' ' || f->text[end - 1] == '\t' ||
+                       f->text[end - 1] == '\n' || f->text[end - 1] == '\r'))
+        end--;
+    pp_token at;
+    memset(&at, 0, sizeof at);
+    at.file = c->file;
+    at.off = c->off;
+    iris_loc open = pp_loc(ps, &at);
+    pp_error_at(ps, file, (uint32_t)(end > 0 ? end - 1 : 0), 1,
+                "end of file reached, but the %s at line %u has no #end",
+                names[c->kind], open.line);
 }
 
 void pp_raw(pp_state *ps, pp_token *t)

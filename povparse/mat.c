@@ -1725,8 +1725,17 @@ iris_finish *pp_finish(pp_state *ps, const iris_finish *base)
             break;
         case T_ROUGHNESS: {
             double r = pp_float(ps);
-            if (r <= 0)
-                pp_error(ps, &at, "roughness must be > 0");
+            if (r < 0)
+                pp_error(ps, &at, "roughness must be >= 0");
+            /* POV-Ray 3.7 keeps 1/roughness as the highlight's exponent
+            ** and leaves a 0 uninverted with the warning "Zero roughness
+            ** used.": an exponent of 0, a flat highlight wherever the
+            ** half vector faces the surface. An infinite roughness gives
+            ** that exponent (1/r) here and in the albedo form above. */
+            if (r == 0) {
+                pp_warning(ps, &at, "Zero roughness used.");
+                r = INFINITY;
+            }
             f->roughness = r;
             break;
         }

@@ -90,12 +90,50 @@ void pp_light_transform(iris_light *l, const iris_transform *xf)
     l->axis2 = xf_dir(xf, l->axis2);
 }
 
-/* Applies 'xf' to 'o', its texture, its children and its lights. */
-static void transform_rec(pp_state *ps, iris_object *o,
-                          const iris_transform *xf, bool textures)
+/*
+** POV-Ray's Box::Scale and Box::Translate move a box's corners while it
+** has no transform yet (no rotate, matrix or transform{} so far),
+** ordering them per axis, instead of starting a transform. The box looks
+** the same, but a negative scale then does not mirror the box's own
+** space, which its uv mapping reads (Box::UVCoord): every face keeps its
+** place in the unfolded cube. 'xf' is one scale or translate. Returns
+** false when it cannot be folded so (the caller composes it).
+*/
+static bool box_fold(iris_object *o, const iris_transform *xf)
 {
-    xf_compose(&o->transform, &o->transform, xf);
-    o->has_transform = true;
+    if (o->kind != IRIS_OBJ_BOX || o->has_transform)
+        return false;
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            if (i != j && xf->m[i][j] != 0.0)
+                return false;
+    vec3 a = xf_point(xf, o->u.box.lo), b = xf_point(xf, o->u.box.hi);
+    o->u.box.lo = v3_min(a, b);
+    o->u.box.hi = v3_max(a, b);
+    return true;
+}
+
+/* Applies 'xf' to 'o', its texture, its children and its lights. 'fold':
+** 'xf' is a scale or translate, which a box may take into its corners. */
+static void transform_rec(pp_state *ps, iris_object *o,
+                          const iris_transform *xf, bool textures, bool fold)
+{
+    if (!(fold && box_fold(o, xf))) {
+        xf_compose(&o->transform, &o->transform, xf);
+        o->has_transform = true;
+    }
+    pp_obj *po = (pp_obj *)o;
+    if (po->has_box) { /* POV-Ray's Recompute_BBox */
+        vec3 a = po->box_lo, b = po->box_hi;
+        po->box_lo = v3(1e30, 1e30, 1e30);
+        po->box_hi = v3(-1e30, -1e30, -1e30);
+        for (int i = 0; i < 8; i++) {
+            vec3 p = xf_point(xf, v3(i & 1 ? b.x : a.x, i & 2 ? b.y : a.y,
+                                     i & 4 ? b.z : a.z));
+            po->box_lo = v3_min(po->box_lo, p);
+            po->box_hi = v3_max(po->box_hi, p);
+        }
+    }
     if (o->interior && o->interior->n_media > 0)
         o->interior = pp_interior_transform(ps, o->interior, xf);
     if (textures) {
@@ -106,11 +144,11 @@ static void transform_rec(pp_state *ps, iris_object *o,
     }
     if (is_csg(o))
         for (int i = 0; i < o->u.csg.n_children; i++)
-            transform_rec(ps, o->u.csg.children[i], xf, textures);
+            transform_rec(ps, o->u.csg.children[i], xf, textures, fold);
     for (int i = 0; i < o->n_clipped_by; i++)
-        transform_rec(ps, o->clipped_by[i], xf, textures);
+        transform_rec(ps, o->clipped_by[i], xf, textures, fold);
     if (o->bounded_by)
-        transform_rec(ps, o->bounded_by, xf, textures);
+        transform_rec(ps, o->bounded_by, xf, textures, fold);
     if (o->kind == IRIS_OBJ_BLOB)
         for (int i = 0; i < o->u.blob.n_components; i++)
             if (o->u.blob.components[i].texture)
@@ -129,15 +167,16 @@ static void transform_rec(pp_state *ps, iris_object *o,
     for (pp_light_node *l = ((pp_obj *)o)->lights; l; l = l->next) {
         pp_light_transform(l->light, xf);
         if (l->light->looks_like)
-            transform_rec(ps, l->light->looks_like, xf, textures);
+            transform_rec(ps, l->light->looks_like, xf, textures, fold);
         if (l->light->projected_through)
-            transform_rec(ps, l->light->projected_through, xf, textures);
+            transform_rec(ps, l->light->projected_through, xf, textures,
+                          fold);
     }
 }
 
 void pp_object_transform(pp_state *ps, iris_object *o, const iris_transform *xf)
 {
-    transform_rec(ps, o, xf, true);
+    transform_rec(ps, o, xf, true, false);
 }
 
 /* Adds 'c' to CSG node 'o'. */
@@ -381,8 +420,9 @@ static bool object_mod_item(pp_state *ps, iris_object *o)
     case T_NO_BUMP_SCALE: pp_bool_opt(ps); return true;
     default: {
         iris_transform x;
+        bool fold = ps->tok.kind == T_SCALE || ps->tok.kind == T_TRANSLATE;
         if (pp_transform_item(ps, &x)) {
-            pp_object_transform(ps, o, &x);
+            transform_rec(ps, o, &x, true, fold);
             return true;
         }
         return false;
@@ -662,6 +702,83 @@ static bool next_is_float(pp_state *ps)
     return f;
 }
 
+/* The texture maps a mesh2's faces with three different texture indices
+** get, numbered after the texture_list (face_blends_add appends them). */
+struct face_blends {
+    iris_texture **t;
+    int n, cap;
+};
+
+/*
+** A face with three textures: POV-Ray shades all three and mixes them by
+** the point's place on the face (Mesh::Determine_Textures), which the
+** renderer does for a FACE_BLEND map of the three (mat_face_weights).
+** The corners 'v', in the mesh's space as the map's pattern (a transform
+** of the mesh moves both), are rounded to float as POV-Ray stores mesh
+** vertices.
+*/
+static iris_texture *face_blend_texture(pp_state *ps, const pp_token *at,
+                                        const vec3 v[3],
+                                        iris_texture *const tex[3])
+{
+    iris_texture *t = pp_texture_new(ps, at);
+    iris_pattern *pat = &t->map_pattern;
+    pat->kind = IRIS_PAT_FACE_BLEND;
+    vec3 c[3];
+    for (int k = 0; k < 3; k++)
+        c[k] = v3((float)v[k].x, (float)v[k].y, (float)v[k].z);
+    pat->vector = c[0];
+    pat->params[0] = c[1].x; pat->params[1] = c[1].y; pat->params[2] = c[1].z;
+    pat->params[3] = c[2].x; pat->params[4] = c[2].y; pat->params[5] = c[2].z;
+    t->n_entries = 3;
+    t->entries = pp_alloc(ps, 3 * sizeof *t->entries);
+    memset(t->entries, 0, 3 * sizeof *t->entries);
+    for (int k = 0; k < 3; k++) {
+        t->entries[k].value = 1.0;
+        t->entries[k].texture = tex[k];
+    }
+    return t;
+}
+
+/* A mesh2 face's FACE_BLEND map of texture_list entries 'tk', kept in
+** 'b'; returns the texture index it will have. */
+static int32_t face_blend(pp_state *ps, const pp_token *at,
+                          const iris_mesh_data *m, int face,
+                          const int32_t tk[3], struct face_blends *b)
+{
+    vec3 v[3];
+    iris_texture *tex[3];
+    for (int k = 0; k < 3; k++) {
+        v[k] = m->vertices[m->tri_vertices[3 * face + k]];
+        tex[k] = m->textures[tk[k]];
+    }
+    iris_texture *t = face_blend_texture(ps, at, v, tex);
+    if (b->n == b->cap) {
+        int nc = b->cap ? 2 * b->cap : 16;
+        iris_texture **nt = pp_alloc(ps, (size_t)nc * sizeof *nt);
+        if (b->n)
+            memcpy(nt, b->t, (size_t)b->n * sizeof *nt);
+        b->t = nt;
+        b->cap = nc;
+    }
+    b->t[b->n++] = t;
+    return (int32_t)(m->n_textures + b->n - 1);
+}
+
+/* Appends the face maps to the mesh's textures. */
+static void face_blends_add(pp_state *ps, iris_mesh_data *m,
+                            const struct face_blends *b)
+{
+    if (b->n == 0)
+        return;
+    iris_texture **nt = pp_alloc(ps, (size_t)(m->n_textures + b->n) *
+                                         sizeof *nt);
+    memcpy(nt, m->textures, (size_t)m->n_textures * sizeof *nt);
+    memcpy(nt + m->n_textures, b->t, (size_t)b->n * sizeof *nt);
+    m->textures = nt;
+    m->n_textures += b->n;
+}
+
 /* mesh2 { vertex_vectors{} normal_vectors{} uv_vectors{} texture_list{}
 **         face_indices{} normal_indices{} uv_indices{} ... } */
 static void mesh2(pp_state *ps, iris_object *o)
@@ -715,6 +832,7 @@ static void mesh2(pp_state *ps, iris_object *o)
             break;
         }
         case T_FACE_INDICES: {
+            struct face_blends blends = { NULL, 0, 0 };
             pp_expect(ps, T_LBRACE, "'{'");
             int n = count(ps, MAX_ITEMS, "face");
             m->n_triangles = n;
@@ -736,9 +854,9 @@ static void mesh2(pp_state *ps, iris_object *o)
                 if (m->tri_texture) /* none: the object's texture */
                     m->tri_texture[i] = -1;
                 /* optional texture indices: one or three, each any
-                ** float expression (mod(I+J, 2)); the first is the face's
-                ** texture (the other two blend it per vertex in POV-Ray,
-                ** which iris does not) */
+                ** float expression (mod(I+J, 2)); three different ones
+                ** blend across the face (face_blend) */
+                int32_t tk[3] = { -1, -1, -1 };
                 for (int k = 0; k < 3; k++) {
                     pp_accept(ps, T_COMMA);
                     if (!next_is_float(ps))
@@ -750,12 +868,18 @@ static void mesh2(pp_state *ps, iris_object *o)
                     if (!(tf >= 0) || tf >= m->n_textures)
                         pp_error(ps, &tt, "texture index %g out of range "
                                  "[0, %d]", tf, m->n_textures - 1);
+                    tk[k] = (int32_t)tf;
                     if (k == 0 && m->tri_texture)
                         m->tri_texture[i] = (int32_t)tf;
                 }
+                if (m->tri_texture && tk[2] >= 0 &&
+                    (tk[1] != tk[0] || tk[2] != tk[0]))
+                    m->tri_texture[i] = face_blend(ps, &vt, m, i, tk,
+                                                   &blends);
             }
             pp_accept(ps, T_COMMA);
             pp_expect(ps, T_RBRACE, "'}' (more faces than the count?)");
+            face_blends_add(ps, m, &blends);
             break;
         }
         case T_NORMAL_INDICES: case T_UV_INDICES: {
@@ -796,6 +920,28 @@ static void mesh2(pp_state *ps, iris_object *o)
             return;
         }
     }
+}
+
+/* texture_list { TEXTURE_ID, TEXTURE_ID, TEXTURE_ID } in a mesh{}
+** triangle with corners 'p': the three blended across it (face_blend).
+** The current token is texture_list. */
+static iris_texture *mesh1_texture_list(pp_state *ps, const vec3 p[3])
+{
+    pp_token at = ps->tok;
+    pp_expect(ps, T_LBRACE, "'{'");
+    iris_texture *tex[3];
+    for (int k = 0; k < 3; k++) {
+        if (k)
+            pp_accept(ps, T_COMMA);
+        pp_next(ps);
+        if (ps->tok.kind != T_IDENT || ps->tok.val.kind != V_TEXTURE)
+            pp_error(ps, &ps->tok, "expected a declared texture (a mesh "
+                     "triangle's texture_list names three)");
+        tex[k] = ps->tok.val.u.tex;
+    }
+    pp_accept(ps, T_COMMA);
+    pp_expect(ps, T_RBRACE, "'}' after three textures");
+    return face_blend_texture(ps, &at, p, tex);
 }
 
 /* mesh { triangle{} smooth_triangle{} ... [inside_vector v] } */
@@ -858,8 +1004,11 @@ static void mesh1(pp_state *ps, iris_object *o)
             pp_next(ps);
             if (ps->tok.kind == T_RBRACE)
                 break;
-            if (ps->tok.kind == T_TEXTURE) {
-                iris_texture *tx = pp_texture(ps);
+            if (ps->tok.kind == T_TEXTURE ||
+                ps->tok.kind == T_TEXTURE_LIST) {
+                iris_texture *tx = ps->tok.kind == T_TEXTURE
+                                       ? pp_texture(ps)
+                                       : mesh1_texture_list(ps, p);
                 if (m->n_textures == tcap) {
                     int nc = tcap ? tcap * 2 : 8;
                     iris_texture **nt = pp_alloc(ps, (size_t)nc * sizeof *nt);
@@ -1532,6 +1681,20 @@ bool pp_starts_object(pp_state *ps)
     return shape_kind(k) >= 0 || k == T_OBJECT;
 }
 
+/* The CSG's own box once its children are read (pp_obj.has_box); left
+** unset when a child is one the parser cannot bound. */
+static void csg_box(iris_object *o)
+{
+    pp_obj *po = (pp_obj *)o;
+    vec3 lo, hi;
+    if (!po->has_box && o->kind != IRIS_OBJ_LIGHT_GROUP &&
+        o->u.csg.n_children > 0 && pp_object_bounds(o, &lo, &hi)) {
+        po->box_lo = lo;
+        po->box_hi = hi;
+        po->has_box = true;
+    }
+}
+
 /* CSG body: objects and light sources, then modifiers. */
 static void csg_body(pp_state *ps, iris_object *o, const pp_token *open)
 {
@@ -1558,6 +1721,7 @@ static void csg_body(pp_state *ps, iris_object *o, const pp_token *open)
                 csg_add(ps, o, c, &cap);
             continue;
         }
+        csg_box(o); /* before the first modifier, as POV-Ray */
         if (object_mod(ps, o))
             continue;
         char buf[80];
@@ -1568,6 +1732,7 @@ static void csg_body(pp_state *ps, iris_object *o, const pp_token *open)
         pp_error(ps, &at, "unexpected %s in CSG (opened at line %u)",
                  pp_tok_name(ps, &at, buf, sizeof buf), pp_loc(ps, open).line);
     }
+    csg_box(o);
     if (o->kind == IRIS_OBJ_DIFFERENCE || o->kind == IRIS_OBJ_INTERSECTION) {
         if (o->u.csg.n_children < 1)
             pp_warning(ps, open, "CSG with no objects");

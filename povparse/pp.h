@@ -244,6 +244,13 @@ typedef struct pp_obj {
     bool uv_mapping;       /* object { uv_mapping ... }: its textures are
                            ** evaluated at <u, v, 0> (POV-Ray's UV_FLAG) */
     bool cutaway;          /* cutaway_textures (CUTAWAY_TEXTURES_FLAG) */
+    /* A CSG's bounding box as POV-Ray keeps it for min_extent/max_extent:
+    ** made from its children's when they are read (Compute_CSG_BBox),
+    ** then every later transform moves its eight corners (the box of a
+    ** rotated union is the box of the rotated box, not of the rotated
+    ** children) */
+    bool has_box;
+    iris_vec3 box_lo, box_hi;
 } pp_obj;
 
 struct pp_state {
@@ -264,6 +271,12 @@ struct pp_state {
     pp_cond *conds;
     int n_conds, cap_conds;
     int include_depth, macro_depth;
+    /* The frame and condition depths (n_frames, n_conds) at which a
+    ** directive's own parameters are being read (#if (...), #case (...),
+    ** #for (...)), 0 when none: no directive runs in the middle of those
+    ** (expr.c's next_directive_closes_if), as '#if (X) #else' must not
+    ** take the #else for an enclosing #if. */
+    int header_frames, header_conds;
 
     /* Tokens: up to four tokens of look-ahead can be pushed back */
     pp_token tok;          /* the current token */
@@ -455,12 +468,24 @@ bool pp_float_follows(pp_state *ps);
 iris_colour pp_value_colour(const pp_value *v);
 /* The element A[i]...: the indices follow. */
 pp_value pp_array_element(pp_state *ps, const pp_token *at, pp_array *arr);
+/* A copy of 'arr' and of the arrays it holds (#declare B = A copies). */
+pp_array *pp_array_copy(pp_state *ps, const pp_array *arr);
+/* min_extent/max_extent's box of 'o' as POV-Ray computes it; false (and
+** the box +-1e10) when the parser cannot bound 'o' itself (expr.c). */
+bool pp_object_bounds(const iris_object *o, iris_vec3 *lo, iris_vec3 *hi);
 pp_value pp_string_rvalue(pp_state *ps);
 /* One factor with its .x/.red suffixes, no operators after it. */
 pp_value pp_factor_value(pp_state *ps);
 
 /* ---- fnc.c: function { } compiler --------------------------------- */
-iris_fn *pp_function(pp_state *ps);   /* after 'function' */
+iris_fn *pp_function(pp_state *ps);
+/* The number of arguments a call of 'fn' takes, as POV-Ray counts them:
+** 1 for a spline function, functions.inc's for internal(N), else its
+** parameters (fnc.c). */
+int pp_fn_arity(const iris_fn *fn);
+/* '(' Name ')' of #ifdef/#ifndef and defined(): whether Name (or an array
+** element Name[i]) has a value (directive.c). */
+bool pp_is_defined(pp_state *ps);   /* after 'function' */
 /* The function pattern of pigment_pattern { pg }: pg's grey level. */
 iris_fn *pp_pigment_grey_fn(pp_state *ps, iris_pigment *pg);
 

@@ -32,6 +32,10 @@ static void array_init(pp_state *ps, pp_array *arr, int d, long base)
             ps->in_vector = true;
             pp_value v = pp_rvalue(ps);
             ps->in_vector = iv;
+            /* an array named in the initialiser is copied, as POV-Ray
+            ** copies an identifier's value */
+            if (v.kind == V_ARRAY)
+                v.u.arr = pp_array_copy(ps, v.u.arr);
             arr->items[base + i] = v;
         }
     }
@@ -39,6 +43,19 @@ static void array_init(pp_state *ps, pp_array *arr, int d, long base)
     pp_expect(ps, T_RBRACE, "'}' (the initialiser has more elements than "
               "the array)");
     pp_leave(ps);
+}
+
+pp_array *pp_array_copy(pp_state *ps, const pp_array *arr)
+{
+    pp_array *c = pp_salloc(ps, sizeof *c);
+    *c = *arr;
+    c->items = pp_salloc(ps, (size_t)arr->n * sizeof *c->items);
+    for (long i = 0; i < arr->n; i++) {
+        c->items[i] = arr->items[i];
+        if (c->items[i].kind == V_ARRAY)
+            c->items[i].u.arr = pp_array_copy(ps, arr->items[i].u.arr);
+    }
+    return c;
 }
 
 /* array '[' n ']' ... [ '{' initialiser '}' ] */
@@ -100,6 +117,11 @@ pp_spline *pp_spline_block(pp_state *ps)
     pp_expect(ps, T_LBRACE, "'{'");
     pp_spline *s = pp_salloc(ps, sizeof *s);
     int cap = 0;
+    /* POV-Ray reads every key's value into one five-component buffer
+    ** and stores all five: a float key is promoted to <v, v> and the
+    ** components a key does not give keep the previous key's (in the
+    ** order written). spline { 0, <1,2,3>, 1, 5 } gives <5,5,3> at 1. */
+    double last[5] = { 0, 0, 0, 0, 0 };
     for (;;) {
         pp_next(ps);
         switch (ps->tok.kind) {
@@ -133,6 +155,12 @@ pp_spline *pp_spline_block(pp_state *ps)
         pp_accept(ps, T_COMMA);
         pp_value v = pp_expr(ps);
         pp_accept(ps, T_COMMA);
+        if (v.dim <= 1) {
+            v.v[1] = v.v[0];
+            v.dim = 2;
+        }
+        for (int k = 0; k < v.dim && k < 5; k++)
+            last[k] = v.v[k];
         if (s->n == cap) {
             int nc = cap ? cap * 2 : 16;
             double *nt = pp_salloc(ps, (size_t)nc * sizeof *nt);
@@ -157,9 +185,7 @@ pp_spline *pp_spline_block(pp_state *ps)
         }
         int same = lo < s->n && s->t[lo] == t ? lo : -1;
         if (same >= 0) {
-            memset(s->p[same], 0, sizeof s->p[same]);
-            for (int k = 0; k < v.dim && k < 5; k++)
-                s->p[same][k] = v.v[k];
+            memcpy(s->p[same], last, sizeof s->p[same]);
             if (v.dim > s->dim)
                 s->dim = v.dim;
             continue;
@@ -171,9 +197,7 @@ pp_spline *pp_spline_block(pp_state *ps)
             i--;
         }
         s->t[i] = t;
-        memset(s->p[i], 0, sizeof s->p[i]);
-        for (int k = 0; k < v.dim && k < 5; k++)
-            s->p[i][k] = v.v[k];
+        memcpy(s->p[i], last, sizeof s->p[i]);
         if (v.dim > s->dim)
             s->dim = v.dim;
         s->n++;

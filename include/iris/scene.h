@@ -93,6 +93,10 @@ enum iris_pattern_kind {
     IRIS_PAT_OBJECT, IRIS_PAT_TILING, IRIS_PAT_PAVEMENT,
     IRIS_PAT_SQUARE, IRIS_PAT_TRIANGULAR, IRIS_PAT_FACETS,
     IRIS_PAT_DENSITY_FILE,     /* image->path the .df3, ->interpolate */
+    IRIS_PAT_FACE_BLEND,       /* a texture map of the three textures of
+                                  a mesh face, blended across it (POV-Ray's
+                                  Mesh::Determine_Textures): the corners
+                                  are 'vector' and params[0..5] */
     IRIS_PAT_COUNT
 };
 

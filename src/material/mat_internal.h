@@ -25,15 +25,33 @@ struct mat_image {
 };
 
 struct mat_ctx {
+    struct mat_ctx_head head;  /* first: material.h's inline helpers */
     const iris_scene *scene;
     int noise_generator;       /* the scene's default, 1..3 */
     int n_waves;               /* number_of_waves */
-    bool legacy_opacity;       /* #version < 3.7 */
     bool quick_colour;         /* quality below 6 (mat_ctx_set_quick_colour) */
     int n_images;
     struct mat_image *images;
     struct objpat_set objpats; /* the objects of object patterns */
 };
+
+/* mat_eval_texture() for the one texture 'tex' (texture.c); the public
+** function (multitex.c) blends the textures of a blob's components. */
+void mat_eval_layers(const struct mat_ctx *ctx, const iris_texture *tex,
+                     const struct mat_point *pt, struct mat_eval *out);
+
+/* The textures of blob 'o' at world point 'p' and their weights (|field|
+** of each component, normalised to sum 1): at most 'max', the heaviest.
+** Returns the count, 0 where no component reaches 'p' (multitex.c). */
+int mat_blob_textures(const iris_object *o, vec3 p,
+                      const iris_texture **tex, double *w, int max);
+
+/* The weights of the three textures of an IRIS_PAT_FACE_BLEND map at
+** world point 'p', as POV-Ray weighs a mesh face's three textures:
+** 1 - Calculate_Smooth_T from each corner, normalised to sum 1 (the
+** barycentric coordinates on the face). Returns their sum, 1. */
+double mat_face_weights(const struct mat_ctx *ctx, const iris_pattern *pat,
+                        vec3 p, double w[3]);
 
 /* Maps world point 'p' to the pattern's space: transform, then warps. */
 vec3 pat_space(const struct mat_ctx *ctx, const iris_pattern *pat, vec3 p);

@@ -26,6 +26,7 @@
 #ifndef IRIS_MATERIAL_MATERIAL_H
 #define IRIS_MATERIAL_MATERIAL_H
 
+#include <math.h>
 #include <stdbool.h>
 #include <stdio.h>
 
@@ -88,9 +89,17 @@ struct mat_eval {
 /*
 ** Evaluates 'tex' at 'pt' into stacks of layers. Blended texture_maps give
 ** up to MAT_MAX_STACKS stacks (past that, the heaviest neighbour wins).
+** On a blob whose components have textures (pt->obj), the stacks are
+** those of the component textures, weighted by their fields (multitex.c).
 */
 void mat_eval_texture(const struct mat_ctx *ctx, const iris_texture *tex,
                       const struct mat_point *pt, struct mat_eval *out);
+
+/* Whether the texture of a hit on primitive 'o' is a blend of several
+** that mat_eval_texture() works out per point (a blob whose components
+** have textures): the hit's own texture pointer then does not tell what
+** the surface is (an opaque one may be blended with a clear one). */
+bool mat_texture_blended(const iris_object *o);
 
 /* Evaluates a pigment at world point 'p'. Returns false where it has no
 ** colour (image_map 'once' outside the image); *out is then clear. */
@@ -101,15 +110,38 @@ bool mat_eval_pigment(const struct mat_ctx *ctx, const iris_pigment *pig,
 vec3 mat_perturb_normal(const struct mat_ctx *ctx, const iris_normal *nrm,
                         const struct mat_point *pt, vec3 n);
 
+/* The first member of every struct mat_ctx (mat_internal.h): what the
+** inline helpers below read, so that they need no call per hit (the
+** three helpers were 1-2 % of a simple scene's eye pass as calls). */
+struct mat_ctx_head {
+    bool legacy_opacity;       /* #version < 3.7 */
+};
+
 /* rgbTransm: per channel rgb*filter + transmit (semantics §3.2). */
-void mat_rgb_transm(const iris_colour *c, double out[3]);
+static inline void mat_rgb_transm(const iris_colour *c, double out[3])
+{
+    out[0] = c->r * c->f + c->t;
+    out[1] = c->g * c->f + c->t;
+    out[2] = c->b * c->f + c->t;
+}
 
 /* POV-Ray's opacity 1 - f - t, or the legacy 1 - (f max(rgb) + t) of
-** scenes older than #version 3.7. */
-double mat_opacity(const struct mat_ctx *ctx, const iris_colour *c);
+** scenes older than #version 3.7. 'ctx' may be NULL (3.7 rules). */
+static inline double mat_opacity(const struct mat_ctx *ctx,
+                                 const iris_colour *c)
+{
+    /* a pointer to a struct converts to one to its first member */
+    const struct mat_ctx_head *h = (const struct mat_ctx_head *)ctx;
+    if (h && h->legacy_opacity)
+        return 1.0 - (c->f * fmax(c->r, fmax(c->g, c->b)) + c->t);
+    return 1.0 - c->f - c->t;
+}
 
 /* POV-Ray's greyscale: 0.297 r + 0.589 g + 0.114 b. */
-double mat_greyscale(const double c[3]);
+static inline double mat_greyscale(const double c[3])
+{
+    return 0.297 * c[0] + 0.589 * c[1] + 0.114 * c[2];
+}
 
 /*
 ** POV-Ray's Fresnel reflectance (ComputeReflectivity type 1) for the

@@ -6,9 +6,10 @@
 **
 ** Kind-specific numbers read from iris_pattern.params[] (the parser's
 ** layout): spiral arms (params[0]); agate_turb (params[0], 0 = POV-Ray's
-** 1.0); quilted control0/control1 (params[0], params[1], both 0 = POV-Ray's
-** 1, 1); crackle form (params[0..2], all 0 = <-1, 1, 0>), metric
-** (params[3], 0 = 2), offset (params[4]), solid (params[5] != 0);
+** 1.0); quilted control0/control1 (params[0], params[1]; the parser
+** sets POV-Ray's 1, 1); crackle form (params[0..2], all 0 = <-1, 1,
+** 0>), metric (params[3], 0 = 2), offset (params[4]), solid (params[5]
+** != 0);
 ** mandel/julia interior type and factor, exterior type and factor
 ** (params[0..3], used when params[5] != 0), exponent (params[6]).
 */
@@ -534,9 +535,9 @@ static double quilt_cubic(double t, double p1, double p2)
 
 vec3 pat_quilt_vector(const iris_pattern *pat, vec3 p)
 {
+    /* the parser sets POV-Ray's defaults, 1 and 1; 0 and 0 are a legal
+    ** choice (a t³ profile), not "unset" */
     double c0 = pat->params[0], c1 = pat->params[1];
-    if (c0 == 0 && c1 == 0)
-        c0 = c1 = 1.0;
     vec3 v = v3(p.x - floor(p.x) - 0.5, p.y - floor(p.y) - 0.5,
                 p.z - floor(p.z) - 0.5);
     return v3_scale(v, quilt_cubic(v3_len(v), c0, c1));

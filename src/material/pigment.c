@@ -471,6 +471,42 @@ static void to_stored(const iris_image_ref *ref, iris_colour *c)
                      : encode_texel(*ch[k]);
 }
 
+/* The weights of texels (ix, iy), (ix-1, iy), (ix, iy-1), (ix-1, iy-1)
+** at fractions (p, q) past texel ix-1, iy-1's centre: bilinear. */
+static void bilinear_weights(double p, double q, double *f0, double *f1,
+                             double *f2, double *f3)
+{
+    *f0 = p * q;
+    *f1 = (1 - p) * q;
+    *f2 = p * (1 - q);
+    *f3 = (1 - p) * (1 - q);
+}
+
+/* The same for interpolate 4, POV-Ray's norm_dist: each texel weighs
+** 1 / its squared distance to the sample, normalised to sum 1. On a
+** texel's centre POV-Ray divides by 0 (NaN); that texel alone here. */
+static void norm_dist_weights(double p, double q, double *f0, double *f1,
+                              double *f2, double *f3)
+{
+    double d[4] = { (1 - p) * (1 - p) + (1 - q) * (1 - q),
+                    p * p + (1 - q) * (1 - q),
+                    (1 - p) * (1 - p) + q * q,
+                    p * p + q * q };
+    double w[4], sum = 0.0;
+    for (int k = 0; k < 4; k++) {
+        if (!(d[k] > 0.0)) {
+            *f0 = k == 0; *f1 = k == 1; *f2 = k == 2; *f3 = k == 3;
+            return;
+        }
+        w[k] = 1.0 / d[k];
+        sum += w[k];
+    }
+    *f0 = w[0] / sum;
+    *f1 = w[1] / sum;
+    *f2 = w[2] / sum;
+    *f3 = w[3] / sum;
+}
+
 /* The image's colour at image coordinates (x, y), interpolated as the
 ** reference asks (POV-Ray's image_colour_at). With 'working' (an
 ** image_map's colours) each texel is first put into the working gamma
@@ -490,12 +526,17 @@ static void sample_at_as(const struct mat_ctx *working,
             to_stored(ref, out);
         return;
     }
-    /* Bilinear over the four texels around the sample (POV-Ray's Interp;
-    ** normalised-distance interpolation uses the same weights here). */
+    /* The four texels around the sample, weighted bilinearly or by
+    ** normalised inverse squared distances (POV-Ray's Interp). */
     x += 0.5;
     y += 0.5;
     int ix = (int)x, iy = (int)y;
     double p = x - ix, qf = y - iy;
+    double f0, f1, f2, f3;
+    if (ref->interpolate == 4)
+        norm_dist_weights(p, qf, &f0, &f1, &f2, &f3);
+    else
+        bilinear_weights(p, qf, &f0, &f1, &f2, &f3);
     iris_colour c0 = texel(mi, img, ref, ix, iy);
     iris_colour c1 = texel(mi, img, ref, ix - 1, iy);
     iris_colour c2 = texel(mi, img, ref, ix, iy - 1);
@@ -512,8 +553,6 @@ static void sample_at_as(const struct mat_ctx *working,
         to_stored(ref, &c2);
         to_stored(ref, &c3);
     }
-    double f0 = p * qf, f1 = (1 - p) * qf, f2 = p * (1 - qf),
-           f3 = (1 - p) * (1 - qf);
     out->r = c0.r * f0 + c1.r * f1 + c2.r * f2 + c3.r * f3;
     out->g = c0.g * f0 + c1.g * f1 + c2.g * f2 + c3.g * f3;
     out->b = c0.b * f0 + c1.b * f1 + c2.b * f2 + c3.b * f3;

@@ -179,7 +179,7 @@ enum iris_status mat_ctx_create(const iris_scene *scene, FILE *log,
         ctx->noise_generator = g >= 1 && g <= 3 ? g : 2;
         if (scene->settings.number_of_waves > 0)
             ctx->n_waves = scene->settings.number_of_waves;
-        ctx->legacy_opacity = scene->version > 0 && scene->version < 3.7;
+        ctx->head.legacy_opacity = scene->version > 0 && scene->version < 3.7;
     }
     struct image_list l = { 0, 0, NULL, NULL, &ctx->objpats, scene, log };
     bool ok = true;
@@ -296,21 +296,29 @@ static const iris_finish *default_finish(void)
 ** (textures/patterns/slopemt_37). Each layer still perturbs the raw
 ** normal.
 */
+static inline void layer_at(const struct mat_ctx *ctx,
+                            const iris_texture *t,
+                            const struct mat_point *ppt, vec3 raw,
+                            struct mat_layer *l)
+{
+    l->valid = mat_eval_pigment(ctx, t->pigment, ppt, &l->pigment);
+    l->finish = t->finish ? t->finish : default_finish();
+    l->n = raw;
+    if (t->normal && !ppt->skip_normals)
+        /* POV-Ray keeps a perturbed normal as it comes, even where it
+        ** tips below the surface (the light then falls on its back). */
+        l->n = mat_perturb_normal(ctx, t->normal, ppt, raw);
+}
+
 static void eval_layer(const struct mat_ctx *ctx, const iris_texture *t,
                        const struct mat_point *pt, struct mat_layer *l,
                        vec3 *pn)
 {
     struct mat_point ppt = *pt;
     ppt.n = *pn;
-    l->valid = mat_eval_pigment(ctx, t->pigment, &ppt, &l->pigment);
-    l->finish = t->finish ? t->finish : default_finish();
-    l->n = pt->n;
-    if (t->normal && !pt->skip_normals) {
-        /* POV-Ray keeps a perturbed normal as it comes, even where it
-        ** tips below the surface (the light then falls on its back). */
-        l->n = mat_perturb_normal(ctx, t->normal, &ppt, pt->n);
+    layer_at(ctx, t, &ppt, pt->n, l);
+    if (t->normal && !pt->skip_normals)
         *pn = l->n;
-    }
 }
 
 static void set_empty(struct mat_eval *e)
@@ -411,6 +419,9 @@ static void eval_average(const struct mat_ctx *ctx, const iris_texture *t,
         w[i] = wi != 0.0 && isfinite(wi) ? fabs(wi) : 1.0;
         total += w[i];
     }
+    /* a mesh face's three textures: weights varying across the face */
+    if (t->map_pattern.kind == IRIS_PAT_FACE_BLEND && n == 3)
+        total = mat_face_weights(ctx, &t->map_pattern, pt->p, w);
     struct mat_point wpt = *pt;
     wpt.p = pat_warp_world(ctx, &t->map_pattern, pt->p);
     for (int i = 0; i < n; i++) {
@@ -464,7 +475,8 @@ static void eval_map(const struct mat_ctx *ctx, const iris_texture *t,
                      const struct mat_point *pt, const struct mat_eval *rest,
                      struct mat_eval *out, int depth, vec3 *pn)
 {
-    if (t->map_pattern.kind == IRIS_PAT_AVERAGE) {
+    if (t->map_pattern.kind == IRIS_PAT_AVERAGE ||
+        t->map_pattern.kind == IRIS_PAT_FACE_BLEND) {
         eval_average(ctx, t, pt, rest, out, depth, pn);
         return;
     }
@@ -584,9 +596,23 @@ static void eval_list(const struct mat_ctx *ctx, const iris_texture *tex,
     }
 }
 
-void mat_eval_texture(const struct mat_ctx *ctx, const iris_texture *tex,
-                      const struct mat_point *pt, struct mat_eval *out)
+/* One texture's layers (mat_eval_texture, in multitex.c, also blends the
+** textures of objects that carry several). */
+void mat_eval_layers(const struct mat_ctx *ctx, const iris_texture *tex,
+                     const struct mat_point *pt, struct mat_eval *out)
 {
+    /* One plain layer, the usual texture, as eval_list() would do it
+    ** without its list walks and point copy (the patterns see the raw
+    ** normal, pt->n, no layer having perturbed it yet): 2 % of a simple
+    ** scene's eye pass */
+    if (tex && !tex->next &&
+        !(tex->map_pattern.kind != IRIS_PAT_NONE && tex->n_entries > 0)) {
+        set_empty(out);
+        layer_at(ctx, tex, pt, pt->n, &out->layers[0]);
+        out->n_layers = 1;
+        out->stacks[0].n = 1;
+        return;
+    }
     vec3 pn = pt->n;
     eval_list(ctx, tex, pt, out, 0, &pn);
 }
@@ -595,24 +621,8 @@ void mat_eval_texture(const struct mat_ctx *ctx, const iris_texture *tex,
 /* Optical helpers                                                      */
 /* ------------------------------------------------------------------ */
 
-void mat_rgb_transm(const iris_colour *c, double out[3])
-{
-    out[0] = c->r * c->f + c->t;
-    out[1] = c->g * c->f + c->t;
-    out[2] = c->b * c->f + c->t;
-}
-
-double mat_opacity(const struct mat_ctx *ctx, const iris_colour *c)
-{
-    if (ctx && ctx->legacy_opacity)
-        return 1.0 - (c->f * fmax(c->r, fmax(c->g, c->b)) + c->t);
-    return 1.0 - c->f - c->t;
-}
-
-double mat_greyscale(const double c[3])
-{
-    return 0.297 * c[0] + 0.589 * c[1] + 0.114 * c[2];
-}
+/* mat_rgb_transm(), mat_opacity() and mat_greyscale() are inline in
+** material.h. */
 
 double mat_fresnel(double cos_i, double n)
 {
@@ -655,7 +665,7 @@ bool mat_layer_reflectivity(const struct mat_layer *layer, double cos_i,
     const double mn[3] = { f->reflection_min.r, f->reflection_min.g,
                            f->reflection_min.b };
     /* Most finishes do not reflect: every branch below then gives 0 (the
-    ** tracer asks for every layer of every hit) */
+    ** tracer asks for the layers whose finish has a reflection) */
     if (mx[0] == 0 && mx[1] == 0 && mx[2] == 0 && mn[0] == 0 && mn[1] == 0 &&
         mn[2] == 0) {
         refl[0] = refl[1] = refl[2] = 0.0;

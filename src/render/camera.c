@@ -37,7 +37,8 @@ static vec3 rotate_about(vec3 p, vec3 axis, double angle)
 ** right and v in [0, 1) upwards. They work with unit right, up and
 ** direction vectors; the lengths only set the aspect ratio.
 */
-static bool angular_ray(const iris_camera *cam, double u, double v, ray *r)
+static bool angular_ray(const iris_camera *cam, double u, double v, ray *r,
+                        double np[2])
 {
     double lr = v3_len(cam->right), lu = v3_len(cam->up);
     vec3 R = unit_or_self(cam->right), U = unit_or_self(cam->up),
@@ -104,6 +105,8 @@ static bool angular_ray(const iris_camera *cam, double u, double v, ray *r)
                    : x0 < 0.0 ? M_PI - asin(y0 / rad) : asin(y0 / rad);
         double th = 1.411269 * rad - 0.09439 * rad * rad * rad +
                     0.25674 * pow(rad, 5);
+        x0 = phi;
+        y0 = th;
         double sx = sin(phi), sy = sin(th), cy = cos(th);
         /* nothing below 45 degrees under the projection axis */
         if (sx * sy < tan(135.0 * deg) * cy)
@@ -121,6 +124,10 @@ static bool angular_ray(const iris_camera *cam, double u, double v, ray *r)
         break;
     }
     }
+    /* where a camera normal{} is evaluated: POV-Ray's x0, y0 as the
+    ** projection left them (angles, or polar coordinates for omnimax) */
+    np[0] = x0;
+    np[1] = y0;
     double len = v3_len(d);
     if (!(len > 0) || !isfinite(len))
         return false;
@@ -138,11 +145,11 @@ bool camera_ray(const iris_camera *cam, int width, int height, double x,
 /*
 ** The camera's normal{} (POV-Ray's CreateCameraRay end): the unit ray
 ** direction perturbed as a surface normal would be, by the pattern
-** evaluated at the image-plane point <x0, y0, 0> (x0, y0 in [-0.5, 0.5]
-** across the image), then normalised again. The normal's own transforms
-** place it on that plane; the camera's transforms do not reach it. No
-** material context: the pattern uses the default noise generator and an
-** image bump_map would read nothing.
+** evaluated at the point <x0, y0, 0> (base_ray's 'np': in [-0.5, 0.5]
+** across the image, angles, or 0 for the mesh camera), then normalised
+** again. The normal's own transforms place it on that plane; the
+** camera's do not reach it. No material context: the pattern uses the
+** default noise generator and an image bump_map would read nothing.
 */
 static void perturb_ray(const iris_camera *cam, double x0, double y0, ray *r,
                         vec3 *raw)
@@ -161,27 +168,27 @@ static void perturb_ray(const iris_camera *cam, double x0, double y0, ray *r,
 }
 
 static bool base_ray(const iris_camera *cam, int width, int height,
-                     double x, double y, ray *r, vec3 *raw);
+                     double x, double y, ray *r, vec3 *raw, double np[2]);
 
 bool camera_ray_raw(const iris_camera *cam, int width, int height, double x,
                     double y, ray *r, vec3 *raw)
 {
-    if (!base_ray(cam, width, height, x, y, r, raw))
+    double np[2] = { 0.0, 0.0 };
+    if (!base_ray(cam, width, height, x, y, r, raw, np))
         return false;
-    if (cam->normal && cam->kind != IRIS_CAM_MESH) {
-        /* POV-Ray's x0, y0 of the perspective and orthographic cameras;
-        ** the angular cameras scale theirs by their angles first, which
-        ** iris does not follow (a camera normal there is rare) */
-        double w = width > 0 ? width : 1, h = height > 0 ? height : 1;
-        perturb_ray(cam, (x + 0.5) / w - 0.5, ((h - 1) - (y - 0.5)) / h - 0.5,
-                    r, raw);
-    }
+    /* the mesh camera leaves np at <0, 0>: POV-Ray's x0 and y0 keep
+    ** their initial 0 there, so its normal{} moves every ray alike */
+    if (cam->normal)
+        perturb_ray(cam, np[0], np[1], r, raw);
     return true;
 }
 
-/* The ray before the camera's normal{}. */
+/* The ray before the camera's normal{}; 'np' gets the point of the
+** image plane where POV-Ray evaluates that normal: x0 and y0 as its
+** CreateCameraRay leaves them, i.e. in [-0.5, 0.5] for the perspective
+** and orthographic cameras, scaled to angles by the angular ones. */
 static bool base_ray(const iris_camera *cam, int width, int height,
-                     double x, double y, ray *r, vec3 *raw)
+                     double x, double y, ray *r, vec3 *raw, double np[2])
 {
     if (cam->kind == IRIS_CAM_MESH) {
         if (!meshcam_ray(cam, width, height, x, y, 0, r))
@@ -195,6 +202,8 @@ static bool base_ray(const iris_camera *cam, int width, int height,
     y -= 0.5;
     double x0 = x / w - 0.5;
     double y0 = ((h - 1) - y) / h - 0.5;
+    np[0] = x0;
+    np[1] = y0;
     vec3 d;
     r->o = cam->location;
     switch (cam->kind) {
@@ -213,6 +222,8 @@ static bool base_ray(const iris_camera *cam, int width, int height,
                    : fx < 0.0 ? M_PI - asin(fy / rad) : asin(fy / rad);
         double angle = cam->angle > 0 ? cam->angle : 180.0;
         double th = rad * angle * M_PI / 360.0;
+        np[0] = phi;
+        np[1] = th;
         vec3 rn = v3_norm(cam->right), un = v3_norm(cam->up),
              dn = v3_norm(cam->direction);
         d = v3_add(v3_add(v3_scale(rn, cos(phi) * sin(th)),
@@ -225,6 +236,8 @@ static bool base_ray(const iris_camera *cam, int width, int height,
         double py = M_PI_2 * (2.0 * ((h - 1) - y) / h - 1.0);
         double ty = fabs(M_PI_2 - fabs(py)) < 1e-10 ? copysign(1e10, py)
                                                      : tan(py);
+        np[0] = px;
+        np[1] = py;
         d = v3_add(v3_add(v3_scale(cam->right, cos(px)),
                           v3_scale(cam->up, ty)),
                    v3_scale(cam->direction, sin(px)));
@@ -234,7 +247,7 @@ static bool base_ray(const iris_camera *cam, int width, int height,
     case IRIS_CAM_CYLINDER:
     case IRIS_CAM_OMNIMAX:
     case IRIS_CAM_SPHERICAL:
-        if (!angular_ray(cam, x / w, ((h - 1) - y) / h, r))
+        if (!angular_ray(cam, x / w, ((h - 1) - y) / h, r, np))
             return false;
         *raw = r->d;
         return true;
@@ -260,5 +273,8 @@ bool camera_ray_numbered(const iris_camera *cam, int width, int height,
     if (!meshcam_ray(cam, width, height, x, y, ray_number, r))
         return false;
     *raw = r->d;
+    /* at <0, 0, 0>, as in camera_ray_raw() */
+    if (cam->normal)
+        perturb_ray(cam, 0.0, 0.0, r, raw);
     return true;
 }

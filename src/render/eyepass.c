@@ -20,6 +20,7 @@
 #include <string.h>
 
 #include "render/camera.h"
+#include "render/camray.h"
 #include "render/eyepass.h"
 #include "render/eyespectrum.h"
 #include "render/focalblur.h"
@@ -47,6 +48,8 @@ struct job {
     const struct tracer *tracer;
     struct trace_ctx *ctx;     /* one per thread */
     struct interior_stack cam_stack;
+    struct cam_pinhole pinhole; /* perspective camera without normal{} */
+    bool has_pinhole;
     bool ortho;
     bool blur;                 /* focal blur (fb) */
     struct focal_blur fb;
@@ -65,6 +68,7 @@ struct job {
     atomic_int tiles_done;
     atomic_int interrupted;
     atomic_int alloc_failed;
+    struct eye_srgb *srgb;     /* legacy gamma: put_pixel's decode */
     struct px **tile_buf;      /* per thread: method 1's tile buffer,
                                   allocated at its first tile */
 };
@@ -111,8 +115,11 @@ static bool trace_one(struct job *j, struct trace_ctx *c, double x,
     rgb[3] = 1.0;              /* no ray: transparent, as POV-Ray has it */
     c->spectral = false;
     vec3 raw;
-    if (!camera_ray_numbered(&j->scene->camera, j->opts->width,
-                             j->opts->height, x, y, nr, &r.r, &raw))
+    if (j->has_pinhole ? !cam_pinhole_ray(&j->pinhole, x, y, &r.r, &raw)
+                       : !camera_ray_numbered(&j->scene->camera,
+                                              j->opts->width,
+                                              j->opts->height, x, y, nr,
+                                              &r.r, &raw))
         return false;
     if (j->blur) {
         focal_blur_ray(&j->fb, &j->scene->camera, bx, by, nr, raw, &r.r);
@@ -287,6 +294,61 @@ double eye_aa_gamma_apply(const struct eye_aa_gamma *a, const double c[3],
     return err;
 }
 
+/* g(v) = ((v + 0.055) / 1.055)^2.4, iris_srgb_decode() above 0.04045.
+** Segment i starts at v0 = i / N; with x0 = (v0 + 0.055) / 1.055 and
+** a = 1 / 1.055 its Taylor coefficients are g(v0) = x0^2.4, then
+** 2.4 a x0^1.4, 2.4 * 1.4 / 2 a^2 x0^0.4 and 2.4 * 1.4 * 0.4 / 6 a^3
+** x0^-0.6, each from the one pow() x0^2.4 by divisions by x0. The cubic's
+** error on a segment is at most max|g''''| / 24 d^4 with d < 1/1024 and
+** |g''''| = 2.4 * 1.4 * 0.4 * 0.6 a^4 x^-1.6, largest at the lowest
+** segment used (i = 41, x0 = 0.09008, x0^-1.6 = 47.1): 1.28 * 9.1e-13 =
+** 1.2e-12, relative to g >= g(0.04045) = 0.00313 3.7e-10. The rounding
+** of the coefficients (a few ulps each, on terms no larger than g) and
+** of the Horner sum, and the exact path's own (x rounded twice, then
+** pow() within an ulp: under 1e-15 relative) add under 1e-14:
+** EYE_SRGB_REL = 1e-9 bounds it all with a margin of 2.5. */
+void eye_srgb_init(struct eye_srgb *s)
+{
+    const double a = 1.0 / 1.055;
+    memset(s->coef, 0, sizeof s->coef);
+    for (int i = (int)(0.04045 * EYE_SRGB_N); i < EYE_SRGB_N; i++) {
+        double x0 = ((double)i / EYE_SRGB_N + 0.055) / 1.055;
+        double p = pow(x0, 2.4);
+        s->coef[i][0] = p;
+        s->coef[i][1] = 2.4 * a * p / x0;
+        s->coef[i][2] = 2.4 * 1.4 / 2.0 * a * a * p / (x0 * x0);
+        s->coef[i][3] = 2.4 * 1.4 * 0.4 / 6.0 * a * a * a * p /
+                        (x0 * x0 * x0);
+    }
+    s->at_one = (float)iris_srgb_decode(1.0);
+}
+
+double eye_srgb_cubic(const struct eye_srgb *s, double v)
+{
+    /* v * N is exact (N a power of 2), so is d = v - i / N (Sterbenz:
+    ** i / N <= v < 2 i / N for i >= 1) */
+    int i = (int)(v * EYE_SRGB_N);
+    double d = v - (double)i / EYE_SRGB_N;
+    const double *c = s->coef[i];
+    return c[0] + d * (c[1] + d * (c[2] + d * c[3]));
+}
+
+float eye_srgb_decode(const struct eye_srgb *s, double v)
+{
+    if (v == 1.0)              /* every clipped channel */
+        return s->at_one;
+    if (!(v > 0.04045) || !(v < 1.0))
+        return (float)iris_srgb_decode(v);
+    double y = eye_srgb_cubic(s, v);
+    /* pow()'s value lies in [y (1 - rel), y (1 + rel)]; rounding to float
+    ** is monotonic, so when both ends round alike so does it */
+    float lo = (float)(y * (1.0 - EYE_SRGB_REL));
+    float hi = (float)(y * (1.0 + EYE_SRGB_REL));
+    if (lo == hi)
+        return lo;
+    return (float)iris_srgb_decode(v);
+}
+
 /* The gamma-adjusted colour, fast (with an error bound) or exact. The
 ** fast one costs half of pow(); aa_differs() redoes it exactly when the
 ** bound does not settle the threshold test, so the AA decisions, and the
@@ -402,10 +464,13 @@ static void put_pixel(struct job *j, int x, int y, const double in[NCH],
         /* fmax(col, 0) without libm's call (col is finite here), -0 kept
         ** as glibc's fmax(-0, 0) keeps it */
         double v = col[k] < 0.0 ? 0.0 : col[k];
-        /* from the working gamma space to linear light (§3.9) */
-        if (t->gamma_off)
-            v = iris_srgb_decode(fmin(v, 1.0));
-        else if (t->working_gamma != 1.0)
+        /* from the working gamma space to linear light (§3.9); fmin(v, 1)
+        ** without libm's call (v is finite) */
+        if (t->gamma_off) {
+            px[k] = eye_srgb_decode(j->srgb, v < 1.0 ? v : 1.0);
+            continue;
+        }
+        if (t->working_gamma != 1.0)
             v = pow(v, t->working_gamma);
         px[k] = (float)v;
     }
@@ -710,6 +775,8 @@ enum iris_status eyepass_run(const struct tracer *tr,
     j.jitter = opts->jitter ? fmin(fmax(opts->jitter_amount, 0.0), 1.0) : 0.0;
     j.ortho = scene->camera.kind == IRIS_CAM_ORTHOGRAPHIC ||
               scene->camera.kind == IRIS_CAM_MESH;
+    j.has_pinhole = cam_pinhole_setup(&j.pinhole, &scene->camera,
+                                      opts->width, opts->height);
     if (threads < 1)
         threads = 1;
     trace_containing(tr, scene->camera.location, &j.cam_stack);
@@ -726,9 +793,15 @@ enum iris_status eyepass_run(const struct tracer *tr,
         j.has_blur_cl = eye_origins(tr, &j, &j.blur_cl);
     j.ctx = iris_calloc((size_t)threads, sizeof *j.ctx);
     j.tile_buf = iris_calloc((size_t)threads, sizeof *j.tile_buf);
-    if (!j.ctx || !j.tile_buf) {
+    if (tr->gamma_off) {
+        j.srgb = iris_malloc(sizeof *j.srgb);
+        if (j.srgb)
+            eye_srgb_init(j.srgb);
+    }
+    if (!j.ctx || !j.tile_buf || (tr->gamma_off && !j.srgb)) {
         iris_free(j.ctx);
         iris_free(j.tile_buf);
+        iris_free(j.srgb);
         if (j.blur)
             focal_blur_fini(&j.fb);
         return IRIS_ENOMEM;
@@ -772,6 +845,7 @@ enum iris_status eyepass_run(const struct tracer *tr,
     for (int i = 0; i < threads; i++)
         iris_free(j.tile_buf[i]);
     iris_free(j.tile_buf);
+    iris_free(j.srgb);
     gather_end(&gt);
     if (j.blur)
         focal_blur_fini(&j.fb);

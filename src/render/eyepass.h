@@ -58,4 +58,24 @@ void eye_aa_gamma_init(struct eye_aa_gamma *a, double aa_gamma);
 double eye_aa_gamma_apply(const struct eye_aa_gamma *a, const double c[3],
                           double g[3]);
 
+/*
+** The pixel of a legacy scene without assumed_gamma (§3.9):
+** (float)iris_srgb_decode(v), the same float, in about a fifth of its
+** cost (pow() per channel was 5-7 % of such a scene's eye pass). Over
+** (0.04045, 1) a cubic per 1/EYE_SRGB_N of v gives the value within
+** EYE_SRGB_REL of it (eyepass.c proves the bound); where that interval
+** holds a float rounding boundary, iris_srgb_decode() decides.
+*/
+#define EYE_SRGB_N 1024
+#define EYE_SRGB_REL 1e-9
+struct eye_srgb {
+    float at_one;              /* (float)iris_srgb_decode(1.0) */
+    double coef[EYE_SRGB_N][4]; /* Taylor coefficients at i / EYE_SRGB_N */
+};
+void eye_srgb_init(struct eye_srgb *s);
+float eye_srgb_decode(const struct eye_srgb *s, double v);
+/* The cubic alone (no rounding check), for the test of the bound;
+** v in (0.04045, 1). */
+double eye_srgb_cubic(const struct eye_srgb *s, double v);
+
 #endif

@@ -10,6 +10,10 @@
 */
 #include "config.h"
 
+#include <pthread.h>
+#include <stdatomic.h>
+#include <stdbool.h>
+
 #include "material/noise.h"
 #include "render/jitter.h"
 
@@ -48,13 +52,29 @@ static const float jitter_table[256] = {
     -0.484344, 0.021484, 0.027344, -0.474579, 0.007813, -0.486298, -0.496063, 0.001953
 };
 
+/* The noise hash table's first 4096 entries, all the lookup reads,
+** copied once: four calls into noise.c per subsample (each asking
+** whether the table exists) were 2 % of a simple scene's eye pass. */
+static int hash[4096];
+static atomic_bool hash_ready;
+static pthread_once_t hash_once = PTHREAD_ONCE_INIT;
+
+static void hash_copy(void)
+{
+    for (int i = 0; i < 4096; i++)
+        hash[i] = noise_hash_entry(i);
+    atomic_store_explicit(&hash_ready, true, memory_order_release);
+}
+
 static int lookup(int a, int b)
 {
-    return noise_hash_entry((noise_hash_entry(a & 0xfff) ^ b) & 0xfff) & 0xff;
+    return hash[(hash[a & 0xfff] ^ b) & 0xfff] & 0xff;
 }
 
 void jitter2d(double x, double y, double *jx, double *jy)
 {
+    if (!atomic_load_explicit(&hash_ready, memory_order_acquire))
+        pthread_once(&hash_once, hash_copy);
     *jx = jitter_table[lookup((int)(x * 1021.0), (int)(y * 1019.0))];
     *jy = jitter_table[lookup((int)(x * 1019.0), (int)(y * 1021.0))];
 }

@@ -4,7 +4,7 @@ libiris_core_la_SOURCES += %reldir%/render.c \
 	%reldir%/meshcam.c %reldir%/meshcam.h %reldir%/light.c %reldir%/light.h \
 	%reldir%/query.h %reldir%/trace.c %reldir%/trace.h \
 	%reldir%/plan.c %reldir%/plan.h %reldir%/eyepass.c %reldir%/eyepass.h \
-	%reldir%/jitter.c %reldir%/jitter.h \
+	%reldir%/jitter.c %reldir%/jitter.h %reldir%/camray.h \
 	%reldir%/eyespectrum.c %reldir%/eyespectrum.h \
 	%reldir%/focalblur.c %reldir%/focalblur.h \
 	%reldir%/check_ior.c %reldir%/check_ior.h \

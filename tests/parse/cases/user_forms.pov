@@ -5,7 +5,7 @@
 //   pigment); the dump must show the declared pigment's colour (0.2 0.4
 //   0.6) and the finish's phong 0.7;
 // - mesh2 face_indices whose texture indices are expressions (mod(I, 2))
-//   and three indices per face: faces alternate textures 0 1 0 1;
+//   and three per face: faces alternate textures 0 1 0 1 (blends: 2, 3);
 // - isosurface { ... open max_gradient 3 }: 'open' among the isosurface's
 //   own keywords, so max_gradient after it is still read (dump: open,
 //   max_gradient 3);

@@ -4,8 +4,8 @@
 // which take the object's texture (POV-Ray's Texture = -1). iris read
 // only a plain number or float identifier there and rejected the scene
 // (reverted: "expected '}' (more faces than the count?)").
-// (Three different indices blend the textures across the face in
-// POV-Ray; iris takes the first: not tested here.)
+// (Three different indices blend the textures across the face: scene
+// 187.)
 #version 3.7;
 global_settings { assumed_gamma 1 }
 camera { location <0, 3, -4> look_at <0, 0, 0> angle 50 }
