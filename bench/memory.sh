@@ -9,18 +9,25 @@
 # estimate covers the ball's whole bounding sphere, the beam only part of
 # it), so the script asks for 2.25x the photons it wants emitted.
 #
-#   build=/path/to/build sh bench/memory.sh [-m MAX] [-t THREADS]
+#   build=/path/to/build sh bench/memory.sh [-m MAX] [-t THREADS] [-c]
 #
-# MAX defaults to 1e8 (4.5 GB peak, ~2 CPU-minutes); the photon pass
-# refuses counts that the memory available cannot hold (membudget.h).
+# -c colours the light (rgb <1, 0.8, 0.5>): every path is then chromatic
+# and stores one record per sibling wavelength (three, src/photon/trace.h),
+# where the white light's paths store one white record each.
+#
+# MAX defaults to 1e8 (2.9 GB peak with the white light, ~80 CPU seconds;
+# session 7); the photon pass refuses counts that the memory available
+# cannot hold (membudget.h).
 set -u
 here=$(cd "$(dirname "$0")" && pwd)
 max=100000000
 threads=2
-while getopts m:t: opt; do
+colour=0
+while getopts m:t:c opt; do
     case $opt in
     m) max=$OPTARG ;;
     t) threads=$OPTARG ;;
+    c) colour=1 ;;
     *) exit 2 ;;
     esac
 done
@@ -31,6 +38,15 @@ IRIS="$build/iris"
 tmp=$(mktemp -d) || exit 1
 trap 'rm -rf "$tmp"' EXIT
 scene="$here/caustic_ball.pov"
+light="white light"
+if [ "$colour" = 1 ]; then
+    sed 's/color rgb 1 cylinder/color rgb <1, 0.8, 0.5> cylinder/' "$scene" \
+        >"$tmp/caustic_ball_colour.pov"
+    grep -q 'rgb <1, 0.8, 0.5> cylinder' "$tmp/caustic_ball_colour.pov" ||
+        { echo "memory: the light of $scene was not found"; exit 1; }
+    scene="$tmp/caustic_ball_colour.pov"
+    light="light rgb <1, 0.8, 0.5>"
+fi
 
 # run COUNT: prints "stored peak_kB wall_s cpu_s emitted"
 run() {
@@ -44,7 +60,7 @@ run() {
 
 base=$(run 1000) || { echo "memory: the baseline run failed"; exit 1; }
 base_kb=$(echo "$base" | cut -d' ' -f2)
-echo "scene: caustic_ball.pov 160x120, $threads threads; baseline (1000 photons): $base_kb kB peak RSS; load: $(uptime | sed 's/.*load average: //')"
+echo "scene: caustic_ball.pov ($light) 160x120, $threads threads; baseline (1000 photons): $base_kb kB peak RSS; load: $(uptime | sed 's/.*load average: //')"
 echo "| photons emitted | stored | peak RSS MB | bytes / stored photon | bytes / emitted photon | wall s | CPU s |"
 echo "| ---: | ---: | ---: | ---: | ---: | ---: | ---: |"
 n=100000

@@ -5,11 +5,12 @@
 ** photon, and gather (estimate) queries per second.
 **
 ** Usage: photon_bench [-t THREADS] [-q QUERIES] [-a 1] [-c 1] [-m 0]
-**        scene.pov
+**        [-s 0] scene.pov
 ** (-a 1: query accel, not the photon fast path of sphere-and-plane
 ** scenes, src/photon/fastpath.h; -c 1: evaluate every hit's texture, not
 ** the batch's cache of uniform textures, src/photon/trace.h; -m 0: no
-** material context, see below)
+** material context, see below; -s 0: one wavelength per photon, no
+** sibling wavelengths, src/photon/trace.h)
 ** Prints one line of key=value pairs: shoot_s is the wall time of the
 ** shooting (emission, transport, concatenating the batches), build_s of
 ** the kd-tree build and the automatic radius; photons_per_s_per_thread is
@@ -97,7 +98,7 @@ static unsigned long long map_hash(const struct photon_map *m)
 int main(int argc, char **argv)
 {
     int threads = 1, queries = 100000, accel_only = 0, no_cache = 0;
-    int with_mat = 1;
+    int with_mat = 1, siblings = 1;
     int i = 1;
     for (; i < argc - 1 && argv[i][0] == '-'; i += 2) {
         if (!strcmp(argv[i], "-t"))
@@ -110,10 +111,12 @@ int main(int argc, char **argv)
             no_cache = atoi(argv[i + 1]);
         else if (!strcmp(argv[i], "-m"))
             with_mat = atoi(argv[i + 1]);
+        else if (!strcmp(argv[i], "-s"))
+            siblings = atoi(argv[i + 1]);
     }
     if (i != argc - 1) {
         fprintf(stderr,
-                "usage: photon_bench [-t N] [-q N] [-a 1] [-c 1] [-m 0] "
+                "usage: photon_bench [-t N] [-q N] [-a 1] [-c 1] [-m 0] [-s 0] "
                 "scene.pov\n");
         return 2;
     }
@@ -144,6 +147,7 @@ int main(int argc, char **argv)
     o.mat = mc;
     o.no_fastpath = accel_only != 0;
     o.no_tex_cache = no_cache != 0;
+    o.no_siblings = siblings == 0;
     struct photon_map *m = NULL;
     struct photon_stats st;
     if (photon_map_build(scene, a, &o, &m, &st) != IRIS_OK) {

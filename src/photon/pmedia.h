@@ -5,8 +5,8 @@
 **
 ** Two things POV-Ray 3.7 does with media in its photon pass
 ** (source/core/lighting/photons.cpp, PhotonTrace::ComputeLightedTexture
-** and PhotonMediaFunction::DepositMediaPhotons), done here at the
-** photon's one wavelength:
+** and PhotonMediaFunction::DepositMediaPhotons), done here at each of
+** the photon's sibling wavelengths (trace.h):
 **
 **  1. A photon crossing media loses power by their extinction: Beer-Lambert
 **     along the segment, exp(-integral sigma_t(lambda, s) ds), by weighting
@@ -39,6 +39,7 @@
 
 struct ptrace_combo;
 struct ptrace_out;
+struct ptrace_sibs;
 struct photon_map;
 
 /*
@@ -78,20 +79,23 @@ bool pmedia_scene_wants_photons(const iris_scene *scene);
 ** The photon segment from 'o' along unit 'd' of length 'len', which
 ** started 'depth0' along the photon's path from the light, with the
 ** interiors 'stack' (n_stack, innermost last) around it, at trace level
-** 'level' (1: the segment leaving the light). Returns the photon's power
-** at the segment's end: 'power' times the media's transmittance at
-** 'lambda'. When the photon is past its first bounce (level > 1) and the
-** scene wants media photons, deposits them into 'out' (tagged). '*chroma'
-** is set when the media made the photon's power depend on its wavelength
-** (lambda is then what the deposits carry, otherwise -1: white). Media
-** apply only when every interior on the stack is hollow (POV-Ray's
-** IsHollowRay); the atmosphere's media dim the photon outside objects.
+** 'level' (1: the segment leaving the light). Multiplies each sibling's
+** power in 's' (trace.h: one or more wavelengths on one path) by the
+** media's transmittance at its own wavelength (an 'equal' set is split
+** when the media are not grey). When the photon is past its first
+** bounce (level > 1) and the scene wants media photons, deposits them
+** into 'out' (tagged): at each step one record per sibling at its own
+** wavelength, or one white record of their summed power while the path
+** is not chromatic. '*chroma' is set when the media made the photon's
+** power depend on its wavelength. Media apply only when every interior
+** on the stack is hollow (POV-Ray's IsHollowRay); the atmosphere's media
+** dim the photon outside objects.
 */
-double pmedia_segment(const struct ptrace_combo *c,
-                      const iris_object *const *stack, int n_stack, vec3 o,
-                      vec3 d, double len, double depth0, int level,
-                      double lambda, bool *chroma, double power, rng *r,
-                      struct ptrace_out *out);
+void pmedia_segment(const struct ptrace_combo *c,
+                    const iris_object *const *stack, int n_stack, vec3 o,
+                    vec3 d, double len, double depth0, int level,
+                    struct ptrace_sibs *s, bool *chroma, rng *r,
+                    struct ptrace_out *out);
 
 /* The media photon map: the records and the estimate's parameters. */
 struct pmedia_map {

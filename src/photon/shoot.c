@@ -37,9 +37,9 @@
 ** which gather windows cut through; a random offset per ring; the R2
 ** lattice over Cartesian cells of the target plane: all noisier.)
 **
-** Sibling wavelengths (trace.h): where no interior disperses and there
-** are no media, the photon also carries u + 1/3 and u + 2/3 (mod 1), a
-** third of the power each, along one path (shoot_one).
+** Sibling wavelengths (trace.h): the photon (in media too, pmedia.c)
+** also carries u + 1/3 and u + 2/3 (mod 1), a third of the power each,
+** along one path (shoot_one), until a dispersive interior keeps u alone.
 **
 ** Threads. The rings of all combos are laid end to end and numbered
 ** photon by photon; batches of PHOTON_BATCH consecutive photon indices
@@ -91,6 +91,9 @@ struct combo {
     struct spec_emitter em;
     double flat_emission;      /* !tc.chromatic: the emission at every
                                   lambda (to 1e-12), taken once */
+    int n_sibs;                /* sibling wavelengths a photon carries
+                                  (trace.h): PTRACE_SIBS (media too), 1
+                                  with no_siblings (make_rings) */
     vec3 ctr, axis, a, b;      /* centre; unit axis light->centre or the
                                   light direction; a, b complete a basis */
     vec3 origin;               /* the light's location */
@@ -391,18 +394,19 @@ static double spacing_for(const struct shoot *s)
 
 /* The records an emitted photon stores: PTRACE_SIBS when some combo
 ** shoots sibling wavelengths (trace.h) from a light of chromatic emission,
-** whose every path is chromatic and stores one record per sibling; else
-** 1. A white light's photons turn chromatic only at coloured surfaces,
-** unknown here: if they then store more records than the budget holds,
-** shoot_batch()'s store cap stops the pass with a located error, as for
-** photons that deposit more than once. Media are not known yet
-** (make_rings): they only lower the real count. */
+** whose every path is chromatic and stores one record per sibling (fewer
+** where a dispersive interior keeps one); else 1. A white
+** light's photons turn chromatic only at coloured surfaces, unknown here:
+** if they then store more records than the budget holds, shoot_batch()'s
+** store cap stops the pass with a located error, as for photons that
+** deposit more than once. Media photons (several a photon, one per
+** sibling on a chromatic path) are caught by that cap too. */
 static double sibling_records(const struct shoot *s)
 {
     if (s->opts->no_siblings)
         return 1.0;
     for (int ci = 0; ci < s->n_combos; ci++)
-        if (s->combos[ci].tc.no_dispersion && s->combos[ci].tc.chromatic)
+        if (s->combos[ci].tc.chromatic)
             return PTRACE_SIBS;
     return 1.0;
 }
@@ -544,6 +548,7 @@ static enum iris_status make_rings(struct shoot *s, double spacing)
             struct combo *c = &s->combos[ci];
             combo_grid(c, spacing);
             pmedia_setup(&c->tc.media, s->scene, c->dtheta);
+            c->n_sibs = !s->opts->no_siblings ? PTRACE_SIBS : 1;
             if (!(c->dtheta > 0.0) || !isfinite(c->dtheta))
                 continue;
             /* Guard against absurd photon counts (about 1e9 rings). */
@@ -619,7 +624,9 @@ static double lambda_lattice(int64_t ring, int64_t k_phi, int64_t k_area)
 {
     double x = LATTICE[0] * (double)ring + LATTICE[1] * (double)k_phi +
                LATTICE[2] * (double)k_area;
-    return x - floor(x);
+    /* x >= 0 (the indices are), below 2^63: truncation is floor(), the
+    ** same number without the libm call */
+    return x - (double)(int64_t)x;
 }
 
 /*
@@ -642,6 +649,11 @@ static void cell_uniform(const struct combo *c, const struct ring *rg,
     }
     *ph = -M_PI + rg->dphi * ((double)k_phi + v);
 }
+
+/* The siblings' offsets j/S on the lattice value (k/3 as the division
+** gives it; one sibling reads the first only). */
+static const double SIB_OFFSET[PTRACE_SIBS] = { 0.0, 1.0 / 3.0, 2.0 / 3.0 };
+_Static_assert(PTRACE_SIBS == 3, "SIB_OFFSET lists PTRACE_SIBS offsets");
 
 /* Emits and traces photon 'j' of ring 'rg'. */
 static void shoot_one(const struct shoot *s, const struct ring *rg, int64_t j,
@@ -688,27 +700,32 @@ static void shoot_one(const struct shoot *s, const struct ring *rg, int64_t j,
     if (a < 1e-5)
         return;
     double u = s->u0 + lambda_lattice(rg - s->rings, k_phi, k_area);
-    u -= floor(u);
-    /* Sibling wavelengths u + j/S (trace.h) where the path cannot depend
-    ** on lambda: no dispersive interior, no media (global photons are
-    ** global.c's) */
+    if (u >= 1.0) /* u in [0, 2): u - floor(u), exact (Sterbenz) */
+        u -= 1.0;
+    /* Sibling wavelengths u + j/S (trace.h; global photons are
+    ** global.c's). A light of flat emission gives them one
+    ** power, taken once (the siblings' 'equal' set). */
     struct ptrace_sibs sb;
-    sb.n = c->tc.no_dispersion && !c->tc.media.scene &&
-                   !s->opts->no_siblings
-               ? PTRACE_SIBS
-               : 1;
-    bool any = false;
+    sb.n = c->n_sibs;
     for (int k = 0; k < sb.n; k++) {
-        double uj = u + (double)k / sb.n;
+        double uj = u + SIB_OFFSET[k];
         sb.lambda[k] = spec_sample_uniform(uj < 1.0 ? uj : uj - 1.0);
-        sb.power[k] = rg->cell * a / sb.n *
-                      (c->tc.chromatic ? spec_emitter_eval(&c->em,
-                                                           sb.lambda[k])
-                                       : c->flat_emission);
-        any = any || sb.power[k] > 0.0;
     }
-    if (!any)
-        return;
+    sb.equal = !c->tc.chromatic;
+    if (sb.equal) {
+        sb.power[0] = rg->cell * a / sb.n * c->flat_emission;
+        if (!(sb.power[0] > 0.0))
+            return;
+    } else {
+        bool any = false;
+        for (int k = 0; k < sb.n; k++) {
+            sb.power[k] = rg->cell * a / sb.n *
+                          spec_emitter_eval(&c->em, sb.lambda[k]);
+            any = any || sb.power[k] > 0.0;
+        }
+        if (!any)
+            return;
+    }
     ptrace_photon_sibs(s->w, &c->tc, o, d, &sb, &r, out);
 }
 

@@ -27,11 +27,12 @@
 ** is stored as white (pstore.h): it stands for the whole spectrum, and the
 ** estimate weighs it by the spectrum's mean instead of by one wavelength's
 ** RGB weight, so scenes without dispersion get no colour noise.
-** Sibling wavelengths (trace.h, ptrace_sibs; issue 5): where no interior
-** disperses and there are no media, a photon carries three wavelengths
-** along one path, a spectral roulette weighs each by its own probability
-** over their mean, and a chromatic path stores one record per sibling; a
-** spectral transmittance collapses them to one (sib_collapse).
+** Sibling wavelengths (trace.h, ptrace_sibs; issue 5): a photon
+** carries three wavelengths along one path (media: pmedia.c), a spectral
+** roulette weighs each by its own probability over their mean, a spectral
+** transmittance multiplies each by its own, and a chromatic path stores
+** one record per sibling; a dispersive interior collapses them to one
+** (sib_collapse).
 ** Global photons (c->global; global.c, radiosity{}) take the same path
 ** with Lambertian bounces at diffuse surfaces, by Russian roulette on the
 ** albedo, and are stored from the second diffuse surface on.
@@ -111,6 +112,8 @@ struct psurf {
     bool reflects;
     bool transm_grey;          /* the transmittance is the same at every
                                   wavelength */
+    double transm_sib[PTRACE_SIBS]; /* !transm_grey: the transmittance at
+                                  each sibling's wavelength (eval_surface) */
 };
 
 /* The spectral transmittance f·rho_rgb(lambda) + t of one layer of pigment
@@ -259,15 +262,20 @@ static double reflect_n(const iris_finish *f, const struct fres_query *q,
 ** taken from the batch's cache 'tc' (when not NULL): the same numbers.
 */
 static void eval_surface(const struct ptrace_combo *c, const struct hit *h,
-                         vec3 d, vec3 nf, double lambda,
+                         vec3 d, vec3 nf, const struct ptrace_sibs *sb,
                          const struct fres_query *fq, rng *r,
                          struct ptrace_tex_cache *tc, struct psurf *s)
 {
+    double lambda = sb->lambda[0];
     s->n = nf;
     s->reflects = false;
     s->transm_grey = true;
     const struct ptrace_tex *e =
-        tc && h->texture ? tex_lookup(c, tc, h->texture, nf) : NULL;
+        tc && h->texture &&
+                (h->obj->kind != IRIS_OBJ_BLOB || /* no call per hit */
+                 !mat_texture_blended(h->obj))
+            ? tex_lookup(c, tc, h->texture, nf)
+            : NULL;
     if (e && e->uniform) {
         /* every other field is set from the cache below: the defaults
         ** further down are the other paths' */
@@ -278,6 +286,13 @@ static void eval_surface(const struct ptrace_combo *c, const struct hit *h,
             for (int i = 0; i < e->n_layers; i++)
                 s->transm *= layer_transm(&e->pigment[i], lambda,
                                           &s->transm_grey);
+            for (int j = 1; j < sb->n && !s->transm_grey; j++) {
+                bool g = true;
+                s->transm_sib[j] = 1.0;
+                for (int i = 0; i < e->n_layers; i++)
+                    s->transm_sib[j] *= layer_transm(
+                        &e->pigment[i], sb->lambda[j], &g);
+            }
         }
         s->opacity = e->opacity;
         s->pigment[0] = e->pigment[0].r;
@@ -309,6 +324,10 @@ static void eval_surface(const struct ptrace_combo *c, const struct hit *h,
         if (h->texture && h->texture->pigment)
             col = h->texture->pigment->colour;
         s->transm = layer_transm(&col, lambda, &s->transm_grey);
+        for (int j = 1; j < sb->n && !s->transm_grey; j++) {
+            bool g = true;
+            s->transm_sib[j] = layer_transm(&col, sb->lambda[j], &g);
+        }
         s->opacity = 1.0 - col.f - col.t;
         s->pigment[0] = col.r;
         s->pigment[1] = col.g;
@@ -336,6 +355,14 @@ static void eval_surface(const struct ptrace_combo *c, const struct hit *h,
         if (ev.layers[i].valid)
             t *= layer_transm(&ev.layers[i].pigment, lambda, &s->transm_grey);
     s->transm = t;
+    for (int j = 1; j < sb->n && !s->transm_grey; j++) {
+        bool g = true;
+        s->transm_sib[j] = 1.0;
+        for (int i = st->first; i < st->first + st->n; i++)
+            if (ev.layers[i].valid)
+                s->transm_sib[j] *= layer_transm(&ev.layers[i].pigment,
+                                                 sb->lambda[j], &g);
+    }
     if (st->n > 0 && ev.layers[st->first].valid) {
         const struct mat_layer *top = &ev.layers[st->first];
         s->opacity = mat_opacity(c->mat, &top->pigment);
@@ -373,6 +400,24 @@ static bool allowed(enum iris_tristate obj, enum iris_tristate light)
     return (obj == IRIS_ON && light != IRIS_OFF) ||
            (obj != IRIS_OFF && light == IRIS_ON);
 }
+
+/* Whether a photon of combo 'c' may reflect off / refract through 'obj'
+** (global photons: always). */
+static inline bool refl_allowed(const struct ptrace_combo *c,
+                                const iris_object *obj)
+{
+    return c->global ||
+           allowed(obj->photon_reflection, c->light->photon_reflection);
+}
+
+static inline bool refr_allowed(const struct ptrace_combo *c,
+                                const iris_object *obj)
+{
+    return c->global ||
+           allowed(obj->photon_refraction, c->light->photon_refraction);
+}
+
+_Static_assert(PTRACE_SIBS <= 3, "deposit_sibs sums equal powers as p * n");
 
 #define PTRACE_FIRST_CAP 4096
 
@@ -523,30 +568,93 @@ static double fresnel_n(const iris_object *const *stack,
     return n / top_ior(stack, n_stack, lambda);
 }
 
-/* Keeps sibling 0 alone with the power of all (x n): its wavelength is
-** the photon's lattice value u, uniform on its own, so the expected power
-** at every wavelength is unchanged; its surface evaluation at lambda[0]
-** stays valid (no draw, no new texture evaluation). */
+/*
+** Keeps sibling 0 alone with the power of all (x n), where the path is
+** about to depend on lambda (a dispersive interior). Unbiased: every
+** choice so far was the same for all siblings and each sibling's power is
+** the expectation for its wavelength alone times 1/n (trace.h), so each
+** sibling's marginal is right; sibling 0's wavelength u is uniform on its
+** own (shoot.c), so keeping it with n times its power keeps the expected
+** power at every wavelength. Sibling 0 rather than one drawn uniformly
+** (also unbiased): it is the lattice value of the photon's cell, which
+** spreads neighbouring cells over the spectrum (the dispersed caustic's
+** colour noise, shoot.c), a drawn one would scramble that and take a
+** draw. Its surface evaluation at lambda[0] stays valid.
+*/
 static void sib_collapse(struct ptrace_sibs *s)
 {
     s->power[0] *= (double)s->n;
     s->n = 1;
 }
 
-/* Multiplies the siblings' powers by transmittance 't' (at lambda[0]);
-** one that depends on lambda ('grey_t' false) collapses them first. */
-static void sib_filter(struct ptrace_sibs *s, double t, bool grey_t)
+/* Gives every sibling its own power (an 'equal' set keeps the common one
+** in power[0] only). */
+static void sib_split(struct ptrace_sibs *s)
 {
-    if (!grey_t && s->n > 1)
-        sib_collapse(s);
+    if (s->equal) {
+        for (int j = 1; j < s->n; j++)
+            s->power[j] = s->power[0];
+        s->equal = false;
+    }
+}
+
+/* Multiplies every sibling's power by 'f' (the same at every lambda). */
+static void sib_scale(struct ptrace_sibs *s, double f)
+{
+    if (s->equal) {
+        s->power[0] *= f;
+        return;
+    }
     for (int j = 0; j < s->n; j++)
-        s->power[j] *= t;
+        s->power[j] *= f;
+}
+
+/* The siblings' mean transmittance at surface 'sf' (sf->transm with one
+** sibling or a grey one: the same number). */
+static double sib_transm(const struct psurf *sf, const struct ptrace_sibs *s)
+{
+    if (sf->transm_grey || s->n == 1)
+        return sf->transm;
+    double t = sf->transm;
+    for (int j = 1; j < s->n; j++)
+        t += sf->transm_sib[j];
+    return t / s->n;
+}
+
+/* Multiplies each sibling's power by the transmittance of surface 'sf' at
+** its own wavelength: the expected power of a photon of that wavelength
+** through a coloured filter, no roulette. */
+static void sib_filter(struct ptrace_sibs *s, const struct psurf *sf)
+{
+    if (sf->transm_grey || s->n == 1) {
+        sib_scale(s, sf->transm);
+        return;
+    }
+    sib_split(s);
+    s->power[0] *= sf->transm;
+    for (int j = 1; j < s->n; j++)
+        s->power[j] *= sf->transm_sib[j];
 }
 
 static bool sib_alive(const struct ptrace_sibs *s)
 {
+    if (s->equal)
+        return s->power[0] > 0.0;
     for (int j = 0; j < s->n; j++)
         if (s->power[j] > 0.0)
+            return true;
+    return false;
+}
+
+/* Whether the surface of 'obj' (interior 'in') meets a dispersive medium:
+** its own interior or one the photon is in (the refraction's test). */
+static bool meets_dispersion(const iris_interior *in,
+                             const iris_object *const *stack, int n_stack)
+{
+    if (ior_is_dispersive(in))
+        return true;
+    for (int i = 0; i < n_stack; i++)
+        if (ior_is_dispersive(stack[i]->interior))
             return true;
     return false;
 }
@@ -560,21 +668,29 @@ static void deposit_sibs(struct ptrace_out *out, vec3 p,
 {
     if (!chroma) {
         double sum = s->power[0];
-        for (int j = 1; j < s->n; j++)
-            sum += s->power[j];
+        if (s->equal) {
+            /* p·n is the sum p + p + p to the bit (p + p is exact, then
+            ** one rounding of 3p either way; PTRACE_SIBS <= 3) */
+            sum *= s->n;
+        } else {
+            for (int j = 1; j < s->n; j++)
+                sum += s->power[j];
+        }
         deposit(out, p, sum * factor, -1.0, from);
         return;
     }
-    for (int j = 0; j < s->n && !out->failed; j++)
-        if (s->power[j] > 0.0)
-            deposit(out, p, s->power[j] * factor, s->lambda[j], from);
+    for (int j = 0; j < s->n && !out->failed; j++) {
+        double pj = s->equal ? s->power[0] : s->power[j];
+        if (pj > 0.0)
+            deposit(out, p, pj * factor, s->lambda[j], from);
+    }
 }
 
 void ptrace_photon(const struct pmap_world *w, const struct ptrace_combo *c,
                    vec3 o, vec3 d, double lambda, double power, rng *r,
                    struct ptrace_out *out)
 {
-    struct ptrace_sibs s = { 1, { lambda }, { power } };
+    struct ptrace_sibs s = { 1, true, { lambda }, { power } };
     ptrace_photon_sibs(w, c, o, d, &s, r, out);
 }
 
@@ -583,9 +699,9 @@ void ptrace_photon_sibs(const struct pmap_world *w,
                         struct ptrace_sibs *s, rng *r,
                         struct ptrace_out *out)
 {
-    /* media and global photons take one wavelength (pmedia.c and the
-    ** diffuse bounces read one); the shooter gives them one */
-    if (s->n > 1 && (c->media.scene || c->global || !c->no_dispersion))
+    /* global photons take one wavelength (the diffuse bounces read
+    ** one); the shooter gives them one. Media carry siblings (pmedia.c) */
+    if (s->n > 1 && c->global)
         sib_collapse(s);
     double lambda = s->lambda[0]; /* the one that decides eval_surface() */
     /* the media the photon is in, innermost last, with the top-level
@@ -619,9 +735,8 @@ void ptrace_photon_sibs(const struct pmap_world *w,
         /* Media on the segment just crossed: extinction, media photons
         ** (pmedia.h; nothing when the scene has no media) */
         if (c->media.scene)
-            s->power[0] = pmedia_segment(c, stack, n_stack, o, d, h.t,
-                                         depth, level, lambda, &chroma,
-                                         s->power[0], r, out);
+            pmedia_segment(c, stack, n_stack, o, d, h.t, depth, level, s,
+                           &chroma, r, out);
         depth += h.t;
         /* Absorption in the medium just crossed */
         if (n_stack > 0) {
@@ -630,12 +745,11 @@ void ptrace_photon_sibs(const struct pmap_world *w,
                           !(fi->fade_colour.r == fi->fade_colour.g &&
                             fi->fade_colour.g == fi->fade_colour.b);
             if (tinted && s->n > 1) {
+                sib_split(s);
                 for (int j = 0; j < s->n; j++)
                     s->power[j] *= fade_factor(fi, h.t, s->lambda[j]);
             } else {
-                double f = fade_factor(fi, h.t, lambda);
-                for (int j = 0; j < s->n; j++)
-                    s->power[j] *= f;
+                sib_scale(s, fade_factor(fi, h.t, lambda));
             }
             chroma = chroma || tinted;
         }
@@ -646,9 +760,14 @@ void ptrace_photon_sibs(const struct pmap_world *w,
             return;
         bool entering = v3_dot(d, h.n) < 0.0;
         vec3 nf = entering ? h.n : v3_neg(h.n); /* facing the photon */
+        /* a dispersive medium on either side: n(lambda) decides the path
+        ** (and a fresnel reflection's strength) from here on */
+        if (!c->no_dispersion && s->n > 1 &&
+            meets_dispersion(h.interior, stack, n_stack))
+            sib_collapse(s);
         struct psurf sf;
         struct fres_query fq = { stack, tops, n_stack };
-        eval_surface(c, &h, d, nf, lambda, &fq, r, out->tex, &sf);
+        eval_surface(c, &h, d, nf, s, &fq, r, out->tex, &sf);
         const iris_finish *fin = sf.fin;
 
         /* Global photons: the light's power lands where the photon first
@@ -679,10 +798,11 @@ void ptrace_photon_sibs(const struct pmap_world *w,
                 return;
         }
 
-        double transm = sf.transm;
+        /* the siblings' mean: > 0 when any of them passes */
+        double transm = sib_transm(&sf, s);
         if (obj->photon_pass_through) {
             /* Straight on, filtered; POV-Ray counts the level too */
-            sib_filter(s, transm, sf.transm_grey);
+            sib_filter(s, &sf);
             chroma = chroma || !sf.transm_grey;
             o = h.p;
             continue;
@@ -690,11 +810,10 @@ void ptrace_photon_sibs(const struct pmap_world *w,
         vec3 n_geom = nf;
         nf = sf.n; /* the perturbed normal bends and mirrors */
         double cos_i = -v3_dot(d, nf);
-        bool refl_ok = c->global || allowed(obj->photon_reflection,
-                                            c->light->photon_reflection);
-        bool refr_flag = c->global || allowed(obj->photon_refraction,
-                                              c->light->photon_refraction);
-        bool refr_ok = refr_flag && h.interior && transm > 0.0;
+        /* the flags are read where a branch needs them (a diffuse floor
+        ** that ends the photon needs neither) */
+        bool refr_ok = h.interior && transm > 0.0 &&
+                       refr_allowed(c, obj);
         if (c->global && diffusive) {
             /* Lambertian bounce with probability = the albedo at lambda,
             ** POV-Ray's diffuse x pigment x opacity; otherwise the specular
@@ -711,7 +830,7 @@ void ptrace_photon_sibs(const struct pmap_world *w,
                 o = h.p;
                 continue;
             }
-            if (!(p_d < 0.999) || !(refr_ok || (refl_ok && sf.reflects)))
+            if (!(p_d < 0.999) || !(refr_ok || sf.reflects))
                 return;
             s->power[0] /= 1.0 - p_d;
         }
@@ -764,13 +883,13 @@ void ptrace_photon_sibs(const struct pmap_world *w,
                 ** in POV-Ray; inside the object (total or partial
                 ** internal reflection) it is part of the refracted light
                 ** and always followed (POV-Ray follows TIR only). */
-                if (!refl_ok && entering)
+                if (entering && !refl_allowed(c, obj))
                     return;
                 d = v3_norm(v3_reflect(d, nf));
             } else {
                 d = v3_norm(v3_add(v3_scale(d, eta),
                                    v3_scale(nf, eta * cos_i - cos_t)));
-                sib_filter(s, transm, sf.transm_grey);
+                sib_filter(s, &sf);
                 chroma = chroma || !sf.transm_grey;
                 if (action == 0 && n_stack < PTRACE_MAX_STACK) {
                     tops[n_stack] = h.top ? h.top : obj;
@@ -785,8 +904,10 @@ void ptrace_photon_sibs(const struct pmap_world *w,
                     n_stack--;
                 }
             }
-        } else if ((refl_ok && sf.reflects) ||
-                   (!h.interior && transm > 0.0 && refr_flag)) {
+        } else if ((sf.reflects && refl_allowed(c, obj)) ||
+                   (!h.interior && transm > 0.0 && refr_allowed(c, obj))) {
+            bool refl_ok = sf.reflects && refl_allowed(c, obj);
+            bool refr_flag = !h.interior && refr_allowed(c, obj);
             double u = rng_uniform(r);
             /* A mirror: POV-Ray's reflection colour (falloff, metallic),
             ** as a spectral reflectivity p, taken by Russian roulette; a
@@ -802,18 +923,18 @@ void ptrace_photon_sibs(const struct pmap_world *w,
             ** 3/4 of the photons behind two such faces: 5% colour
             ** errors, tests/unit/test_pfilter.c. POV-Ray spawns both at
             ** full power. */
-            /* Siblings (ptrace_photon_sibs): the roulette takes the mean
-            ** reflectivity P of the siblings and weighs each by its own
-            ** p_j / P (q is the same for all: a tinted one collapses them
-            ** first); one sibling gives the rule above exactly. */
-            double q = !h.interior && refr_flag ? transm : 0.0;
-            if (q > 0.0 && !sf.transm_grey && s->n > 1)
-                sib_collapse(s);
-            double p = refl_ok && sf.reflects
-                           ? clamp01(reflectance(sf.refl, lambda)) : 0.0;
+            /* Siblings (ptrace_photon_sibs): the roulette takes the means
+            ** P and Q of the siblings' p_j and q_j: reflection with
+            ** probability P/(P+Q), each sibling's power times
+            ** p_j (P+Q)/P, passage otherwise, times q_j (P+Q)/Q; the
+            ** expectation of sibling j is p_j + q_j, as above. One
+            ** sibling, or grey p and q, give the rule above exactly. */
+            double q = refr_flag ? transm : 0.0;
+            bool spectral_q = q > 0.0 && !sf.transm_grey && s->n > 1;
+            double p = refl_ok ? clamp01(reflectance(sf.refl, lambda))
+                               : 0.0;
             double pj[PTRACE_SIBS] = { p };
-            bool spectral = s->n > 1 && refl_ok && sf.reflects &&
-                            !grey(sf.refl);
+            bool spectral = s->n > 1 && refl_ok && !grey(sf.refl);
             if (spectral) {
                 for (int j = 1; j < s->n; j++) {
                     pj[j] = clamp01(reflectance(sf.refl, s->lambda[j]));
@@ -823,6 +944,8 @@ void ptrace_photon_sibs(const struct pmap_world *w,
             }
             chroma = chroma || (p > 0.0 && !grey(sf.refl)) ||
                      (q > 0.0 && !sf.transm_grey);
+            if (spectral || spectral_q)
+                sib_split(s);
             if (q <= 0.0) {
                 if (!(u < p))
                     return;
@@ -831,15 +954,18 @@ void ptrace_photon_sibs(const struct pmap_world *w,
                         s->power[j] *= pj[j] / p;
                 d = v3_norm(v3_reflect(d, nf));
             } else if (p <= 0.0) {
-                sib_filter(s, q, true);
+                sib_filter(s, &sf);
             } else {
                 bool mirror = u * (p + q) < p;
                 if (spectral && mirror) {
                     for (int j = 0; j < s->n; j++)
                         s->power[j] *= pj[j] * (p + q) / p;
+                } else if (spectral_q && !mirror) {
+                    s->power[0] *= sf.transm * (p + q) / q;
+                    for (int j = 1; j < s->n; j++)
+                        s->power[j] *= sf.transm_sib[j] * (p + q) / q;
                 } else {
-                    for (int j = 0; j < s->n; j++)
-                        s->power[j] *= p + q;
+                    sib_scale(s, p + q);
                 }
                 if (mirror)
                     d = v3_norm(v3_reflect(d, nf));

@@ -102,13 +102,18 @@ void ptrace_photon(const struct pmap_world *w, const struct ptrace_combo *c,
                    struct ptrace_out *out);
 
 /*
-** Sibling wavelengths (issue 5). A photon whose path does not depend on
-** lambda (no dispersion, no media: the shooter decides) carries
-** PTRACE_SIBS wavelengths lambda_j = frac(u + j/S) of its lattice value u,
-** each with 1/S of the power, along one path: a spectral roulette (a
-** coloured mirror) takes the siblings' mean probability and weighs each
-** by its own; fades multiply each by its own factor. A spectral
-** transmittance collapses them to sibling 0 with all the power (trace.c,
+** Sibling wavelengths (issue 5). A photon carries PTRACE_SIBS wavelengths
+** lambda_j = frac(u + j/S) of its lattice value u, each with 1/S of the
+** power, along one path (through media too: Beer-Lambert per sibling,
+** media photons one record per sibling on a chromatic path, pmedia.c).
+** Every choice on the path is the same for all siblings, and each
+** sibling's power is weighed so that its expectation is what a photon of
+** its wavelength alone would carry: a spectral roulette (a coloured
+** mirror) takes the siblings' mean probability and weighs each by its own
+** over the mean; fades and spectral transmittances (coloured filters)
+** multiply each by its own factor. A surface of a dispersive interior
+** (or one met inside it) makes the path depend on lambda: there the
+** siblings collapse to sibling 0 with S times its power (trace.c,
 ** sib_collapse). A chromatic path stores one record per sibling, so a
 ** gather of k records sees k/S paths but S wavelengths of each: the colour
 ** noise of a focusing mirror's caustic, whose neighbouring cells carry
@@ -117,6 +122,10 @@ void ptrace_photon(const struct pmap_world *w, const struct ptrace_combo *c,
 #define PTRACE_SIBS 3
 struct ptrace_sibs {
     int n;                     /* 1..PTRACE_SIBS */
+    bool equal;                /* every sibling's power is power[0] (the
+                                  others are then not kept up to date):
+                                  a white light's siblings until a spectral
+                                  event, one product instead of S */
     double lambda[PTRACE_SIBS];
     double power[PTRACE_SIBS]; /* before the D^2 factor */
 };
