@@ -225,6 +225,21 @@ bool geom_profile_inside2d(const struct geom_profile *p, double u, double v)
     return parity;
 }
 
+/* The box of segments f..e-1 (both ends of each): a run's or a group's. */
+static void segments_box(const struct geom_profile *p, int f, int e,
+                         iris_vec2 *lo_out, iris_vec2 *hi_out)
+{
+    iris_vec2 lo = p->a[f], hi = p->a[f];
+    for (int i = f; i < e; i++) {
+        lo.u = fmin(lo.u, fmin(p->a[i].u, p->b[i].u));
+        lo.v = fmin(lo.v, fmin(p->a[i].v, p->b[i].v));
+        hi.u = fmax(hi.u, fmax(p->a[i].u, p->b[i].u));
+        hi.v = fmax(hi.v, fmax(p->a[i].v, p->b[i].v));
+    }
+    *lo_out = lo;
+    *hi_out = hi;
+}
+
 /* The runs of geom.h over the finished groups; none when out of memory
 ** (the tests then visit every segment, as before). */
 static void build_runs(struct geom_profile *p)
@@ -272,13 +287,8 @@ static void build_runs(struct geom_profile *p)
         p->group_closed[g] = closed;
         for (int f = p->group_first[g]; f < end; f += PROFILE_RUN, k++) {
             int e = f + PROFILE_RUN < end ? f + PROFILE_RUN : end;
-            iris_vec2 lo = p->a[f], hi = p->a[f];
-            for (int i = f; i < e; i++) {
-                lo.u = fmin(lo.u, fmin(p->a[i].u, p->b[i].u));
-                lo.v = fmin(lo.v, fmin(p->a[i].v, p->b[i].v));
-                hi.u = fmax(hi.u, fmax(p->a[i].u, p->b[i].u));
-                hi.v = fmax(hi.v, fmax(p->a[i].v, p->b[i].v));
-            }
+            iris_vec2 lo, hi;
+            segments_box(p, f, e, &lo, &hi);
             p->run_first[k] = f;
             p->run_lo[k] = lo;
             p->run_hi[k] = hi;
@@ -295,13 +305,8 @@ void geom_profile_finish(struct geom_profile *p)
     geom_profile_close_group(p);
     for (int g = 0; g < p->n_groups; g++) {
         int f = p->group_first[g], end = f + p->group_count[g];
-        iris_vec2 lo = p->a[f], hi = p->a[f];
-        for (int i = f; i < end; i++) {
-            lo.u = fmin(lo.u, fmin(p->a[i].u, p->b[i].u));
-            lo.v = fmin(lo.v, fmin(p->a[i].v, p->b[i].v));
-            hi.u = fmax(hi.u, fmax(p->a[i].u, p->b[i].u));
-            hi.v = fmax(hi.v, fmax(p->a[i].v, p->b[i].v));
-        }
+        iris_vec2 lo, hi;
+        segments_box(p, f, end, &lo, &hi);
         p->group_lo[g] = lo;
         p->group_hi[g] = hi;
         if (g == 0) {

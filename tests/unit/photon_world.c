@@ -361,3 +361,24 @@ void tw_floor_mean(const struct photon_map *m, double out[3])
                 out[c] += rgb[c] / (n * n);
         }
 }
+
+void tw_chroma_stats(const double (*pt)[3], int n, double mean[3],
+                     double *chroma_rms)
+{
+    double cr = 0, cb = 0;
+    mean[0] = mean[1] = mean[2] = 0;
+    for (int i = 0; i < n; i++) {
+        double s = pt[i][0] + pt[i][1] + pt[i][2];
+        cr += pt[i][0] / s / n;
+        cb += pt[i][2] / s / n;
+        for (int c = 0; c < 3; c++)
+            mean[c] += pt[i][c] / n;
+    }
+    double v = 0;
+    for (int i = 0; i < n; i++) {
+        double s = pt[i][0] + pt[i][1] + pt[i][2];
+        double dr = pt[i][0] / s - cr, db = pt[i][2] / s - cb;
+        v += (dr * dr + db * db) / n;
+    }
+    *chroma_rms = sqrt(v);
+}

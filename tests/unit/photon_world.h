@@ -54,4 +54,10 @@ struct pmap_world tw_world(struct tw_scene *t);
 ** ~0.5 %). */
 void tw_floor_mean(const struct photon_map *m, double out[3]);
 
+/* The mean rgb of n gathered points and the rms of their chromaticity
+** (r/(r+g+b), b/(r+g+b)) about its mean: the colour noise the sibling
+** tests compare. Every point must have some light. */
+void tw_chroma_stats(const double (*pt)[3], int n, double mean[3],
+                     double *chroma_rms);
+
 #endif

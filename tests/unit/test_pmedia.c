@@ -381,27 +381,14 @@ static void sib_slice(const struct pmedia_map *pm, double x, double mean[3],
     const int n = SIB_GRID * SIB_GRID;
     static double pt[SIB_GRID * SIB_GRID][3];
     const iris_media *ml[1] = { &med };
-    double cr = 0, cb = 0;
-    mean[0] = mean[1] = mean[2] = 0;
     for (int i = 0; i < n; i++) {
         vec3 p = v3(-0.6 + 1.2 * (i % SIB_GRID + 0.5) / SIB_GRID, 2.0 - x,
                     -0.6 + 1.2 * (i / SIB_GRID + 0.5) / SIB_GRID);
         pt[i][0] = pt[i][1] = pt[i][2] = 0;
         pmedia_gather(pm, ml, 1, p, v3(1, 0, 0), SIB_SCA, pt[i]);
-        double s = pt[i][0] + pt[i][1] + pt[i][2];
-        assert_true(s > 0.0);
-        cr += pt[i][0] / s / n;
-        cb += pt[i][2] / s / n;
-        for (int c = 0; c < 3; c++)
-            mean[c] += pt[i][c] / n;
+        assert_true(pt[i][0] + pt[i][1] + pt[i][2] > 0.0);
     }
-    double v = 0;
-    for (int i = 0; i < n; i++) {
-        double s = pt[i][0] + pt[i][1] + pt[i][2];
-        double dr = pt[i][0] / s - cr, db = pt[i][2] / s - cb;
-        v += (dr * dr + db * db) / n;
-    }
-    *chroma_rms = sqrt(v);
+    tw_chroma_stats((const double (*)[3])pt, n, mean, chroma_rms);
 }
 
 static struct photon_map *sib_beam_map(bool one, uint64_t seed)

@@ -43,6 +43,24 @@ static struct tw_scene tw;
 static const double LIGHT[3] = { 1.0, 0.84, 0.57 };
 static const double MIRROR[3] = { 0.52, 0.44, 0.40 };
 
+/* A black photon target bounded by six planes (normals n, offsets d) whose
+** only light is a mirror reflection of colour 'rgb'. */
+static iris_object *mirror_slab(const vec3 n[6], const double d[6],
+                                const double rgb[3])
+{
+    const iris_colour black = { 0, 0, 0, 0, 0 };
+    iris_object *m = tw_convex(&tw, 6, n, d, black, 0);
+    m->photon_target = true;
+    m->photon_collect = false;
+    iris_finish *f = m->texture->finish;
+    f->diffuse = 0;
+    f->reflection_max.r = f->reflection_min.r = rgb[0];
+    f->reflection_max.g = f->reflection_min.g = rgb[1];
+    f->reflection_max.b = f->reflection_min.b = rgb[2];
+    f->reflection_falloff = 1;
+    return m;
+}
+
 /* Builds the scene and its map (one wavelength per photon when
 ** 'no_siblings'); 'pt' gets the estimate at GRID x GRID points of the
 ** floor's [-0.8, 0.8]^2 (all under the mirror), 'stored' the records. */
@@ -62,16 +80,7 @@ static void mirror_caustic(bool no_siblings, uint64_t seed,
     const vec3 n[6] = { v3(-1, -1, 0), v3(1, 1, 0), v3(1, 0, 0),
                         v3(-1, 0, 0),  v3(0, 0, 1), v3(0, 0, -1) };
     const double d[6] = { 0, 0.1 * s, 1.2, 1.2, 1, 1 };
-    const iris_colour black = { 0, 0, 0, 0, 0 };
-    iris_object *m = tw_convex(&tw, 6, n, d, black, 0);
-    m->photon_target = true;
-    m->photon_collect = false;
-    iris_finish *f = m->texture->finish;
-    f->diffuse = 0;
-    f->reflection_max.r = f->reflection_min.r = MIRROR[0];
-    f->reflection_max.g = f->reflection_min.g = MIRROR[1];
-    f->reflection_max.b = f->reflection_min.b = MIRROR[2];
-    f->reflection_falloff = 1;
+    mirror_slab(n, d, MIRROR);
     const iris_colour white = { 1, 1, 1, 0, 0 };
     tw_plane(&tw, v3(0, 1, 0), -2, white, 1);
     struct pmap_world w = tw_world(&tw);
@@ -130,23 +139,9 @@ static void expected(double out[3])
 static void summarise(double pt[GRID * GRID][3], double mean[3],
                       double *chroma_rms)
 {
-    const int n = GRID * GRID;
-    double cr = 0, cb = 0;
-    mean[0] = mean[1] = mean[2] = 0;
-    for (int i = 0; i < n; i++) {
-        double s = pt[i][0] + pt[i][1] + pt[i][2];
-        cr += pt[i][0] / s / n;
-        cb += pt[i][2] / s / n;
-        for (int c = 0; c < 3; c++)
-            mean[c] += pt[i][c] / n;
-    }
-    double v = 0;
-    for (int i = 0; i < n; i++) {
-        double s = pt[i][0] + pt[i][1] + pt[i][2];
-        double dr = pt[i][0] / s - cr, db = pt[i][2] / s - cb;
-        v += (dr * dr + db * db) / n;
-    }
-    *chroma_rms = sqrt(v);
+    for (int i = 0; i < GRID * GRID; i++)
+        assert_true(pt[i][0] + pt[i][1] + pt[i][2] > 0.0);
+    tw_chroma_stats((const double (*)[3])pt, GRID * GRID, mean, chroma_rms);
 }
 
 /*
@@ -412,16 +407,7 @@ static iris_object *disperser_scene(void)
     const vec3 n[6] = { v3(-1, 1, 0), v3(1, -1, 0), v3(1, 0, 0),
                         v3(-1, 0, 0), v3(0, 0, 1),  v3(0, 0, -1) };
     const double d[6] = { 0, 0.1 * s, 1.2, 1.2, -0.2, 1.4 };
-    const iris_colour black = { 0, 0, 0, 0, 0 };
-    iris_object *m = tw_convex(&tw, 6, n, d, black, 0);
-    m->photon_target = true;
-    m->photon_collect = false;
-    iris_finish *f = m->texture->finish;
-    f->diffuse = 0;
-    f->reflection_max.r = f->reflection_min.r = MIRROR2[0];
-    f->reflection_max.g = f->reflection_min.g = MIRROR2[1];
-    f->reflection_max.b = f->reflection_min.b = MIRROR2[2];
-    f->reflection_falloff = 1;
+    mirror_slab(n, d, MIRROR2);
     const iris_colour clear = { 1, 1, 1, 0, 1 };
     iris_object *slab = tw_box(&tw, v3(-1.2, -1, 0.2), v3(1.2, -0.5, 1.4),
                                clear, 0, 1.5);
