@@ -240,9 +240,8 @@ static void segments_box(const struct geom_profile *p, int f, int e,
     *hi_out = hi;
 }
 
-/* The runs of geom.h over the finished groups; none when out of memory
-** (the tests then visit every segment, as before). */
-static void build_runs(struct geom_profile *p)
+/* Drops the runs (the segments are then visited one by one). */
+static void free_runs(struct geom_profile *p)
 {
     iris_free(p->run_first);
     iris_free(p->group_run);
@@ -253,6 +252,13 @@ static void build_runs(struct geom_profile *p)
     p->run_lo = p->run_hi = NULL;
     p->group_closed = NULL;
     p->n_runs = 0;
+}
+
+/* The runs of geom.h over the finished groups; none when out of memory
+** (the tests then visit every segment, as before). */
+static void build_runs(struct geom_profile *p)
+{
+    free_runs(p);
     int n = 0;
     for (int g = 0; g < p->n_groups; g++)
         n += (p->group_count[g] + PROFILE_RUN - 1) / PROFILE_RUN;
@@ -266,14 +272,7 @@ static void build_runs(struct geom_profile *p)
     p->group_closed = iris_malloc((size_t)p->n_groups);
     if (!p->run_first || !p->group_run || !p->run_lo || !p->run_hi ||
         !p->group_closed) {
-        iris_free(p->run_first);
-        iris_free(p->group_run);
-        iris_free(p->run_lo);
-        iris_free(p->run_hi);
-        iris_free(p->group_closed);
-        p->run_first = p->group_run = NULL;
-        p->run_lo = p->run_hi = NULL;
-        p->group_closed = NULL;
+        free_runs(p);
         return;
     }
     int k = 0;

@@ -43,6 +43,25 @@ static struct tw_scene tw;
 static const double LIGHT[3] = { 1.0, 0.84, 0.57 };
 static const double MIRROR[3] = { 0.52, 0.44, 0.40 };
 
+/* The caustic map of the scene in 'tw' (one wavelength per photon when
+** 'no_siblings'); 'stored' gets its record count. */
+static struct photon_map *build_map(bool no_siblings, uint64_t seed,
+                                    int64_t *stored)
+{
+    struct pmap_world w = tw_world(&tw);
+    struct photon_options o;
+    memset(&o, 0, sizeof o);
+    o.threads = 2;
+    o.seed = seed;
+    o.no_siblings = no_siblings;
+    struct photon_map *map = NULL;
+    struct photon_stats st;
+    assert_int_equal(pmap_build(&tw.scene, &w, &o, &map, &st), IRIS_OK);
+    assert_non_null(map);
+    *stored = st.stored;
+    return map;
+}
+
 /* A black photon target bounded by six planes (normals n, offsets d) whose
 ** only light is a mirror reflection of colour 'rgb'. */
 static iris_object *mirror_slab(const vec3 n[6], const double d[6],
@@ -83,17 +102,7 @@ static void mirror_caustic(bool no_siblings, uint64_t seed,
     mirror_slab(n, d, MIRROR);
     const iris_colour white = { 1, 1, 1, 0, 0 };
     tw_plane(&tw, v3(0, 1, 0), -2, white, 1);
-    struct pmap_world w = tw_world(&tw);
-    struct photon_options o;
-    memset(&o, 0, sizeof o);
-    o.threads = 2;
-    o.seed = seed;
-    o.no_siblings = no_siblings;
-    struct photon_map *map = NULL;
-    struct photon_stats st;
-    assert_int_equal(pmap_build(&tw.scene, &w, &o, &map, &st), IRIS_OK);
-    assert_non_null(map);
-    *stored = st.stored;
+    struct photon_map *map = build_map(no_siblings, seed, stored);
     static iris_finish fin;
     fin.diffuse = 1;
     fin.brilliance = 1;
@@ -219,25 +228,6 @@ static void patch(const struct photon_map *m, vec3 ctr, vec3 ax, vec3 ay,
                                              1.0, &fin, NULL };
             photon_map_shade(m, &in, pt[i * GRID + j]);
         }
-}
-
-/* The caustic map of the scene in 'tw' (one wavelength per photon when
-** 'no_siblings'); 'stored' gets its record count. */
-static struct photon_map *build_map(bool no_siblings, uint64_t seed,
-                                    int64_t *stored)
-{
-    struct pmap_world w = tw_world(&tw);
-    struct photon_options o;
-    memset(&o, 0, sizeof o);
-    o.threads = 2;
-    o.seed = seed;
-    o.no_siblings = no_siblings;
-    struct photon_map *map = NULL;
-    struct photon_stats st;
-    assert_int_equal(pmap_build(&tw.scene, &w, &o, &map, &st), IRIS_OK);
-    assert_non_null(map);
-    *stored = st.stored;
-    return map;
 }
 
 /* What one map gives over the seeds: the mean rgb and the mean of the
