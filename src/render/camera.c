@@ -12,6 +12,7 @@
 
 #include "material/material.h"
 #include "render/camera.h"
+#include "render/camray.h"
 #include "render/meshcam.h"
 
 /* The unit vector 'v', or 'v' itself when it has no length. */
@@ -197,11 +198,8 @@ static bool base_ray(const iris_camera *cam, int width, int height,
         return true;
     }
     double w = width > 0 ? width : 1, h = height > 0 ? height : 1;
-    /* POV-Ray shifts to the pixel's corner first, then maps to [-.5, .5]. */
-    x += 0.5;
-    y -= 0.5;
-    double x0 = x / w - 0.5;
-    double y0 = ((h - 1) - y) / h - 0.5;
+    double x0, y0;
+    cam_plane_point(w, h, &x, &y, &x0, &y0);
     np[0] = x0;
     np[1] = y0;
     vec3 d;
@@ -251,10 +249,11 @@ static bool base_ray(const iris_camera *cam, int width, int height,
             return false;
         *raw = r->d;
         return true;
-    default: /* perspective */
-        d = v3_add(v3_add(cam->direction, v3_scale(cam->right, x0)),
-                   v3_scale(cam->up, y0));
-        break;
+    default: { /* perspective */
+        struct cam_pinhole p = { cam->location, cam->direction, cam->right,
+                                 cam->up, w, h };
+        return cam_pinhole_dir(&p, x0, y0, r, raw);
+    }
     }
     double len = v3_len(d);
     if (!(len > 0) || !isfinite(len))

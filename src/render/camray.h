@@ -12,7 +12,7 @@
 ** image, at pixel centres and jittered positions).
 **
 ** Depends on: math, include/iris/scene.h.
-** Used by: render/eyepass.c.
+** Used by: render/eyepass.c, render/camera.c.
 */
 #ifndef IRIS_RENDER_CAMRAY_H
 #define IRIS_RENDER_CAMRAY_H
@@ -47,17 +47,24 @@ static inline bool cam_pinhole_setup(struct cam_pinhole *p,
     return true;
 }
 
-/* camera_ray_raw() of the camera of 'p' through image point (x, y):
-** POV-Ray's corner shift, x0 = (x + 0.5)/w - 0.5, y0 = (h - 1 - (y -
-** 0.5))/h - 0.5, the direction D + x0 R + y0 U added in that order, and
-** its length; false where it has none. */
-static inline bool cam_pinhole_ray(const struct cam_pinhole *p, double x,
-                                   double y, ray *r, vec3 *raw)
+/* POV-Ray's point of the image plane for image position (x, y): it
+** shifts to the pixel's corner first ('x', 'y' are left shifted: the
+** angular cameras go on from there), then maps to [-0.5, 0.5]. */
+static inline void cam_plane_point(double w, double h, double *x, double *y,
+                                   double *x0, double *y0)
 {
-    x += 0.5;
-    y -= 0.5;
-    double x0 = x / p->w - 0.5;
-    double y0 = ((p->h - 1) - y) / p->h - 0.5;
+    *x += 0.5;
+    *y -= 0.5;
+    *x0 = *x / w - 0.5;
+    *y0 = ((h - 1) - *y) / h - 0.5;
+}
+
+/* The perspective ray of 'p' through plane point (x0, y0): the direction
+** D + x0 R + y0 U added in that order, and its length; false where it has
+** none. camera.c's base_ray() takes it too, so both paths agree. */
+static inline bool cam_pinhole_dir(const struct cam_pinhole *p, double x0,
+                                   double y0, ray *r, vec3 *raw)
+{
     vec3 d = v3_add(v3_add(p->direction, v3_scale(p->right, x0)),
                     v3_scale(p->up, y0));
     double len = v3_len(d);
@@ -67,6 +74,15 @@ static inline bool cam_pinhole_ray(const struct cam_pinhole *p, double x,
     *raw = d;
     r->d = v3_scale(d, 1.0 / len);
     return true;
+}
+
+/* camera_ray_raw() of the camera of 'p' through image point (x, y). */
+static inline bool cam_pinhole_ray(const struct cam_pinhole *p, double x,
+                                   double y, ray *r, vec3 *raw)
+{
+    double x0, y0;
+    cam_plane_point(p->w, p->h, &x, &y, &x0, &y0);
+    return cam_pinhole_dir(p, x0, y0, r, raw);
 }
 
 #endif
