@@ -16,6 +16,11 @@
 ** when coefficients cancel, which matters for thin tori seen edge-on.
 ** POV-Ray's 'sturm' keyword asks for exactly this robustness, so it needs
 ** no separate path: every object gets it.
+** Cubics whose roots are well separated (roots_cubic) are solved in
+** closed form as POV-Ray solves them, then polished by Newton's method:
+** the sor's and prism's curves, and a quartic's critical points; where
+** two roots nearly meet, the closed form is not accurate and the
+** bracketing solver above takes over.
 */
 #ifndef IRIS_GEOMETRY_ROOTS_H
 #define IRIS_GEOMETRY_ROOTS_H
@@ -33,6 +38,16 @@
 */
 int roots_in_interval(const double *c, int deg, double lo, double hi,
                       double *out);
+
+/*
+** roots_in_interval(c, 3, lo, hi, out) for a cubic, the same contract,
+** in closed form where that is accurate (POV-Ray's solve_cubic: the
+** trigonometric form for three real roots, Cardano's for one), each root
+** then polished by Newton's method on c; cubics with nearly coincident
+** roots, or whose normalised coefficients overflow, are left to
+** roots_in_interval(). For the exact curves of sor and prism.
+*/
+int roots_cubic(const double *c, double lo, double hi, double *out);
 
 /*
 ** Whether every value roots_eval(c, deg, t) can take for t in [lo, hi]

@@ -10,6 +10,9 @@
 ** derivative's roots by the quadratic formula, then 200 bisections in
 ** each monotone piece) compared at 1e-9, the accuracy the callers need
 ** (sweep.c polishes crossings to 1e-13 of the shape's size itself).
+** roots_cubic(), the closed form with Newton's polish that the sor and
+** prism use, against the same references and against
+** roots_in_interval(): the same roots, the same count.
 */
 #include "config.h"
 
@@ -283,12 +286,192 @@ static void test_quartic_through_cubic(void **state)
     }
 }
 
+/*
+** roots_cubic() on cubics with known roots: the sets above (spreads from
+** 2e-6 to 750, leading coefficients 1e-8 to 3e7 and 1e±150), each root
+** to 1e-12 of the largest |root| as for roots_in_interval (the rounding
+** of the coefficients moves well separated roots by a few ulps of
+** that; the polish leaves the closed form's own error, about 1e-15 of
+** the spread, below it), the same count on sub-intervals; one real root
+** (Cardano's branch) of both signs of R; a triple root (left to the
+** bracketing solver); and the roots nearest the leading coefficient's
+** vanishing (a sor's nearly horizontal ray).
+*/
+static void test_closed_known(void **state)
+{
+    (void)state;
+    static const double sets[][3] = {
+        { 1, 2, 3 }, { -5, 0.25, 7 }, { -1e-3, 0, 1e-3 },
+        { 0.1, 0.2, 100 }, { -300, -299, 450 }, { 1e-6, 2e-6, 3e-6 },
+        { -1, 0.5, 2 },
+    };
+    static const double ks[] = { 1, -2.5, 1e-8, 3e7, 1e150, -1e-150 };
+    double c[4], out[3];
+    for (size_t i = 0; i < sizeof sets / sizeof sets[0]; i++) {
+        double rmax = fmax(fabs(sets[i][0]), fabs(sets[i][2]));
+        double tol = 1e-12 * rmax;
+        for (size_t j = 0; j < sizeof ks / sizeof ks[0]; j++) {
+            cubic_from_roots(ks[j], sets[i], c);
+            int n = roots_cubic(c, -INFINITY, INFINITY, out);
+            assert_int_equal(n, 3);
+            for (int k = 0; k < 3; k++)
+                assert_near(out[k], sets[i][k], tol);
+            double a = 0.5 * (sets[i][0] + sets[i][1]);
+            double b = 0.5 * (sets[i][1] + sets[i][2]);
+            n = roots_cubic(c, a, b, out);
+            assert_int_equal(n, 1);
+            assert_near(out[0], sets[i][1], tol);
+            /* an interval holding none: the roots' span test */
+            assert_int_equal(roots_cubic(c, 2 * rmax, 3 * rmax, out), 0);
+        }
+    }
+    /* (t - 2)(t² + 1): R < 0; its mirror (t + 2)(t² + 1): R > 0 */
+    double one[4] = { -2, 1, -2, 1 };
+    assert_int_equal(roots_cubic(one, -10, 10, out), 1);
+    assert_near(out[0], 2, 1e-15);
+    double onem[4] = { 2, 1, 2, 1 };
+    assert_int_equal(roots_cubic(onem, -10, 10, out), 1);
+    assert_near(out[0], -2, 1e-15);
+    /* t³ + t - 10 (Q < 0): 2 */
+    double mono[4] = { -10, 1, 0, 1 };
+    assert_int_equal(roots_cubic(mono, 0, 5, out), 1);
+    assert_near(out[0], 2, 1e-15);
+    /* a triple root: once, as roots_in_interval reports it */
+    double tri[4] = { -1, 3, -3, 1 };
+    assert_int_equal(roots_cubic(tri, -5, 5, out), 1);
+    /* p's rounding near 1, ~1e-16, moves a triple root by its cube
+    ** root, 5e-6 */
+    assert_near(out[0], 1, 1e-5);
+    /* Non-finite coefficients: no root, as roots_in_interval answers */
+    for (int k = 0; k < 4; k++) {
+        double bad[4] = { -6, 11, -6, 1 };
+        bad[k] = NAN;
+        assert_int_equal(roots_cubic(bad, -10, 10, out), 0);
+        bad[k] = INFINITY;
+        assert_int_equal(roots_cubic(bad, -10, 10, out), 0);
+    }
+    /* No cubic term: the quadratic (t - 1)(t - 3) */
+    double quad[4] = { 3, -4, 1, 0 };
+    assert_int_equal(roots_cubic(quad, -5, 5, out), 2);
+    assert_near(out[0], 1, 1e-15);
+    assert_near(out[1], 3, 1e-15);
+    /* e t³ + (t - 1)(t - 2): the roots near 1 and 2 move by about
+    ** e (root³ / p'(root)) and a third runs off to -1/e; checked
+    ** against the long double reference below in the random test, here
+    ** against the first-order root shifts to e² scale */
+    for (int p10 = 3; p10 <= 12; p10++) {
+        double e = pow(10, -p10);
+        double cc[4] = { 2, -3, 1, e };
+        int n = roots_cubic(cc, 0, 3, out);
+        assert_int_equal(n, 2);
+        /* p(t) = (t-1)(t-2) + e t³: root 1 + e (p' = -1), 2 - 8e (p' = 1) */
+        assert_near(out[0], 1 + e, 10 * e * e + 1e-15);
+        assert_near(out[1], 2 - 8 * e, 1000 * e * e + 1e-15);
+    }
+}
+
+/*
+** Near-double roots (t - 1)(t - 1 - δ)(t + 2), δ from 1e-1 to 1e-10 (the
+** closest pairs reach the bracketing solver through roots_cubic's
+** conditioning test). The coefficients' rounding, about 4e-16 of the
+** terms' size (~8 at t = 1), is ~3e-15 of p; while that is far below
+** the depth 3δ²/4 of p between the pair (δ >= 1e-7) both roots exist
+** and move by about 3e-15 / |p'| = 1e-15/δ: checked to 1e-14/δ; the
+** root at -2 (terms ~30, p' = 9) to 4e-15. Below, the rounded cubic no
+** longer dips below 0 there and neither solver finds the pair: the same
+** count and roots as roots_in_interval.
+*/
+static void test_closed_near_double(void **state)
+{
+    (void)state;
+    static const double r0[3] = { -2, 1, 0 };
+    for (int p10 = 1; p10 <= 10; p10++) {
+        double dl = pow(10, -p10);
+        double r[3] = { r0[0], r0[1], 1 + dl }, c[4], out[3], ref[3];
+        cubic_from_roots(1, r, c);
+        double tol = 1e-14 / dl;
+        int n = roots_cubic(c, -5, 5, out);
+        assert_int_equal(roots_in_interval(c, 3, -5, 5, ref), n);
+        if (dl >= 1e-7) {
+            assert_int_equal(n, 3);
+            for (int k = 0; k < 3; k++)
+                assert_near(out[k], r[k], tol);
+        }
+        assert_near(out[0], -2, 4e-15);
+        for (int k = 0; k < n; k++)
+            assert_near(out[k], ref[k], tol);
+    }
+}
+
+/*
+** roots_cubic() on the random cubics of test_cubic_random: against the
+** long double reference, the same count and each root to 1e-9 of
+** max(1, |root|), the callers' need, as there; against
+** roots_in_interval() on every trial, near-double roots included, the
+** same count (both report sign changes; roots_cubic leaves the unsure
+** cases to it), and each root to 1e-12 of max(1, |root|) where the
+** reference is sure (two full-precision solutions of one polynomial
+** differ by its condition number times the rounding, which these
+** random cubics keep far below 1e4 outside the skipped near-double
+** cases).
+*/
+static void test_closed_random(void **state)
+{
+    (void)state;
+    uint64_t seed = 0x9e3779b97f4a7c15u;
+    int compared = 0, total = 20000;
+    for (int trial = 0; trial < total; trial++) {
+        double c[4], out[3], alt[3];
+        long double ref[3];
+        for (int i = 0; i < 4; i++) {
+            double mag = pow(10, -6 + 12 * unit_rand(&seed));
+            c[i] = (unit_rand(&seed) - 0.5) * mag;
+        }
+        double lo, hi;
+        switch (trial % 4) {
+        case 0: lo = -1e-12; hi = 1 - 1e-12; break;
+        case 1: lo = -10; hi = 10; break;
+        case 2: lo = -1e3 * unit_rand(&seed); hi = lo + 2e3; break;
+        default: lo = -INFINITY; hi = INFINITY; break;
+        }
+        int n = roots_cubic(c, lo, hi, out);
+        int na = roots_in_interval(c, 3, lo, hi, alt);
+        if (n != na)
+            fail_msg("trial %d: %d roots, roots_in_interval %d (c = %.17g "
+                     "%.17g %.17g %.17g on %g..%g)", trial, n, na, c[0],
+                     c[1], c[2], c[3], lo, hi);
+        double rl = lo, rh = hi;
+        if (!isfinite(lo)) {
+            double b = 0;
+            for (int i = 0; i < 3; i++)
+                b = fmax(b, fabs(c[i] / c[3]));
+            rl = -(1 + b);
+            rh = 1 + b;
+        }
+        int nr = reference_cubic(c, rl, rh, ref);
+        if (nr < 0)
+            continue;
+        compared++;
+        assert_int_equal(n, nr);
+        for (int k = 0; k < n; k++) {
+            double sc = fmax(1, fabs((double)ref[k]));
+            assert_near(out[k], (double)ref[k], 1e-9 * sc);
+            assert_near(out[k], alt[k], 1e-12 * sc);
+        }
+    }
+    printf("# %d of %d random cubics compared\n", compared, total);
+    assert_true(compared >= total * 9 / 10);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_cubic_known),
         cmocka_unit_test(test_cubic_random),
         cmocka_unit_test(test_quartic_through_cubic),
+        cmocka_unit_test(test_closed_known),
+        cmocka_unit_test(test_closed_near_double),
+        cmocka_unit_test(test_closed_random),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
