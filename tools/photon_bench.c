@@ -5,12 +5,13 @@
 ** photon, and gather (estimate) queries per second.
 **
 ** Usage: photon_bench [-t THREADS] [-q QUERIES] [-a 1] [-c 1] [-m 0]
-**        [-s 0] scene.pov
+**        [-s 0] [-w 0] scene.pov
 ** (-a 1: query accel, not the photon fast path of sphere-and-plane
 ** scenes, src/photon/fastpath.h; -c 1: evaluate every hit's texture, not
 ** the batch's cache of uniform textures, src/photon/trace.h; -m 0: no
 ** material context, see below; -s 0: one wavelength per photon, no
-** sibling wavelengths, src/photon/trace.h)
+** sibling wavelengths, src/photon/trace.h; -w 0: the scalar tracer
+** also where the wavefront tracer, src/photon/wavefront.h, applies)
 ** Prints one line of key=value pairs: shoot_s is the wall time of the
 ** shooting (emission, transport, concatenating the batches), build_s of
 ** the kd-tree build and the automatic radius; photons_per_s_per_thread is
@@ -20,7 +21,9 @@
 ** CPU second: on a shared machine the wall clock also counts the others'
 ** work. tex_cached counts the surface hits answered from the texture
 ** cache (src/photon/trace.h). map_fnv is a hash of the stored records
-** (the same map, the same hash). Textures are evaluated by the
+** (the same map, the same hash). wavefront is the photons the wavefront
+** tracer emitted (0: the scalar tracer shot them all) and kernel its
+** code (avx2 or generic). Textures are evaluated by the
 ** material module (a material context, as a render shoots its photons:
 ** what users get); -m 0 takes them as solid pigments without it, the
 ** way sessions 1-5 measured (cheaper per hit: not what a render pays).
@@ -37,6 +40,7 @@
 #include "iris/parse.h"
 #include "material/material.h"
 #include "photon/pmap.h"
+#include "photon/wavefront.h"
 #include "util/rng.h"
 #include "util/thread.h"
 
@@ -98,7 +102,7 @@ static unsigned long long map_hash(const struct photon_map *m)
 int main(int argc, char **argv)
 {
     int threads = 1, queries = 100000, accel_only = 0, no_cache = 0;
-    int with_mat = 1, siblings = 1;
+    int with_mat = 1, siblings = 1, wavefront = 1;
     int i = 1;
     for (; i < argc - 1 && argv[i][0] == '-'; i += 2) {
         if (!strcmp(argv[i], "-t"))
@@ -113,11 +117,13 @@ int main(int argc, char **argv)
             with_mat = atoi(argv[i + 1]);
         else if (!strcmp(argv[i], "-s"))
             siblings = atoi(argv[i + 1]);
+        else if (!strcmp(argv[i], "-w"))
+            wavefront = atoi(argv[i + 1]);
     }
     if (i != argc - 1) {
         fprintf(stderr,
                 "usage: photon_bench [-t N] [-q N] [-a 1] [-c 1] [-m 0] [-s 0] "
-                "scene.pov\n");
+                "[-w 0] scene.pov\n");
         return 2;
     }
     iris_parse_options po;
@@ -148,6 +154,7 @@ int main(int argc, char **argv)
     o.no_fastpath = accel_only != 0;
     o.no_tex_cache = no_cache != 0;
     o.no_siblings = siblings == 0;
+    o.no_wavefront = wavefront == 0;
     struct photon_map *m = NULL;
     struct photon_stats st;
     if (photon_map_build(scene, a, &o, &m, &st) != IRIS_OK) {
@@ -161,13 +168,13 @@ int main(int argc, char **argv)
            "shoot_s=%.3f build_s=%.3f photons_per_s_per_thread=%.0f "
            "cpu_shoot_s=%.3f cpu_build_s=%.3f photons_per_cpu_s=%.0f "
            "gather_radius=%.4g gathers_per_s=%.0f gathers_per_cpu_s=%.0f "
-           "tex_cached=%lld mat=%d map_fnv=%016llx\n",
+           "tex_cached=%lld mat=%d wavefront=%lld kernel=%s map_fnv=%016llx\n",
            threads, (long long)st.shot, (long long)st.stored,
            st.stored ? (double)st.bytes / st.stored : 0.0, st.seconds_shoot,
            st.seconds_build, per_thread, st.cpu_shoot, st.cpu_build,
            st.cpu_shoot > 0 ? st.shot / st.cpu_shoot : 0.0, st.gather_radius,
            g_wall, g_cpu, (long long)st.tex_cached, with_mat != 0,
-           map_hash(m));
+           (long long)st.wavefront, wf_kernel_name(), map_hash(m));
     photon_map_destroy(m);
     mat_ctx_destroy(mc);
     accel_destroy(a);

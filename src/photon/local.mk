@@ -6,4 +6,5 @@ libiris_core_la_SOURCES += %reldir%/photon.h %reldir%/photon.c \
 	%reldir%/photon_file.c %reldir%/photon_file.h \
 	%reldir%/membudget.c %reldir%/membudget.h \
 	%reldir%/fastpath.c %reldir%/fastpath.h \
-	%reldir%/pmedia.c %reldir%/pmedia.h
+	%reldir%/pmedia.c %reldir%/pmedia.h \
+	%reldir%/wavefront.c %reldir%/wavefront.h %reldir%/wf_kernel.h

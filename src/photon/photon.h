@@ -67,6 +67,16 @@ struct photon_options {
     bool no_siblings;          /* one wavelength per photon, also where
                                   the path does not depend on it (trace.h,
                                   ptrace_sibs; tests and benchmarks) */
+    bool no_wavefront;         /* trace every photon with the scalar tracer
+                                  (trace.c), also in the scenes the
+                                  wavefront tracer takes (wavefront.h;
+                                  tests, benchmarks); so does the
+                                  environment variable IRIS_NO_WAVEFRONT
+                                  set to anything but 0 */
+    volatile int *interrupt;   /* set non-zero (SIGINT, SIGTERM): the
+                                  batches not started are skipped and the
+                                  build returns IRIS_EINTR (last: the
+                                  tests' positional initialisers) */
 };
 
 /* What a build did, for -v and the benchmarks. */
@@ -87,6 +97,9 @@ struct photon_stats {
     int64_t tex_cached;        /* photons' surface hits (caustic and
                                   global) answered from the texture cache
                                   (trace.h) */
+    int64_t wavefront;         /* caustic photons emitted by the wavefront
+                                  tracer (wavefront.h), 0 when the scalar
+                                  tracer shot them */
 };
 
 /*

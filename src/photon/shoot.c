@@ -66,6 +66,7 @@
 #include <stdatomic.h>
 #include <stdio.h>
 #include <stdint.h>
+#include <stdlib.h>
 #include <string.h>
 #include <sys/mman.h>
 #include <time.h>
@@ -73,12 +74,14 @@
 
 #include "photon/membudget.h"
 #include "photon/trace.h"
+#include "photon/wavefront.h"
 #include "spectrum/ior.h"
 #include "spectrum/spectrum.h"
 #include "util/mem.h"
 #include "util/thread.h"
 
 #define PHOTON_BATCH 4096
+_Static_assert(PHOTON_BATCH <= WF_MAX, "a batch is one wavefront run");
 
 /* Roberts' R2 steps 1/phi2, 1/phi2^2 (phi2 = 1.3247..., the real root of
 ** x^3 = x + 1), and a third irrational step for area-light cells. */
@@ -145,6 +148,12 @@ struct shoot {
     _Atomic int64_t n_stored;
     atomic_bool over_budget;
     _Atomic int64_t tex_cached; /* photon_stats.tex_cached */
+    /* The wavefront tracer (wavefront.h) when it takes the scene, with
+    ** each thread's lanes and run; NULL: trace.c for every photon */
+    struct wf_scene *wf;
+    struct wf_state **wf_st;
+    struct wf_run **wf_run;
+    int wf_threads;
 };
 
 bool pmap_shoots(const iris_light *l, const iris_object *t)
@@ -457,31 +466,55 @@ static void combo_grid(struct combo *c, double spacing)
 ** pi·theta_max^2/dtheta^2), plus at most one photon per ring from the
 ** rounding up; times the area-light grid. Overflows to +inf, not UB.
 */
+static double combo_photons(struct combo *c, double spacing)
+{
+    combo_grid(c, spacing);
+    double d = c->dtheta;
+    if (!(d > 0.0) || !isfinite(d))
+        return 0.0;
+    double area = c->tc.parallel ? M_PI * c->theta_max * c->theta_max
+                                 : 2.0 * M_PI * (1.0 - cos(c->theta_max));
+    return (area / (d * d) + c->theta_max / d + 1.0) * (double)c->n1 *
+           (double)c->n2;
+}
+
 static double estimate_photons(struct shoot *s, double spacing)
 {
     double total = 0.0;
-    for (int ci = 0; ci < s->n_combos; ci++) {
-        struct combo *c = &s->combos[ci];
-        combo_grid(c, spacing);
-        double d = c->dtheta;
-        if (!(d > 0.0) || !isfinite(d))
-            continue;
-        double area = c->tc.parallel
-                          ? M_PI * c->theta_max * c->theta_max
-                          : 2.0 * M_PI * (1.0 - cos(c->theta_max));
-        total += (area / (d * d) + c->theta_max / d + 1.0) *
-                 (double)c->n1 * (double)c->n2;
-    }
+    for (int ci = 0; ci < s->n_combos; ci++)
+        total += combo_photons(&s->combos[ci], spacing);
     return total;
 }
 
-/* The file:line:col of the photon settings (or the first target). */
-static void photon_loc(const struct shoot *s, const char **file, iris_loc *loc)
+/*
+** The file:line:col to blame for the photons 'spacing' asks for: the
+** 'target S' of the object that asks for the most, when S is not 1 (an
+** object's 'target 1e-7' under a sane global spacing is what a user must
+** change), else the photon settings (or the first target). '*density'
+** gets that S (1 for the settings).
+*/
+static void photon_loc(struct shoot *s, double spacing, const char **file,
+                       iris_loc *loc, double *density)
 {
     const iris_scene *sc = s->scene;
     *loc = sc->settings.photons.loc;
     if (loc->line == 0)
         *loc = s->combos[0].tc.target->loc;
+    *density = 1.0;
+    int worst = 0;
+    double most = -1.0;
+    for (int ci = 0; ci < s->n_combos; ci++) {
+        double n = combo_photons(&s->combos[ci], spacing);
+        if (!(n <= most)) { /* an infinite count counts too */
+            most = n;
+            worst = ci;
+        }
+    }
+    const iris_object *t = s->combos[worst].tc.target;
+    if (t->photon_density != 1.0 && t->photon_target_loc.line > 0) {
+        *loc = t->photon_target_loc;
+        *density = t->photon_density;
+    }
     *file = "<unknown>";
     if (loc->file > 0 && (int)loc->file < sc->n_files && sc->files &&
         sc->files[loc->file])
@@ -508,21 +541,27 @@ static double cap_spacing(struct shoot *s, double spacing)
     FILE *log = s->opts->log ? s->opts->log : stderr;
     const char *file;
     iris_loc loc;
-    photon_loc(s, &file, &loc);
+    double density;
+    photon_loc(s, spacing, &file, &loc, &density);
     if (s->opts->max_photons <= 0) {
-        char need[32], have[32];
+        char need[32], have[32], what[96];
+        if (density != 1.0)
+            snprintf(what, sizeof what, "this object's 'target %g' (spacing "
+                     "%g x %g)", density, spacing, density);
+        else
+            snprintf(what, sizeof what, "spacing %g", spacing);
         /* every pass: a failure stops the run, and an MPI rank > 0
         ** never builds pass 0 (progressive.c sends its message on) */
-        fprintf(log, "%s:%u:%u: error: photons: spacing %g would shoot "
+        fprintf(log, "%s:%u:%u: error: photons: %s would shoot "
                     "%.3g photons, about %s at the photon pass's peak, more "
-                    "than the %s %s leaves (%.3g photons); raise 'spacing' "
-                    "or lower 'count'\n", file,
-                    (unsigned)loc.line, (unsigned)loc.col, spacing, est,
+                    "than the %s %s leaves (%.3g photons); raise %s\n", file,
+                    (unsigned)loc.line, (unsigned)loc.col, what, est,
                     membudget_format(membudget_photon_peak(
                                          est * sibling_records(s), global),
                                      need, sizeof need),
                     membudget_format(b.bytes, have, sizeof have), b.what,
-                    cap);
+                    cap, density != 1.0 ? "the target"
+                                        : "'spacing' or lower 'count'");
         return -1.0;
     }
     double sp = spacing;
@@ -729,15 +768,90 @@ static void shoot_one(const struct shoot *s, const struct ring *rg, int64_t j,
     ptrace_photon_sibs(s->w, &c->tc, o, d, &sb, &r, out);
 }
 
+/*
+** Photons lo..hi-1 through the wavefront tracer: each run of one combo
+** laid out in the thread's lanes (the cell, column and lattice wavelength
+** of shoot_one(); the random draws and the rest are wavefront.c's).
+*/
+static void wf_batch(struct shoot *s, int64_t lo, int64_t hi, int thread,
+                     struct ptrace_out *out)
+{
+    struct wf_run *run = s->wf_run[thread];
+    const struct ring *rg = ring_of(s, lo);
+    const struct ring *last = s->rings + s->n_rings - 1;
+    run->n = 0;
+    run->combo = rg->combo;
+    /* the combo's lanes a photon, its flat power share (per combo) */
+    int lanes_of = -1, n_lanes = 1;
+    float flat = 0.0f;
+    for (int64_t j = lo; j < hi && !out->failed; j++) {
+        while (rg < last && j >= rg[1].first)
+            rg++;
+        if (run->n > 0 && rg->combo != run->combo) {
+            wf_trace(s->wf, s->wf_st[thread], run, out);
+            run->n = 0;
+        }
+        run->combo = rg->combo;
+        const struct combo *c = &s->combos[rg->combo];
+        if (lanes_of != rg->combo) {
+            /* a flat emission: one lane at the lattice wavelength with
+            ** the whole power (its siblings' white record, or sibling 0
+            ** with theirs past dispersion); a chromatic one, or a flat
+            ** one that a coloured filter may make chromatic: a lane per
+            ** sibling (wavefront.c), each with its share of
+            ** shoot_one()'s power */
+            lanes_of = rg->combo;
+            n_lanes = c->tc.chromatic || wf_sibling_lanes(s->wf, rg->combo)
+                          ? c->n_sibs
+                          : 1;
+            flat = (float)(c->flat_emission / n_lanes);
+        }
+        int64_t k_phi = j - rg->first; /* one light cell (wf_setup) */
+        double u = s->u0 + lambda_lattice(rg - s->rings, k_phi, 0);
+        if (u >= 1.0)
+            u -= 1.0;
+        for (int sib = 0; sib < n_lanes; sib++) {
+            int k = run->n++;
+            double uj = u + SIB_OFFSET[sib];
+            double lam = spec_sample_uniform(uj < 1.0 ? uj : uj - 1.0);
+            run->theta[k] = (float)rg->theta;
+            run->dphi[k] = (float)rg->dphi;
+            run->kphi[k] = (float)k_phi;
+            run->cell[k] = (float)rg->cell;
+            run->lambda[k] = (float)lam;
+            run->emission[k] =
+                c->tc.chromatic
+                    ? (float)(spec_emitter_eval(&c->em, lam) / n_lanes)
+                    : flat;
+            run->white[k] = n_lanes == 1 ? 1.0f
+                            : sib == 0   ? (float)n_lanes
+                                         : 0.0f;
+            run->idx_lo[k] = (uint32_t)j;
+            run->idx_hi[k] = (uint32_t)((uint64_t)j >> 32);
+        }
+    }
+    if (run->n > 0 && !out->failed)
+        wf_trace(s->wf, s->wf_st[thread], run, out);
+}
+
 static void shoot_batch(void *ctx, int64_t item, int thread)
 {
-    (void)thread;
     struct shoot *s = ctx;
     int64_t lo = item * PHOTON_BATCH;
     int64_t hi = lo + PHOTON_BATCH < s->n_photons ? lo + PHOTON_BATCH
                                                   : s->n_photons;
-    if (atomic_load(&s->over_budget))
+    if (atomic_load(&s->over_budget) ||
+        (s->opts->interrupt && *s->opts->interrupt))
         return;
+    if (s->wf) {
+        wf_batch(s, lo, hi, thread, &s->outs[item]);
+        int64_t n = atomic_fetch_add(&s->n_stored,
+                                     (int64_t)s->outs[item].n) +
+                    (int64_t)s->outs[item].n;
+        if ((double)n > s->store_cap)
+            atomic_store(&s->over_budget, true);
+        return;
+    }
     /* one search per batch, then the rings in order */
     const struct ring *rg = ring_of(s, lo);
     const struct ring *last = s->rings + s->n_rings - 1;
@@ -758,8 +872,92 @@ static void shoot_batch(void *ctx, int64_t item, int thread)
         atomic_store(&s->over_budget, true);
 }
 
+/* Frees the wavefront tracer and the lanes (none: nothing). */
+static void wf_teardown(struct shoot *s)
+{
+    for (int t = 0; t < s->wf_threads; t++) {
+        if (s->wf_st)
+            wf_state_free(s->wf_st[t]);
+        if (s->wf_run)
+            iris_free(s->wf_run[t]);
+    }
+    iris_free(s->wf_st);
+    iris_free(s->wf_run);
+    wf_destroy(s->wf);
+    s->wf = NULL;
+    s->wf_st = NULL;
+    s->wf_run = NULL;
+    s->wf_threads = 0;
+}
+
+/*
+** The wavefront tracer for this pass, when it takes every combo and is
+** not turned off (photon_options.no_wavefront, IRIS_NO_WAVEFRONT): s->wf
+** and each thread's lanes, or s->wf NULL (trace.c shoots).
+*/
+static void wf_setup(struct shoot *s)
+{
+    const char *env = getenv("IRIS_NO_WAVEFRONT");
+    if (s->opts->no_wavefront || (env && *env && strcmp(env, "0") != 0) ||
+        s->n_combos <= 0)
+        return;
+    struct wf_light *L = iris_calloc((size_t)s->n_combos, sizeof *L);
+    const struct ptrace_combo **tc =
+        iris_calloc((size_t)s->n_combos, sizeof *tc);
+    bool ok = L && tc;
+    for (int i = 0; ok && i < s->n_combos; i++) {
+        const struct combo *c = &s->combos[i];
+        const iris_light *l = c->tc.light;
+        ok = c->n1 * c->n2 == 1; /* no area-light grid */
+        tc[i] = &c->tc;
+        L[i] = (struct wf_light){
+            .parallel = c->tc.parallel,
+            .origin = c->origin,
+            .axis = c->axis,
+            .a = c->a,
+            .b = c->b,
+            .base = v3_madd(c->ctr, c->axis, -c->dist),
+            .dtheta = c->dtheta,
+            .jitter = s->jitter,
+            .pass = s->opts->pass,
+            .seed = s->opts->seed,
+            .chromatic = c->tc.chromatic,
+            .atten = l->kind == IRIS_LIGHT_SPOT && !l->parallel
+                         ? WF_ATTEN_SPOT
+                     : l->kind == IRIS_LIGHT_CYLINDER ? WF_ATTEN_CYLINDER
+                                                      : WF_ATTEN_ONE,
+            .beam = c->beam,
+            .location = l->location,
+            .spot_cr = c->spot_cr,
+            .spot_cf = c->spot_cf,
+            .radius = l->radius,
+            .falloff = l->falloff,
+        };
+    }
+    if (ok)
+        s->wf = wf_build(s->scene, s->w, tc, L, s->n_combos, NULL);
+    iris_free(L);
+    iris_free(tc);
+    if (!s->wf)
+        return;
+    int nt = s->opts->threads > 1 ? s->opts->threads : 1;
+    s->wf_threads = nt;
+    s->wf_st = iris_calloc((size_t)nt, sizeof *s->wf_st);
+    s->wf_run = iris_calloc((size_t)nt, sizeof *s->wf_run);
+    ok = s->wf_st && s->wf_run;
+    for (int t = 0; ok && t < nt; t++) {
+        s->wf_st[t] = wf_state_new();
+        s->wf_run[t] = iris_malloc(sizeof *s->wf_run[t]);
+        ok = s->wf_st[t] && s->wf_run[t];
+    }
+    if (!ok) { /* no memory for the lanes: the scalar tracer */
+        wf_teardown(s);
+    }
+}
+
 static void shoot_fini(struct shoot *s, int64_t n_batches)
 {
+    wf_teardown(s);
     if (s->outs)
         for (int64_t b = 0; b < n_batches; b++)
             if (!s->outs[b].borrowed)
@@ -958,11 +1156,17 @@ static enum iris_status build_caustic(const iris_scene *scene,
         }
     }
     if (rc == IRIS_OK)
+        wf_setup(&s);
+    st.wavefront = s.wf ? s.n_photons : 0;
+    if (rc == IRIS_OK)
         par_for(opts->threads, n_batches, shoot_batch, &s);
+    if (rc == IRIS_OK && opts->interrupt && *opts->interrupt)
+        rc = IRIS_EINTR; /* batches were skipped: no map */
     if (rc == IRIS_OK && atomic_load(&s.over_budget)) {
         const char *file;
         iris_loc loc;
-        photon_loc(&s, &file, &loc);
+        double density;
+        photon_loc(&s, st.spacing, &file, &loc, &density);
         char have[32];
         fprintf(opts->log ? opts->log : stderr,
                 "%s:%u:%u: error: photons: %.3g photons would store more "

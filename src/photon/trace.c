@@ -231,6 +231,23 @@ static const struct ptrace_tex *tex_lookup(const struct ptrace_combo *c,
     return e;
 }
 
+double ptrace_tex_transm(const struct ptrace_tex *e, double lambda)
+{
+    bool grey_out = true;
+    double t = 1.0;
+    for (int i = 0; i < e->n_layers; i++)
+        t *= layer_transm(&e->pigment[i], lambda, &grey_out);
+    return t;
+}
+
+const struct ptrace_tex *ptrace_tex_get(const struct ptrace_combo *c,
+                                        struct ptrace_tex_cache *tc,
+                                        const iris_texture *tex)
+{
+    /* a uniform texture's slot does not depend on the normal */
+    return tex ? tex_lookup(c, tc, tex, v3(0, 1, 0)) : NULL;
+}
+
 static double fresnel_n(const iris_object *const *stack,
                         const iris_object *const *tops, int n_stack,
                         const struct hit *h, double lambda);
@@ -395,7 +412,7 @@ static double fade_factor(const iris_interior *in, double d, double lambda)
 }
 
 /* POV-Ray's flag logic for refraction/reflection (semantics §2.5). */
-static bool allowed(enum iris_tristate obj, enum iris_tristate light)
+bool ptrace_allowed(enum iris_tristate obj, enum iris_tristate light)
 {
     return (obj == IRIS_ON && light != IRIS_OFF) ||
            (obj != IRIS_OFF && light == IRIS_ON);
@@ -407,14 +424,16 @@ static inline bool refl_allowed(const struct ptrace_combo *c,
                                 const iris_object *obj)
 {
     return c->global ||
-           allowed(obj->photon_reflection, c->light->photon_reflection);
+           ptrace_allowed(obj->photon_reflection,
+                          c->light->photon_reflection);
 }
 
 static inline bool refr_allowed(const struct ptrace_combo *c,
                                 const iris_object *obj)
 {
     return c->global ||
-           allowed(obj->photon_refraction, c->light->photon_refraction);
+           ptrace_allowed(obj->photon_refraction,
+                          c->light->photon_refraction);
 }
 
 _Static_assert(PTRACE_SIBS <= 3, "deposit_sibs sums equal powers as p * n");

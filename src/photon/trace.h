@@ -69,6 +69,22 @@ struct ptrace_tex_cache {
     int64_t hits;              /* hits answered from a uniform slot */
 };
 
+/* The cache's slot of texture 'tex' (NULL: none), filled on first use:
+** what a photon sees at every point of a texture one colour everywhere
+** ('uniform'; wavefront.c resolves each primitive's surface with it). */
+const struct ptrace_tex *ptrace_tex_get(const struct ptrace_combo *c,
+                                        struct ptrace_tex_cache *tc,
+                                        const iris_texture *tex);
+
+/* The transmittance of uniform texture 'e' at 'lambda' (nm): the layers'
+** product as eval_surface() takes it at every hit (wavefront.c tabulates
+** a coloured filter's with it). */
+double ptrace_tex_transm(const struct ptrace_tex *e, double lambda);
+
+/* POV-Ray's photon flag rule (semantics §2.5): the object's refraction or
+** reflection flag 'obj' with the light's 'light'. */
+bool ptrace_allowed(enum iris_tristate obj, enum iris_tristate light);
+
 /* A growable buffer of raw photons (one per batch). */
 struct ptrace_out {
     struct pstore_raw *ph;

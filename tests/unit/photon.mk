@@ -42,3 +42,10 @@ tests_unit_test_psib_SOURCES = tests/unit/test_psib.c \
 	tests/unit/photon_world.c tests/unit/photon_world.h tests/testutil.h
 tests_unit_test_psib_CFLAGS = $(TEST_CFLAGS)
 tests_unit_test_psib_LDADD = $(TEST_LDADD)
+# the wavefront photon tracer against the scalar one (wavefront.h)
+check_PROGRAMS += tests/unit/test_pwave
+TESTS += tests/unit/test_pwave
+tests_unit_test_pwave_SOURCES = tests/unit/test_pwave.c \
+	tests/unit/parse_util.h tests/testutil.h
+tests_unit_test_pwave_CFLAGS = $(TEST_CFLAGS)
+tests_unit_test_pwave_LDADD = $(TEST_LDADD)

@@ -27,6 +27,10 @@ static inline void build_photon_map_pair(
         o.seed = seed;
         o.mat = mc;
         o.global_photons = 40000;
+        /* both ways are the scalar tracer's, whose maps these compare
+        ** record for record (the wavefront tracer's is another sample:
+        ** test_pwave.c) */
+        o.no_wavefront = true;
         if (k == 1)
             second(&o);
         m[k] = NULL;

@@ -335,7 +335,7 @@ static void test_multi_deposit(void **state)
     struct photon_stats st[2];
     for (int t = 0; t < 2; t++) {
         struct photon_options o = { t + 1, 12345, 0, 0, NULL, 0, NULL, 0,
-                                    false, false, false };
+                                    false, false, false, false, NULL };
         assert_int_equal(pmap_build(&tw.scene, &w, &o, &m[t], &st[t]),
                          IRIS_OK);
         assert_non_null(m[t]);
@@ -543,7 +543,8 @@ static struct photon_map *build(struct tw_scene *t, int threads)
 {
     struct pmap_world w = tw_world(t);
     struct photon_options o = { threads, 12345, 0,    0,
-                                NULL,    0,     NULL, 0, false, false, false };
+                                NULL,    0,     NULL, 0, false, false, false,
+                                false, NULL };
     struct photon_map *m = NULL;
     struct photon_stats st;
     assert_int_equal(pmap_build(&t->scene, &w, &o, &m, &st), IRIS_OK);
@@ -648,7 +649,8 @@ static void test_slab_flux_accel(void **state)
     struct mat_ctx *mc = NULL;
     assert_int_equal(mat_ctx_create(&tw.scene, stderr, &mc), IRIS_OK);
     struct photon_options o = { 2,  12345, 0,    0,    mc,
-                                0,  NULL,  0, false, false, false };
+                                0,  NULL,  0, false, false, false, false,
+                                NULL };
     struct photon_map *m = NULL;
     struct photon_stats st;
     assert_int_equal(photon_map_build(&tw.scene, a, &o, &m, &st), IRIS_OK);
@@ -863,7 +865,7 @@ static void test_progressive_ball(void **state)
                 continue; /* 16 fixed-radius passes already plateau */
             struct photon_options o = { 2,    777,   p,    0,
                                         NULL, 0,     NULL, 0,
-                                        false, false, false };
+                                        false, false, false, false, NULL };
             o.radius_scale = fixed ? 1.0 : progressive_radius_scale(p);
             struct photon_map *m = NULL;
             assert_int_equal(pmap_build(&tw.scene, &w, &o, &m, NULL),
@@ -1068,7 +1070,8 @@ static void test_rules(void **state)
     iris_object *floor = tw_plane(&tw, v3(0, 1, 0), 0, WHITE, 1);
     struct pmap_world w = tw_world(&tw);
     struct photon_options o = { 1, 1,    0, 0,     NULL,
-                                0, NULL, 0, false, false, false };
+                                0, NULL, 0, false, false, false, false,
+                                NULL };
     struct photon_map *m = (struct photon_map *)1;
     tw.scene.settings.photons.enabled = false;
     assert_int_equal(pmap_build(&tw.scene, &w, &o, &m, NULL), IRIS_OK);
