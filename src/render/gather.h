@@ -62,12 +62,15 @@ void gather_ctx_fini(struct trace_ctx *c);
 
 /*
 ** POV-Ray's radiosity 'ambient colour' at eye hit 'h' with unit normal
-** 'n' facing the eye ray: the mean radiance over the cosine-weighted
+** 'raw' facing the eye ray: the mean radiance over the cosine-weighted
 ** hemisphere, times brightness, gray_threshold applied. A surface adds
 ** pigment x it x diffuse x opacity. 'weight' is the ray's (adc_bailout).
+** 'layer_n' is the layer's perturbed normal: with radiosity's 'normal
+** on' the hemisphere is about it (cut off at raw's tangent plane) and
+** the cache is searched and filled under it; otherwise it is not used.
 */
 void gather_irradiance(struct trace_ctx *c, const struct tray *eye,
-                       const struct hit *h, vec3 n, double weight,
-                       double out[3]);
+                       const struct hit *h, vec3 raw, vec3 layer_n,
+                       double weight, double out[3]);
 
 #endif

@@ -14,3 +14,4 @@ libiris_core_la_SOURCES += %reldir%/render.c \
 	%reldir%/rainbow.c %reldir%/rainbow.h
 libiris_core_la_SOURCES += %reldir%/progressive.c %reldir%/progressive.h
 libiris_core_la_SOURCES += %reldir%/mpi_passes.c %reldir%/mpi_passes.h
+libiris_core_la_SOURCES += %reldir%/subsurface.c %reldir%/subsurface.h
