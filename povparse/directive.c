@@ -54,6 +54,14 @@ static double cond_value(pp_state *ps)
     return header_float(ps);
 }
 
+/* The condition of #if, #elseif or #while: true when further than
+** POV-Ray's EPSILON from zero, as POV-Ray tests it ('#if (1e-11)' is
+** false). */
+static bool cond_true(pp_state *ps)
+{
+    return pp_true(cond_value(ps));
+}
+
 /* Assigns 'v' to array element [..] of 'arr'; reads the indices. */
 static pp_value *array_slot(pp_state *ps, pp_array *arr)
 {
@@ -88,6 +96,7 @@ static void do_declare(pp_state *ps, bool local)
     pp_token name = ps->tok;
     const char *text = pp_tok_text(ps, &name);
     pp_value *slot = NULL;
+    pp_array *slot_arr = NULL;
     pp_sym *target = NULL;
     if (pp_accept(ps, T_LBRACKET)) {
         pp_unget(ps);
@@ -95,12 +104,29 @@ static void do_declare(pp_state *ps, bool local)
         if (!s || s->val.kind != V_ARRAY)
             pp_error(ps, &name, "'%.*s' is not an array", (int)name.len,
                      text);
-        slot = array_slot(ps, s->val.u.arr);
+        slot_arr = s->val.u.arr;
+        slot = array_slot(ps, slot_arr);
         /* an element of an array held in an array: A[i][j] = ... */
         while (slot->kind == V_ARRAY && pp_accept(ps, T_LBRACKET)) {
             pp_unget(ps);
-            slot = array_slot(ps, slot->u.arr);
+            slot_arr = slot->u.arr;
+            slot = array_slot(ps, slot_arr);
         }
+    }
+    if (!slot) {
+        /* POV-Ray's Parse_Declare refuses a name that is a function or a
+        ** macro where it is seen, even for a #local that would make a new
+        ** one (colors.inc's CH2RGB '#local G' after '#declare G =
+        ** function ...'): "Redeclaring functions is not allowed" */
+        pp_sym *cur = sym_resolve(sym_lookup(ps, text, name.len));
+        if (cur && cur->val.kind == V_FUNCTION)
+            pp_error(ps, &name, "'%.*s' is a function: it cannot be "
+                     "redeclared (#undef it first, as POV-Ray requires)",
+                     (int)name.len, text);
+        if (cur && cur->val.kind == V_MACRO)
+            pp_error(ps, &name, "'%.*s' is a macro: #declare and #local "
+                     "cannot redefine it (#undef it first, as POV-Ray "
+                     "requires)", (int)name.len, text);
     }
     pp_expect(ps, T_EQUALS, "'='");
     /* #local writes to the table current at the '#local' (POV-Ray's
@@ -149,7 +175,7 @@ static void do_declare(pp_state *ps, bool local)
               (v.kind == V_FLOAT || v.kind == V_VECTOR || v.kind == V_COLOUR)))
             pp_error(ps, &name, "cannot store a %s in an array of %s",
                      pp_kind_name(v.kind), pp_kind_name(slot->kind));
-        *slot = v;
+        pp_array_store(ps, slot_arr, slot, &v, &name);
     } else {
         if (local) {
             target = sym_define(ps, scope, text, name.len);
@@ -175,6 +201,14 @@ static void do_declare(pp_state *ps, bool local)
             if (strict)
                 pp_error(ps, &ps->tok, no_semi);
             pp_unget(ps);
+        } else if (v.kind == V_FLOAT || v.kind == V_VECTOR ||
+                   v.kind == V_COLOUR) {
+            /* POV-Ray's Parse_Declare allows one more ';' after the one
+            ** a float, vector or colour requires: meshmaker.inc's
+            ** FindPoint() ends its value with ';' and the caller writes
+            ** '#local P = FindPoint(su, sv);' (pp_accept runs the
+            ** macro's #end first) */
+            pp_accept(ps, T_SEMI);
         }
     }
 }
@@ -198,7 +232,7 @@ static void branch(pp_state *ps, const pp_token *at, bool cond)
             return;
         }
         /* #elseif (cond) */
-        if (cond_value(ps) != 0)
+        if (cond_true(ps))
             return;
     }
 }
@@ -319,7 +353,7 @@ static void do_end(pp_state *ps, const pp_token *at)
                         "--max-loop-iterations=N)", limit);
         fr->pos = c->cond_pos;
         ps->n_unget = 0;
-        if (cond_value(ps) != 0)
+        if (cond_true(ps))
             return;
         pp_cond opener = *c;
         pp_skip(ps, SKIP_END, &opener);
@@ -395,6 +429,20 @@ void pp_call_macro(pp_state *ps, const pp_macro *m, const pp_token *call)
     int n = 0;
     if (!pp_accept(ps, T_RPAREN)) {
         for (;;) {
+            if (n >= m->n_params && n > 0 && ps->tok.kind != T_COMMA) {
+                /* the last argument ended before an operator it does not
+                ** take: 'M(1 < 2)' (POV-Ray: "Expected ')'") */
+                int k = ps->tok.kind;
+                bool cmp = k == T_LT || k == T_GT || k == T_LE ||
+                           k == T_GE || k == T_EQUALS || k == T_NE ||
+                           k == T_AMP || k == T_BAR || k == T_QUESTION;
+                char buf[80];
+                pp_error(ps, &ps->tok, "expected ')' after the argument%s "
+                         "of macro '%s', found %s%s", n > 1 ? "s" : "",
+                         m->name, pp_tok_name(ps, &ps->tok, buf, sizeof buf),
+                         cmp ? " (a comparison or a logical operator in an "
+                               "argument needs parentheses)" : "");
+            }
             if (n >= m->n_params)
                 pp_error(ps, &ps->tok, "too many parameters in the call of "
                          "macro '%s' (it takes %d)", m->name, m->n_params);
@@ -803,8 +851,14 @@ static void do_message(pp_state *ps, int kind, const pp_token *at)
         pp_warning(ps, at, "#warning: %s", s);
         return;
     }
-    if (!ps->opt.quiet_debug)
-        fputs(s, ps->opt.debug_stream ? ps->opt.debug_stream : stderr);
+    if (ps->opt.quiet_debug)
+        return;
+    /* POV-Ray 3.7's message streams end a line at '\r' too: "a\rb" comes
+    ** out as two lines, "\r\n" as two line breaks (measured with
+    ** povray 3.7.0.10; the mesh macros' progress lines use '\r'). */
+    FILE *out = ps->opt.debug_stream ? ps->opt.debug_stream : stderr;
+    for (; *s; s++)
+        fputc(*s == '\r' ? '\n' : *s, out);
 }
 
 /* #default { texture | pigment | finish | normal } */
@@ -841,10 +895,12 @@ void pp_default_block(pp_state *ps)
             continue;
         case T_RBRACE:
             return;
-        case T_RADIOSITY:
-            pp_expect(ps, T_LBRACE, "'{'");
-            pp_skip_block(ps);
+        case T_RADIOSITY: {
+            double imp = pp_radiosity_block(ps);
+            if (imp > 0.0)
+                ps->scene->settings.rad_default_importance = imp;
             continue;
+        }
         default: {
             char buf[80];
             pp_error(ps, &ps->tok, "expected texture, pigment, finish or "
@@ -872,7 +928,7 @@ void pp_directive(pp_state *ps, const pp_token *hash)
         sym_undef(ps, pp_tok_text(ps, &ps->tok), ps->tok.len);
         return;
     case T_IF:
-        branch(ps, &at, cond_value(ps) != 0);
+        branch(ps, &at, cond_true(ps));
         return;
     case T_IFDEF:
         branch(ps, &at, pp_is_defined(ps));
@@ -901,7 +957,7 @@ void pp_directive(pp_state *ps, const pp_token *hash)
         return;
     case T_WHILE: {
         uint32_t cond_pos = ps->frames[ps->n_frames - 1].pos;
-        bool run = cond_value(ps) != 0;
+        bool run = cond_true(ps);
         pp_push_cond(ps, C_WHILE, &at);
         ps->conds[ps->n_conds - 1].cond_pos = cond_pos;
         if (!run) {

@@ -62,6 +62,7 @@ void pp_value_promote(pp_value *v, int dim)
 {
     if (v->dim >= dim)
         return;
+    v->leftover = false;
     if (v->dim == 1)
         for (int i = 1; i < dim; i++)
             v->v[i] = v->v[0];
@@ -268,296 +269,6 @@ static const char *fmt_float(pp_state *ps, double f, int len, int prec)
     return pp_strdup(ps, buf, strlen(buf));
 }
 
-/* The box POV-Ray gives a cylinder or cone (Cone::Compute_BBox): in
-** its own frame, where the axis from 'base' to 'cap' is z, the box
-** [-r, r]^2 x [0, 1] with r the larger radius, taken to world space by
-** the rotation that turns z onto the axis about (-d.y, d.x, 0) (POV-Ray's
-** Compute_Coordinate_Transform) and then by the object's transform. Its
-** world box is tight along the axis: a cylinder from 0 to 2y has
-** max_extent y = 2, not 2 + r. */
-static void axial_bounds(const iris_object *o, vec3 base, vec3 cap, double r,
-                         vec3 *lo, vec3 *hi)
-{
-    vec3 d = v3_sub(cap, base);
-    double len = v3_len(d);
-    vec3 u = v3(1, 0, 0), w = v3(0, 1, 0);
-    if (len > 0) {
-        d = v3_scale(d, 1 / len);
-        if (fabs(d.z) <= 1 - 1e-10) {
-            /* Rodrigues: rotate x and y about k by acos(d.z) */
-            double kl = sqrt(d.x * d.x + d.y * d.y);
-            vec3 k = v3(-d.y / kl, d.x / kl, 0);
-            double c = d.z, sn = kl;
-            vec3 e[2] = { v3(1, 0, 0), v3(0, 1, 0) };
-            for (int i = 0; i < 2; i++) {
-                vec3 v = e[i];
-                vec3 kv = v3(k.y * v.z - k.z * v.y, k.z * v.x - k.x * v.z,
-                             k.x * v.y - k.y * v.x);
-                double kd = k.x * v.x + k.y * v.y + k.z * v.z;
-                e[i] = v3_add(v3_add(v3_scale(v, c), v3_scale(kv, sn)),
-                              v3_scale(k, kd * (1 - c)));
-            }
-            u = e[0];
-            w = e[1];
-        }
-    }
-    *lo = v3(1e30, 1e30, 1e30);
-    *hi = v3(-1e30, -1e30, -1e30);
-    for (int i = 0; i < 8; i++) {
-        vec3 p = v3_add(i & 4 ? cap : base,
-                        v3_add(v3_scale(u, i & 1 ? r : -r),
-                               v3_scale(w, i & 2 ? r : -r)));
-        if (o->has_transform)
-            p = xf_point(&o->transform, p);
-        *lo = v3_min(*lo, p);
-        *hi = v3_max(*hi, p);
-    }
-}
-
-/* The scale s when the linear part of 't' is s times a rotation, else 0:
-** POV-Ray moves a sphere's centre and radius under such a transform and
-** keeps its box tight; any other makes it an ellipsoid boxed by the
-** transformed corners (Sphere::Transform). */
-static double similarity_scale(const iris_transform *t)
-{
-    double c[3][3];
-    for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 3; j++) {
-            c[i][j] = 0;
-            for (int k = 0; k < 3; k++)
-                c[i][j] += t->m[k][i] * t->m[k][j];
-        }
-    double s2 = c[0][0];
-    for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 3; j++)
-            if (fabs(c[i][j] - (i == j ? s2 : 0)) > 1e-9 * s2)
-                return 0;
-    return sqrt(s2);
-}
-
-/* POV-Ray's SMALL_TOLERANCE: the half thickness it gives flat boxes. */
-#define POV_SMALL_TOLERANCE 0.001
-
-/* The largest radius of a sor's profile (Sor::Compute_Sor): POV-Ray fits
-** r^2(y) on each segment P[i+1]..P[i+2] with the cubic through both ends
-** whose slopes come from the neighbours, and bounds the segment by the
-** largest of r at its ends and at the cubic's turning points inside it,
-** so the box can pass the control points' radii. 'y_lo'/'y_hi' get the
-** heights of the first and last segment ends. */
-static double sor_radius(const iris_vec2 *P, int n, double *y_lo,
-                         double *y_hi)
-{
-    double rmax = 0;
-    *y_lo = 1e30;
-    *y_hi = -1e30;
-    for (int i = 0; i + 3 < n; i++) {
-        double y0 = P[i + 1].v, y1 = P[i + 2].v, h = y1 - y0;
-        double k0 = P[i + 1].u * P[i + 1].u, k1 = P[i + 2].u * P[i + 2].u;
-        double d0 = 2 * P[i + 1].u * (P[i + 2].u - P[i].u) /
-                    (P[i + 2].v - P[i].v);
-        double d1 = 2 * P[i + 2].u * (P[i + 3].u - P[i + 1].u) /
-                    (P[i + 3].v - P[i + 1].v);
-        *y_lo = fmin(*y_lo, y0);
-        *y_hi = fmax(*y_hi, y1);
-        rmax = fmax(rmax, fmax(fabs(P[i + 1].u), fabs(P[i + 2].u)));
-        if (!(fabs(h) > 0) || !isfinite(d0) || !isfinite(d1))
-            continue;   /* the parser rejects these profiles */
-        /* The Hermite cubic in t = (y - y0)/h; its derivative's roots in
-        ** [0, 1] are the turning points of r^2 on the segment. */
-        double m0 = d0 * h, m1 = d1 * h;
-        double a = 6 * k0 + 3 * m0 - 6 * k1 + 3 * m1;
-        double b = -6 * k0 - 4 * m0 + 6 * k1 - 2 * m1;
-        double c = m0;
-        double t[2];
-        int nt = 0;
-        if (fabs(a) < 1e-12 * (fabs(b) + fabs(c) + 1e-300)) {
-            if (b != 0)
-                t[nt++] = -c / b;
-        } else {
-            double disc = b * b - 4 * a * c;
-            if (disc >= 0) {
-                double q = sqrt(disc);
-                t[nt++] = (-b - q) / (2 * a);
-                t[nt++] = (-b + q) / (2 * a);
-            }
-        }
-        for (int j = 0; j < nt; j++) {
-            double u = t[j];
-            if (!(u >= 0 && u <= 1))
-                continue;
-            double u2 = u * u, u3 = u2 * u;
-            double r2 = (2 * u3 - 3 * u2 + 1) * k0 + (u3 - 2 * u2 + u) * m0 +
-                        (-2 * u3 + 3 * u2) * k1 + (u3 - u2) * m1;
-            rmax = fmax(rmax, sqrt(fmax(r2, 0)));
-        }
-    }
-    return rmax;
-}
-
-/* The object bounds used by min_extent/max_extent: world-space box of
-** the simple primitives, unions of CSG children. False (and POV-Ray's
-** infinite box, +-1e10) when the parser cannot bound 'o' itself. */
-static bool object_bounds(const iris_object *o, vec3 *lo, vec3 *hi)
-{
-    vec3 a, b;
-    const pp_obj *po = (const pp_obj *)o;
-    if (po->has_box) {
-        *lo = po->box_lo;
-        *hi = po->box_hi;
-        return true;
-    }
-    switch (o->kind) {
-    case IRIS_OBJ_SPHERE: {
-        double r = o->u.sphere.radius, sc;
-        if (o->has_transform &&
-            (sc = similarity_scale(&o->transform)) > 0) {
-            vec3 c = xf_point(&o->transform, o->u.sphere.centre);
-            r *= sc;
-            *lo = v3_sub(c, v3(r, r, r));
-            *hi = v3_add(c, v3(r, r, r));
-            return true;
-        }
-        a = v3_add(o->u.sphere.centre, v3(-r, -r, -r));
-        b = v3_add(o->u.sphere.centre, v3(r, r, r));
-        break;
-    }
-    case IRIS_OBJ_BOX:
-        a = v3_min(o->u.box.lo, o->u.box.hi);
-        b = v3_max(o->u.box.lo, o->u.box.hi);
-        break;
-    case IRIS_OBJ_CYLINDER:
-        axial_bounds(o, o->u.cylinder.base, o->u.cylinder.cap,
-                     o->u.cylinder.radius, lo, hi);
-        return true;
-    case IRIS_OBJ_CONE:
-        axial_bounds(o, o->u.cone.base, o->u.cone.cap,
-                     fmax(o->u.cone.base_radius, o->u.cone.cap_radius),
-                     lo, hi);
-        return true;
-    case IRIS_OBJ_DISC: {
-        /* Disc::Compute_BBox: [-r, r]^2 x [-0.001, 0.001] in the disc's
-        ** frame (normal on z, the same rotation as a cylinder's axis). */
-        vec3 n = o->u.disc.normal, c = o->u.disc.centre;
-        double nl = v3_len(n);
-        if (nl > 0)
-            n = v3_scale(n, POV_SMALL_TOLERANCE / nl);
-        axial_bounds(o, v3_sub(c, n), v3_add(c, n), o->u.disc.radius,
-                     lo, hi);
-        return true;
-    }
-    case IRIS_OBJ_POLYGON: {
-        /* Polygon::Compute_BBox: the transformed vertices' box, a flat
-        ** side widened to +-0.001. */
-        int n = o->u.polygon.n_points;
-        if (n < 1)
-            break;
-        *lo = v3(1e30, 1e30, 1e30);
-        *hi = v3(-1e30, -1e30, -1e30);
-        for (int i = 0; i < n; i++) {
-            vec3 p = o->u.polygon.points[i];
-            if (o->has_transform)
-                p = xf_point(&o->transform, p);
-            *lo = v3_min(*lo, p);
-            *hi = v3_max(*hi, p);
-        }
-        double *l = &lo->x, *h = &hi->x;
-        for (int k = 0; k < 3; k++)
-            if (fabs(h[k] - l[k]) < POV_SMALL_TOLERANCE) {
-                l[k] -= POV_SMALL_TOLERANCE;
-                h[k] += POV_SMALL_TOLERANCE;
-            }
-        return true;
-    }
-    case IRIS_OBJ_SUPERELLIPSOID:
-        /* Superellipsoid::Compute_BBox: +-1.0001 whatever e and n are */
-        a = v3(-1.0001, -1.0001, -1.0001);
-        b = v3(1.0001, 1.0001, 1.0001);
-        break;
-    case IRIS_OBJ_SOR: {
-        double y0, y1;
-        double r = sor_radius(o->u.lathe.points, o->u.lathe.n_points,
-                              &y0, &y1);
-        if (o->u.lathe.n_points < 4)
-            goto unknown;
-        a = v3(-r, y0, -r);
-        b = v3(r, y1, r);
-        break;
-    }
-    case IRIS_OBJ_SPHERE_SWEEP: {
-        /* SphereSweep::Compute_BBox in 3.7: every control sphere, its
-        ** radius doubled for a cubic_spline (Catmull-Rom) sweep, which
-        ** can overshoot them. */
-        int n = o->u.sphere_sweep.n_spheres;
-        double f = o->u.sphere_sweep.spline == 2 ? 2 : 1;
-        if (n < 1)
-            goto unknown;
-        a = v3(1e30, 1e30, 1e30);
-        b = v3(-1e30, -1e30, -1e30);
-        for (int i = 0; i < n; i++) {
-            double r = f * o->u.sphere_sweep.radii[i];
-            vec3 c = o->u.sphere_sweep.centres[i];
-            a = v3_min(a, v3_sub(c, v3(r, r, r)));
-            b = v3_max(b, v3_add(c, v3(r, r, r)));
-        }
-        break;
-    }
-    case IRIS_OBJ_TORUS: {
-        double R = o->u.torus.major + o->u.torus.minor, r = o->u.torus.minor;
-        a = v3(-R, -r, -R);
-        b = v3(R, r, R);
-        break;
-    }
-    case IRIS_OBJ_UNION: case IRIS_OBJ_MERGE:
-    case IRIS_OBJ_INTERSECTION: case IRIS_OBJ_DIFFERENCE: {
-        /* children already carry the full transform */
-        *lo = v3(1e30, 1e30, 1e30);
-        *hi = v3(-1e30, -1e30, -1e30);
-        int n = o->u.csg.n_children;
-        if (o->kind == IRIS_OBJ_DIFFERENCE && n > 0)
-            n = 1;
-        bool known = true;
-        for (int i = 0; i < n; i++) {
-            vec3 cl, ch;
-            if (!object_bounds(o->u.csg.children[i], &cl, &ch))
-                known = false;
-            if (o->kind == IRIS_OBJ_INTERSECTION && i > 0) {
-                *lo = v3_max(*lo, cl);
-                *hi = v3_min(*hi, ch);
-            } else {
-                *lo = v3_min(*lo, cl);
-                *hi = v3_max(*hi, ch);
-            }
-        }
-        if (!known) {
-            *lo = v3(-1e10, -1e10, -1e10);
-            *hi = v3(1e10, 1e10, 1e10);
-        }
-        return known;
-    }
-    default:
-    unknown:
-        *lo = v3(-1e10, -1e10, -1e10);
-        *hi = v3(1e10, 1e10, 1e10);
-        return false;
-    }
-    /* Transform the 8 corners. */
-    *lo = v3(1e30, 1e30, 1e30);
-    *hi = v3(-1e30, -1e30, -1e30);
-    for (int i = 0; i < 8; i++) {
-        vec3 p = v3(i & 1 ? b.x : a.x, i & 2 ? b.y : a.y, i & 4 ? b.z : a.z);
-        if (o->has_transform)
-            p = xf_point(&o->transform, p);
-        *lo = v3_min(*lo, p);
-        *hi = v3_max(*hi, p);
-    }
-    return true;
-}
-
-bool pp_object_bounds(const iris_object *o, vec3 *lo, vec3 *hi)
-{
-    return object_bounds(o, lo, hi);
-}
-
 static const iris_object *object_arg(pp_state *ps)
 {
     lparen(ps);
@@ -760,6 +471,11 @@ static bool is_colour_kw(int k)
            k == T_RGBFT || k == T_SRGB || k == T_SRGBF || k == T_SRGBT ||
            k == T_SRGBFT || k == T_RED || k == T_GREEN || k == T_BLUE ||
            k == T_FILTER || k == T_TRANSMIT;
+}
+
+bool pp_is_colour_keyword(int kind)
+{
+    return is_colour_kw(kind);
 }
 
 bool pp_starts_expr(pp_state *ps)
@@ -1245,7 +961,7 @@ static pp_value factor(pp_state *ps)
         const iris_object *o = object_arg(ps);
         vec3 lo, hi;
         const iris_geometry_queries *g = ps->opt.geometry;
-        if (!object_bounds(o, &lo, &hi) && g && g->bounds &&
+        if (!pp_object_bounds(o, &lo, &hi) && g && g->bounds &&
             !g->bounds(g->user, ps->scene, pp_query_object(ps, o), &lo, &hi)) {
             lo = v3(-1e10, -1e10, -1e10); /* unbounded: POV-Ray's box */
             hi = v3(1e10, 1e10, 1e10);
@@ -1327,6 +1043,10 @@ static pp_value factor(pp_state *ps)
     }
     case T_CHR: {
         double cv = arg1(ps);
+        /* POV-Ray: "Value N cannot be used in chr(...)" outside 0..65535
+        ** (a UCS-2 character; iris keeps 1..255 and a blank otherwise) */
+        if (!(cv > -1 && cv < 65536))
+            pp_error(ps, &at, "chr(%g): the value must be in 0..65535", cv);
         int c = cv >= 0 && cv < 256 ? (int)cv : 0;
         char ch[2] = { (char)(c > 0 && c < 256 ? c : ' '), 0 };
         return sval(pp_strdup(ps, ch, 1));
@@ -1401,37 +1121,61 @@ static pp_value factor(pp_state *ps)
     }
 }
 
-/* factor { '.' component } */
+/*
+** factor [ '.' component ]
+** POV-Ray's period operator (Parse_Num_Factor) takes one component and
+** leaves the others where they were: the value is a float whose
+** 'leftover' components a vector parameter still reads. Only one period
+** follows a factor, and on a float only the components its Terms hold
+** exist: 'F.y' is refused where a float is read (POV-Ray: "Bad operands
+** for period operator"), taken as F where a vector is.
+*/
 static pp_value postfix(pp_state *ps)
 {
+    int terms = ps->dot_terms > 1 ? ps->dot_terms : 1;
+    ps->dot_terms = 1; /* what the factor reads inside is its own */
     pp_value v = factor(ps);
-    while (peek_op(ps) == T_DOT) {
-        pp_next(ps);
-        pp_token dot = ps->tok;
-        pp_next(ps);
-        int i;
-        switch (ps->tok.kind) {
-        case T_X: case T_U: case T_RED: i = 0; break;
-        case T_Y: case T_V: case T_GREEN: i = 1; break;
-        case T_Z: case T_BLUE: i = 2; break;
-        case T_T: case T_FILTER: i = 3; break;
-        case T_TRANSMIT: i = 4; break;
-        case T_GRAY: {
-            need_numeric(ps, &dot, &v);
-            pp_value_promote(&v, 3);
-            v = fval(0.297 * v.v[0] + 0.589 * v.v[1] + 0.114 * v.v[2]);
-            continue;
-        }
-        default:
-            pp_error(ps, &ps->tok, "expected x, y, z, t, u, v or a colour "
-                     "component after '.'");
-        }
+    ps->dot_terms = terms;
+    if (peek_op(ps) != T_DOT)
+        return v;
+    pp_next(ps);
+    pp_token dot = ps->tok;
+    pp_next(ps);
+    int i;
+    switch (ps->tok.kind) {
+    case T_X: case T_U: case T_RED: i = 0; break;
+    case T_Y: case T_V: case T_GREEN: i = 1; break;
+    case T_Z: case T_BLUE: i = 2; break;
+    case T_T: case T_FILTER: i = 3; break;
+    case T_TRANSMIT: i = 4; break;
+    case T_GRAY: {
         need_numeric(ps, &dot, &v);
-        if (i >= v.dim && v.dim > 1)
+        pp_value_promote(&v, 3);
+        return fval(0.297 * v.v[0] + 0.589 * v.v[1] + 0.114 * v.v[2]);
+    }
+    default:
+        pp_error(ps, &ps->tok, "expected x, y, z, t, u, v or a colour "
+                 "component after '.'");
+    }
+    need_numeric(ps, &dot, &v);
+    int have = v.dim > 1 ? v.dim : v.leftover ? 1 : terms;
+    if (i >= have) {
+        if (v.dim > 1)
             pp_error(ps, &dot, "bad operand for '.': the value has %d "
                      "components", v.dim);
-        v = fval(v.dim == 1 ? v.v[0] : v.v[i]);
+        pp_error(ps, &dot, "bad operand for '.': a float has no '.%s' "
+                 "where a float is read (only .x, or .u, .red)",
+                 lex_keyword_name(ps->tok.kind));
     }
+    if (v.dim > 1) {
+        double c = v.v[i];
+        pp_value_promote(&v, 5);
+        v.v[0] = c;
+        v.kind = V_FLOAT;
+        v.dim = 1;
+        v.leftover = true;
+    }
+    /* a float's .x (or, in a vector, .y ...) is the float itself */
     return v;
 }
 
@@ -1449,7 +1193,7 @@ static pp_value unary(pp_state *ps)
             if (k == T_MINUS)
                 v.v[i] = -v.v[i];
             else if (k == T_BANG)
-                v.v[i] = v.v[i] == 0;
+                v.v[i] = !pp_true(v.v[i]);
         }
         return v;
     }
@@ -1457,34 +1201,104 @@ static pp_value unary(pp_state *ps)
     return postfix(ps);
 }
 
+/* POV-Ray's Terms after a left operand read where 'ctx' were asked
+** for: a vector's components, 1 after a period, else the float filled
+** all 'ctx' (the right operand is read with as many). */
+static int operand_terms(const pp_value *a, int ctx)
+{
+    if (a->leftover)
+        return 1;
+    return a->dim > ctx ? a->dim : ctx;
+}
+
 static pp_value expr_mul(pp_state *ps)
 {
+    int ctx = ps->dot_terms;
     pp_value a = unary(ps);
     for (;;) {
         int op = peek_op(ps);
         if (op != T_STAR && op != T_SLASH)
-            return a;
+            break;
         pp_next(ps);
         pp_token at = ps->tok;
+        ps->dot_terms = operand_terms(&a, ctx);
         pp_value b = unary(ps);
+        ps->dot_terms = ctx;
         binop(ps, &at, &a, &b, op);
     }
+    return a;
 }
 
 static pp_value expr_add(pp_state *ps)
 {
+    int ctx = ps->dot_terms;
     pp_value a = expr_mul(ps);
     for (;;) {
         int op = peek_op(ps);
         if (op != T_PLUS && op != T_MINUS)
-            return a;
+            break;
         pp_next(ps);
         pp_token at = ps->tok;
+        ps->dot_terms = operand_terms(&a, ctx);
         pp_value b = expr_mul(ps);
+        ps->dot_terms = ctx;
         binop(ps, &at, &a, &b, op);
     }
+    return a;
 }
 
+/* One relational operator, component by component as POV-Ray's
+** Parse_Rel_Term: the operands are promoted to the longer one (a float
+** fills every component, a shorter vector gets zeros), and each
+** component is 1 or 0, so '(<1,2,3> = <1,2,4>)' is <1,1,0>. Equality is
+** within POV-Ray's absolute EPSILON (1e-10), also for '<=' and '>=';
+** '<' and '>' are exact. */
+static void compare(pp_state *ps, const pp_token *at, pp_value *a,
+                    const pp_value *bb, int op)
+{
+    pp_value b = *bb;
+    need_numeric(ps, at, a);
+    need_numeric(ps, at, &b);
+    int dim = a->dim > b.dim ? a->dim : b.dim;
+    bool colour = a->kind == V_COLOUR || b.kind == V_COLOUR;
+    pp_value_promote(a, dim);
+    pp_value_promote(&b, dim);
+    for (int i = 0; i < dim; i++) {
+        double x = a->v[i], y = b.v[i];
+        bool same = !pp_true(x - y), r;
+        switch (op) {
+        case T_LT: r = x < y; break;
+        case T_LE: r = x <= y || same; break;
+        case T_EQUALS: r = same; break;
+        case T_NE: r = !same; break;
+        case T_GE: r = x >= y || same; break;
+        default: r = x > y; break;
+        }
+        a->v[i] = r;
+    }
+    a->dim = dim;
+    a->kind = dim == 1 ? V_FLOAT : colour ? V_COLOUR : V_VECTOR;
+}
+
+/* '&' or '|', component by component as POV-Ray's Parse_Logical. */
+static void logical(pp_state *ps, const pp_token *at, pp_value *a,
+                    const pp_value *bb, bool and)
+{
+    pp_value b = *bb;
+    need_numeric(ps, at, a);
+    need_numeric(ps, at, &b);
+    int dim = a->dim > b.dim ? a->dim : b.dim;
+    bool colour = a->kind == V_COLOUR || b.kind == V_COLOUR;
+    pp_value_promote(a, dim);
+    pp_value_promote(&b, dim);
+    for (int i = 0; i < dim; i++)
+        a->v[i] = and ? pp_true(a->v[i]) && pp_true(b.v[i])
+                      : pp_true(a->v[i]) || pp_true(b.v[i]);
+    a->dim = dim;
+    a->kind = dim == 1 ? V_FLOAT : colour ? V_COLOUR : V_VECTOR;
+}
+
+/* rel_term: sum { ('<' | '<=' | '=' | '!=' | '>=' | '>') sum } */
 static pp_value expr_cmp(pp_state *ps)
 {
     pp_value a = expr_add(ps);
@@ -1497,7 +1311,10 @@ static pp_value expr_cmp(pp_state *ps)
             return a;
         pp_next(ps);
         pp_token at = ps->tok;
+        int ctx = ps->dot_terms;
+        ps->dot_terms = a.kind == V_STRING ? 1 : operand_terms(&a, ctx);
         pp_value b = expr_add(ps);
+        ps->dot_terms = ctx;
         if (a.kind == V_STRING && b.kind == V_STRING) {
             /* POV-Ray compares strings as strcmp does */
             int c = strcmp(a.u.str, b.u.str);
@@ -1506,68 +1323,53 @@ static pp_value expr_cmp(pp_state *ps)
                      op == T_GE ? c >= 0 : c > 0);
             continue;
         }
-        need_numeric(ps, &at, &a);
-        need_numeric(ps, &at, &b);
-        double x = a.v[0], y = b.v[0];
-        bool r;
-        switch (op) {
-        case T_LT: r = x < y; break;
-        case T_LE: r = x <= y; break;
-        case T_EQUALS: r = fabs(x - y) <= 1e-10 * fmax(1.0, fabs(x)) ||
-                           x == y; break;
-        case T_NE: r = !(fabs(x - y) <= 1e-10 * fmax(1.0, fabs(x))); break;
-        case T_GE: r = x >= y; break;
-        default: r = x > y; break;
-        }
-        a = fval(r);
+        compare(ps, &at, &a, &b, op);
     }
 }
 
-static pp_value expr_and(pp_state *ps)
+/* logical: rel_term { ('&' | '|') rel_term }
+** '&' and '|' have one precedence and group from the left, as in
+** POV-Ray's Parse_Logical: '1 | 0 & 0' is (1 | 0) & 0, 0. */
+static pp_value expr_logical(pp_state *ps)
 {
     pp_value a = expr_cmp(ps);
-    while (peek_op(ps) == T_AMP) {
+    for (;;) {
+        int op = peek_op(ps);
+        if (op != T_AMP && op != T_BAR)
+            return a;
         pp_next(ps);
         pp_token at = ps->tok;
         pp_value b = expr_cmp(ps);
-        need_numeric(ps, &at, &a);
-        need_numeric(ps, &at, &b);
-        a = fval(a.v[0] != 0 && b.v[0] != 0);
+        logical(ps, &at, &a, &b, op == T_AMP);
     }
-    return a;
-}
-
-static pp_value expr_or(pp_state *ps)
-{
-    pp_value a = expr_and(ps);
-    while (peek_op(ps) == T_BAR) {
-        pp_next(ps);
-        pp_token at = ps->tok;
-        pp_value b = expr_and(ps);
-        need_numeric(ps, &at, &a);
-        need_numeric(ps, &at, &b);
-        a = fval(a.v[0] != 0 || b.v[0] != 0);
-    }
-    return a;
 }
 
 static pp_value expr_cond(pp_state *ps)
 {
-    pp_value c = expr_or(ps);
+    pp_value c = expr_logical(ps);
     if (peek_op(ps) != T_QUESTION)
         return c;
     pp_next(ps);
     pp_token at = ps->tok;
     need_numeric(ps, &at, &c);
+    /* POV-Ray's Parse_Express refuses a vector condition */
+    if (c.dim != 1)
+        pp_error(ps, &at, "the condition of '?:' must be a float, "
+                 "found a %d-component vector", c.dim);
     pp_value a = expr_cond(ps);
     pp_expect(ps, T_COLON, "':'");
     pp_value b = expr_cond(ps);
-    return c.v[0] != 0 ? a : b;
+    return pp_true(c.v[0]) ? a : b;
 }
 
 pp_value pp_expr(pp_state *ps)
 {
     return expr_cond(ps);
+}
+
+pp_value pp_expr_sum(pp_state *ps)
+{
+    return expr_add(ps);
 }
 
 double pp_float(pp_state *ps)
@@ -1589,8 +1391,15 @@ iris_vec3 pp_vector(pp_state *ps)
     pp_next(ps);
     pp_token at = ps->tok;
     pp_unget(ps);
+    int ctx = ps->dot_terms;
+    ps->dot_terms = 3;
     pp_value v = expr_add(ps);
+    ps->dot_terms = ctx;
     need_numeric(ps, &at, &v);
+    /* Parse_Vector reads the three components as the expression left
+    ** them: 'vlength(V.x)' and 'scale S.y' see V's and S's other ones */
+    if (v.dim == 1 && v.leftover)
+        v.dim = 3;
     pp_value_promote(&v, 3);
     need_finite(ps, &at, &v);
     iris_vec3 r = { v.v[0], v.v[1], v.v[2] };
@@ -1602,7 +1411,10 @@ iris_vec2 pp_vector2(pp_state *ps)
     pp_next(ps);
     pp_token at = ps->tok;
     pp_unget(ps);
+    int ctx = ps->dot_terms;
+    ps->dot_terms = 2;
     pp_value v = expr_add(ps);
+    ps->dot_terms = ctx;
     need_numeric(ps, &at, &v);
     pp_value_promote(&v, 2);
     need_finite(ps, &at, &v);
@@ -1615,7 +1427,10 @@ void pp_vector4(pp_state *ps, double out[4])
     pp_next(ps);
     pp_token at = ps->tok;
     pp_unget(ps);
+    int ctx = ps->dot_terms;
+    ps->dot_terms = 4;
     pp_value v = expr_add(ps);
+    ps->dot_terms = ctx;
     need_numeric(ps, &at, &v);
     pp_value_promote(&v, 4);
     need_finite(ps, &at, &v);

@@ -306,6 +306,11 @@ static bool at_macro_end(pp_state *ps)
     if (fr->kind != FR_MACRO || ps->n_conds != fr->cond_base + 1 ||
         ps->conds[ps->n_conds - 1].kind != C_MACRO)
         return false;
+    /* the condition of an #if/#while of this body is being read: the
+    ** '#end' after '#if (C)' closes that #if, not yet pushed (shapes3.inc's
+    ** Round_Conic_Prism: '#if (Border_R = 0 ) #end') */
+    if (ps->header_frames == ps->n_frames && ps->header_conds == ps->n_conds)
+        return false;
     pp_token t;
     uint32_t p = lex_peek(ps, fr->file, fr->pos, &t);
     if (t.kind != T_HASH)

@@ -600,6 +600,23 @@ static void fractal_defaults(iris_pattern *p)
     p->params[5] = 1;
 }
 
+/* ITERATIONS of mandel, julia and magnet: an int; above
+** IRIS_PATTERN_MAX_ITERATIONS a located warning, as the renderer stops
+** each evaluation there (POV-Ray has no limit; 'mandel 1e9' takes
+** seconds per point). */
+static int fractal_iterations(pp_state *ps)
+{
+    pp_next(ps);
+    pp_token at = ps->tok;
+    pp_unget(ps);
+    int n = pp_int(ps);
+    if (n > IRIS_PATTERN_MAX_ITERATIONS)
+        pp_warning(ps, &at, "%d iterations: each point of the pattern "
+                   "stops after %d (the colours keep %d)",
+                   n, IRIS_PATTERN_MAX_ITERATIONS, n);
+    return n;
+}
+
 /* [, [LO] [, [HI]]] after a slope or altitude vector (POV-Ray's
 ** Parse_Comma and Allow_Float: each number may be left out): into r[0],
 ** r[1], which stay 0 when absent. */
@@ -651,7 +668,7 @@ static bool pattern_kind(pp_state *ps, iris_pattern *p)
         p->kind = IRIS_PAT_JULIA;
         p->complex_c = pp_vector2(ps);
         pp_accept(ps, T_COMMA);
-        p->iterations = pp_int(ps);
+        p->iterations = fractal_iterations(ps);
         fractal_defaults(p);
         break;
     case T_LEOPARD: p->kind = IRIS_PAT_LEOPARD; break;
@@ -672,14 +689,14 @@ static bool pattern_kind(pp_state *ps, iris_pattern *p)
         } else {
             pp_error(ps, &ps->tok, "expected mandel or julia after magnet");
         }
-        p->iterations = pp_int(ps);
+        p->iterations = fractal_iterations(ps);
         fractal_defaults(p);
         p->params[7] = type;
         break;
     }
     case T_MANDEL:
         p->kind = IRIS_PAT_MANDEL;
-        p->iterations = pp_int(ps);
+        p->iterations = fractal_iterations(ps);
         fractal_defaults(p);
         break;
     case T_MARBLE: p->kind = IRIS_PAT_MARBLE; p->wave = IRIS_WAVE_TRIANGLE; break;
@@ -1776,9 +1793,22 @@ iris_finish *pp_finish(pp_state *ps, const iris_finish *base)
             pp_float(ps);
             break;
         case T_SUBSURFACE:
-            pp_warn_once(ps, &at, T_SUBSURFACE, "subsurface");
+            /* subsurface { [translucency C] [anisotropy C] }: the
+            ** anisotropy is parsed and unused, as in POV-Ray 3.7 */
+            f->subsurface = true;
             pp_expect(ps, T_LBRACE, "'{'");
-            pp_skip_block(ps);
+            for (;;) {
+                pp_next(ps);
+                if (ps->tok.kind == T_RBRACE)
+                    break;
+                if (ps->tok.kind == T_TRANSLUCENCY)
+                    f->translucency = pp_colour(ps);
+                else if (ps->tok.kind == T_ANISOTROPY)
+                    (void)pp_colour(ps);
+                else
+                    pp_error(ps, &ps->tok, "expected translucency or "
+                             "anisotropy in subsurface");
+            }
             break;
         default:
         bad: {

@@ -244,6 +244,7 @@ static void object_photons(pp_state *ps, iris_object *o)
             if (pp_starts_expr(ps))
                 d = pp_float(ps);
             o->photon_density = d;
+            o->photon_target_loc = pp_loc(ps, &at);
             if (d <= 0)
                 o->photon_target = false;
             check_pass_through(ps, &at, o, T_TARGET);
@@ -330,6 +331,35 @@ static iris_texture *own_top_texture(pp_state *ps, iris_object *o,
     return t;
 }
 
+/*
+** radiosity_block: '{' [importance F] '}'
+** After 'radiosity' (an object modifier, or in #default). POV-Ray 3.7
+** refuses F outside (0, 1]. Returns F, or 0 when not given.
+*/
+double pp_radiosity_block(pp_state *ps)
+{
+    pp_expect(ps, T_LBRACE, "'{'");
+    double imp = 0.0;
+    for (;;) {
+        pp_next(ps);
+        pp_token at = ps->tok;
+        if (at.kind == T_RBRACE)
+            return imp;
+        if (at.kind != T_IMPORTANCE) {
+            pp_unexpected(ps, &at, "radiosity");
+            return imp;
+        }
+        imp = pp_float(ps);
+        if (!(imp > 0.0 && imp <= 1.0)) {
+            pp_error(ps, &at, "radiosity importance must be greater than 0 "
+                     "and at most 1");
+            imp = 1.0;
+        }
+        if (imp < 1.0)
+            ps->scene->settings.rad_importance_used = true;
+    }
+}
+
 /* One object modifier; false when the current token is none. */
 static bool object_mod_item(pp_state *ps, iris_object *o)
 {
@@ -394,7 +424,6 @@ static bool object_mod_item(pp_state *ps, iris_object *o)
     case T_NO_RADIOSITY: o->no_radiosity = true; return true;
     case T_DOUBLE_ILLUMINATE: o->double_illuminate = pp_bool_opt(ps); return true;
     case T_STURM: o->sturm = pp_bool_opt(ps); return true;
-    case T_OPEN: o->open = true; return true;
     case T_SPLIT_UNION: o->split_union = pp_bool_opt(ps); return true;
     case T_CLIPPED_BY: clip_bound(ps, o, true); return true;
     case T_BOUNDED_BY: clip_bound(ps, o, false); return true;
@@ -413,15 +442,23 @@ static bool object_mod_item(pp_state *ps, iris_object *o)
         return true;
     }
     case T_CUTAWAY_TEXTURES: ((pp_obj *)o)->cutaway = true; return true;
-    case T_RADIOSITY:
-        pp_expect(ps, T_LBRACE, "'{'");
-        pp_skip_block(ps);
+    case T_RADIOSITY: {
+        double imp = pp_radiosity_block(ps);
+        if (imp > 0.0)
+            o->radiosity_importance = imp;
         return true;
+    }
     case T_NO_BUMP_SCALE: pp_bool_opt(ps); return true;
     default: {
         iris_transform x;
-        bool fold = ps->tok.kind == T_SCALE || ps->tok.kind == T_TRANSLATE;
+        int kind = ps->tok.kind;
+        bool fold = kind == T_SCALE || kind == T_TRANSLATE;
         if (pp_transform_item(ps, &x)) {
+            if (o->kind == IRIS_OBJ_SPHERE &&
+                (kind == T_MATRIX || kind == T_TRANSFORM ||
+                 (kind == T_SCALE && (x.m[0][0] != x.m[1][1] ||
+                                      x.m[0][0] != x.m[2][2]))))
+                ((pp_obj *)o)->sphere_trans = true;
             transform_rec(ps, o, &x, true, fold);
             return true;
         }
@@ -537,10 +574,18 @@ iris_light *pp_light(pp_state *ps)
             l->area = true;
             l->axis1 = pp_vector(ps); comma(ps);
             l->axis2 = pp_vector(ps); comma(ps);
+            pp_next(ps);
+            pp_token sizes = ps->tok;
+            pp_unget(ps);
             l->size1 = pp_int(ps); comma(ps);
             l->size2 = pp_int(ps);
             if (l->size1 < 1 || l->size2 < 1)
                 pp_error(ps, &at, "area_light sizes must be >= 1");
+            else if ((double)l->size1 * l->size2 > IRIS_AREA_LIGHT_MAX_GRID)
+                pp_warning(ps, &sizes, "area_light %d x %d: more than %d "
+                           "sub-lights; rendered as a point light at its "
+                           "centre (hard shadows)", l->size1, l->size2,
+                           IRIS_AREA_LIGHT_MAX_GRID);
             break;
         case T_ADAPTIVE: l->adaptive = pp_int(ps); break;
         case T_JITTER: l->jitter = pp_bool_opt(ps); break;
@@ -1243,6 +1288,17 @@ static void isosurface(pp_state *ps, iris_object *o)
 }
 
 /* The shape-specific part of an object, after its '{'. */
+/* [ open ] right after the parameters of a cylinder, cone, prism or sor:
+** POV-Ray's Parse_Cylinder, Parse_Cone, Parse_Prism and Parse_Sor read it
+** there and nowhere else, and no other shape takes it ('sphere { 0, 1
+** open }', 'object { C open }' are errors). The isosurface reads its own
+** among its keywords. */
+static void closed_or_open(pp_state *ps, iris_object *o)
+{
+    if (pp_accept(ps, T_OPEN))
+        o->open = true;
+}
+
 static void shape_body(pp_state *ps, iris_object *o, int kw, const pp_token *at)
 {
     switch (kw) {
@@ -1264,12 +1320,14 @@ static void shape_body(pp_state *ps, iris_object *o, int kw, const pp_token *at)
         o->u.cylinder.base = pp_vector(ps); comma(ps);
         o->u.cylinder.cap = pp_vector(ps); comma(ps);
         o->u.cylinder.radius = pp_float(ps);
+        closed_or_open(ps, o);
         break;
     case T_CONE:
         o->u.cone.base = pp_vector(ps); comma(ps);
         o->u.cone.base_radius = pp_float(ps); comma(ps);
         o->u.cone.cap = pp_vector(ps); comma(ps);
         o->u.cone.cap_radius = pp_float(ps);
+        closed_or_open(ps, o);
         break;
     case T_TORUS:
         o->u.torus.major = pp_float(ps); comma(ps);
@@ -1330,6 +1388,7 @@ static void shape_body(pp_state *ps, iris_object *o, int kw, const pp_token *at)
         int n = count(ps, MAX_ITEMS, "prism point");
         o->u.prism.n_points = n;
         o->u.prism.points = points2(ps, n);
+        closed_or_open(ps, o);
         break;
     }
     case T_LATHE: case T_SOR: {
@@ -1345,6 +1404,8 @@ static void shape_body(pp_state *ps, iris_object *o, int kw, const pp_token *at)
         int n = count(ps, MAX_ITEMS, "point");
         o->u.lathe.n_points = n;
         o->u.lathe.points = points2(ps, n);
+        if (kw == T_SOR)
+            closed_or_open(ps, o);
         break;
     }
     case T_SUPERELLIPSOID: {
@@ -1864,6 +1925,7 @@ static void finalize(pp_state *ps, iris_object *o, iris_texture *tex,
         if (parent->photon_target && !o->photon_target) {
             o->photon_target = true;
             o->photon_density = parent->photon_density;
+            o->photon_target_loc = parent->photon_target_loc;
         }
         o->photon_pass_through |= parent->photon_pass_through;
         if (o->photon_refraction == IRIS_UNSET)
@@ -1875,6 +1937,13 @@ static void finalize(pp_state *ps, iris_object *o, iris_texture *tex,
         o->light_group_first = parent->light_group_first;
         o->light_group_count = parent->light_group_count;
         o->no_global_lights = parent->no_global_lights;
+        /* POV-Ray promotes the importance to children without their own
+        ** (the parent's, else the #default's at this point) */
+        if (!(o->radiosity_importance > 0.0))
+            o->radiosity_importance =
+                parent->radiosity_importance > 0.0
+                    ? parent->radiosity_importance
+                    : ps->scene->settings.rad_default_importance;
     }
     if (((pp_obj *)o)->is_light_group)
         light_group_lights(ps, o);

@@ -15,6 +15,7 @@
 #ifndef IRIS_POVPARSE_PP_H
 #define IRIS_POVPARSE_PP_H
 
+#include <math.h>
 #include <setjmp.h>
 #include <stdbool.h>
 #include <stddef.h>
@@ -77,6 +78,11 @@ typedef struct pp_value {
     int kind;
     int dim;
     double v[5];
+    /* a float made by the period operator (V.y): v[1..4] still hold the
+    ** vector's other components, which POV-Ray's Parse_Vector reads as
+    ** they are (vlength(V.x) is vlength(V)), while an operator with a
+    ** vector operand promotes v[0] as for any float */
+    bool leftover;
     union {
         const char *str;
         iris_object *obj;
@@ -121,7 +127,11 @@ typedef struct pp_array {
     int dims[5];
     long n;
     pp_value *items;
+    /* POV-Ray's array Type: set by the first element stored, which every
+    ** later one must match (pp_array_type; 0: none stored yet) */
+    int elem_type;
 } pp_array;
+
 
 /* A macro: name, parameters and where its body starts in the source. */
 typedef struct pp_macro {
@@ -251,6 +261,10 @@ typedef struct pp_obj {
     ** children) */
     bool has_box;
     iris_vec3 box_lo, box_hi;
+    /* a sphere that POV-Ray gives a Trans (Sphere::Transform: after a
+    ** matrix, a transform or an uneven scale): its box is then the
+    ** transformed box, no longer the tight one */
+    bool sphere_trans;
 } pp_obj;
 
 struct pp_state {
@@ -324,6 +338,10 @@ struct pp_state {
 
     double version;
     bool in_vector;        /* inside <..>: '>' closes, is no operator */
+    /* POV-Ray's Terms where the next factor is read: 3 at the top of a
+    ** vector parameter (Parse_Vector), the left operand's for the right
+    ** one, else 1 (0 counts as 1). A float's '.y' needs Terms > 1. */
+    int dot_terms;
     bool gamma_given;
     bool srgb_warned;      /* "sRGB colour before assumed_gamma" once */
     int depth;             /* nesting of the grammar's recursion */
@@ -412,6 +430,9 @@ uint32_t pp_add_text(pp_state *ps, const char *name, const char *text,
 /* True when the next raw token starts a directive (an expression ends). */
 bool pp_next_is_directive(pp_state *ps);
 void pp_skip_block(pp_state *ps);     /* after '{': up to its '}' */
+/* After 'radiosity' (object modifier or #default): '{' [importance F]
+** '}'; returns F, or 0 when not given. */
+double pp_radiosity_block(pp_state *ps);
 void pp_close_files(pp_state *ps);
 /* Raw skipping of a false branch: returns the directive it stopped at
 ** (T_ELSE, T_ELSEIF, T_END, T_CASE, T_RANGE, T_BREAK) at depth 0. */
@@ -442,7 +463,13 @@ bool sym_undef(pp_state *ps, const char *name, size_t len);
 const char *pp_tok_text(pp_state *ps, const pp_token *t);
 
 /* ---- expr.c ------------------------------------------------------- */
-pp_value pp_expr(pp_state *ps);       /* numeric or string expression */
+pp_value pp_expr(pp_state *ps);
+/* The expression of a #declare value, a macro argument or an array
+** element: sums and products only (POV-Ray's Parse_RValue reads
+** Parse_Rel_Factor; a comparison, '&', '|' or '?:' needs parentheses). */
+pp_value pp_expr_sum(pp_state *ps);
+/* rgb, rgbft, srgb..., color, red ... transmit: a colour's first word */
+bool pp_is_colour_keyword(int kind);       /* numeric or string expression */
 double pp_float(pp_state *ps);        /* POV-Ray's Parse_Float: no <, = */
 int pp_int(pp_state *ps);             /* a float in the int range */
 long pp_clamp_long(double v);
@@ -460,6 +487,11 @@ pp_spline *pp_spline_block(pp_state *ps);
 /* The public view of a spline, for iris_fn_spline_eval. */
 iris_fn_spline pp_spline_view(const pp_spline *s);
 void pp_value_promote(pp_value *v, int dim);
+/* POV-Ray's truth of a number (its FTRUE): further than its EPSILON,
+** 1e-10, from zero. #if, #while, ?:, !, & and | all test this, so
+** '#if (1e-11)' is false as in POV-Ray. */
+#define PP_EPSILON 1e-10
+static inline bool pp_true(double x) { return fabs(x) > PP_EPSILON; }
 /* True when the current token can start a float/vector expression. */
 bool pp_starts_expr(pp_state *ps);
 /* Whether the next token starts a float expression (not '<'), without
@@ -469,6 +501,10 @@ iris_colour pp_value_colour(const pp_value *v);
 /* The element A[i]...: the indices follow. */
 pp_value pp_array_element(pp_state *ps, const pp_token *at, pp_array *arr);
 /* A copy of 'arr' and of the arrays it holds (#declare B = A copies). */
+/* Stores 'v' into 'slot' of 'arr' (at: for the error), refusing a value
+** of another type than the array's, as POV-Ray's Test_Redefine does. */
+void pp_array_store(pp_state *ps, pp_array *arr, pp_value *slot,
+                    const pp_value *v, const pp_token *at);
 pp_array *pp_array_copy(pp_state *ps, const pp_array *arr);
 /* min_extent/max_extent's box of 'o' as POV-Ray computes it; false (and
 ** the box +-1e10) when the parser cannot bound 'o' itself (expr.c). */

@@ -12,6 +12,43 @@
 
 #define MAX_ARRAY_ELEMS (1L << 24)
 
+/* POV-Ray's identifier type of an array element: float, uv (2), vector,
+** 4-D vector and colour (5 components) apart, a light source an object.
+** -1 for the kinds whose POV-Ray type iris does not tell apart; those
+** are not checked. */
+static int array_type(const pp_value *v)
+{
+    switch (v->kind) {
+    case V_FLOAT: return 1;
+    case V_VECTOR: return v->dim == 5 ? 5 : v->dim;
+    case V_COLOUR: return 5;
+    case V_STRING: return 6;
+    case V_OBJECT: case V_LIGHT: return 7;
+    case V_ARRAY: return 8;
+    default: return -1;
+    }
+}
+
+void pp_array_store(pp_state *ps, pp_array *arr, pp_value *slot,
+                    const pp_value *v, const pp_token *at)
+{
+    static const char *const one[] = {
+        "", "a float", "a 2-D vector", "a vector", "a 4-D vector",
+        "a colour", "a string", "an object", "an array" };
+    static const char *const many[] = {
+        "", "floats", "2-D vectors", "vectors", "4-D vectors", "colours",
+        "strings", "objects", "arrays" };
+    int t = array_type(v);
+    if (t > 0) {
+        if (arr->elem_type > 0 && arr->elem_type != t)
+            pp_error(ps, at, "cannot store %s in an array of %s (POV-Ray "
+                     "keeps one type per array)", one[t],
+                     many[arr->elem_type]);
+        arr->elem_type = t;
+    }
+    *slot = *v;
+}
+
 /* One element of an array initialiser: nested braces per dimension. */
 static void array_init(pp_state *ps, pp_array *arr, int d, long base)
 {
@@ -30,13 +67,16 @@ static void array_init(pp_state *ps, pp_array *arr, int d, long base)
             ** element starts the next one, it is no comparison */
             bool iv = ps->in_vector;
             ps->in_vector = true;
+            pp_next(ps);
+            pp_token at = ps->tok;
+            pp_unget(ps);
             pp_value v = pp_rvalue(ps);
             ps->in_vector = iv;
             /* an array named in the initialiser is copied, as POV-Ray
             ** copies an identifier's value */
             if (v.kind == V_ARRAY)
                 v.u.arr = pp_array_copy(ps, v.u.arr);
-            arr->items[base + i] = v;
+            pp_array_store(ps, arr, &arr->items[base + i], &v, &at);
         }
     }
     pp_accept(ps, T_COMMA);
@@ -153,6 +193,16 @@ pp_spline *pp_spline_block(pp_state *ps)
         pp_unget(ps);
         double t = pp_float(ps);
         pp_accept(ps, T_COMMA);
+        /* no colour keyword: POV-Ray's Parse_Spline refuses one there
+        ** ("Expected 'numeric expression', color keyword found") */
+        pp_next(ps);
+        if (pp_is_colour_keyword(ps->tok.kind)) {
+            char buf[80];
+            pp_error(ps, &ps->tok, "a spline key's value is a float or a "
+                     "vector, found %s (write <r, g, b> without it)",
+                     pp_tok_name(ps, &ps->tok, buf, sizeof buf));
+        }
+        pp_unget(ps);
         pp_value v = pp_expr(ps);
         pp_accept(ps, T_COMMA);
         if (v.dim <= 1) {
@@ -280,7 +330,12 @@ pp_value pp_rvalue(pp_state *ps)
                      pp_tok_text(ps, &at));
         bool callable = k == V_FUNCTION || k == V_SPLINE || k == V_ARRAY;
         if (callable && !pp_next_is_directive(ps)) {
+            /* only a look at the next token: a macro called right after
+            ** (the value ended its own macro's body: '#declare G = A
+            ** #end' then 'M(G)') runs once this value is stored */
+            ps->no_expand++;
             pp_next(ps);
+            ps->no_expand--;
             int nk = ps->tok.kind;
             pp_unget(ps);
             ps->tok = at;
@@ -315,5 +370,9 @@ pp_value pp_rvalue(pp_state *ps)
         iris_object *o = pp_object(ps);
         return make(V_OBJECT, o);
     }
-    return pp_expr(ps);
+    /* a declared or passed float is a float (Parse_RValue keeps
+    ** Express[0]): a period's leftover components end here */
+    pp_value v = pp_expr_sum(ps);
+    v.leftover = false;
+    return v;
 }

@@ -388,6 +388,43 @@ resolve:
     return c;
 }
 
+/*
+** global_subsurface: 'subsurface' '{' { samples INT [','] INT |
+**                                      radiosity BOOL } '}'
+** POV-Ray 3.7's Parse_Global_Settings: the block switches subsurface
+** light transport on (render/subsurface.h).
+*/
+static void global_subsurface(pp_state *ps, iris_global_settings *g)
+{
+    pp_expect(ps, T_LBRACE, "'{'");
+    g->subsurface = true;
+    for (;;) {
+        pp_next(ps);
+        pp_token at = ps->tok;
+        switch (at.kind) {
+        case T_RBRACE:
+            return;
+        case T_SAMPLES:
+            g->sss_samples_diffuse = pp_int(ps);
+            pp_accept(ps, T_COMMA);
+            g->sss_samples_single = pp_int(ps);
+            if (g->sss_samples_diffuse < 0 || g->sss_samples_single < 0 ||
+                g->sss_samples_diffuse > 1000000 ||
+                g->sss_samples_single > 1000000)
+                pp_error(ps, &at, "subsurface samples must be in 0..1000000");
+            break;
+        case T_RADIOSITY:
+            g->sss_radiosity = fabs(pp_float(ps)) >= 1.0; /* (int)v != 0 */
+            if (g->sss_radiosity)
+                pp_warning(ps, &at, "subsurface radiosity is parsed but not "
+                           "rendered");
+            break;
+        default:
+            pp_unexpected(ps, &at, "subsurface");
+        }
+    }
+}
+
 /* global_settings { photons { ... } } */
 static void global_photons(pp_state *ps, iris_photon_settings *p)
 {
@@ -486,8 +523,9 @@ static void global_photons(pp_state *ps, iris_photon_settings *p)
 **             media [BOOL] | subsurface [BOOL] | importance F |
 **             save_file S | load_file S }
 ** After 'radiosity'. POV-Ray 3.7's defaults apply to what is not given
-** (render/gather.c reads them); normal, subsurface, importance and the
-** files are accepted and ignored with a warning.
+** (render/gather.c reads them); subsurface, importance (an object's,
+** pp_radiosity_block) and the files are accepted and ignored with a
+** warning.
 */
 static void global_radiosity(pp_state *ps, iris_global_settings *g)
 {
@@ -543,15 +581,18 @@ static void global_radiosity(pp_state *ps, iris_global_settings *g)
         /* plain warnings: pp_warn_once's flag for 'media' would also
         ** silence the one for atmospheric media */
         case T_MEDIA: r->media = pp_bool_opt(ps); break;
-        case T_NORMAL: case T_SUBSURFACE:
+        case T_NORMAL: r->normal = pp_bool_opt(ps); break;
+        case T_SUBSURFACE:
             pp_bool_opt(ps);
-            pp_warning(ps, &at, "radiosity %s is parsed but not rendered",
-                       at.kind == T_NORMAL ? "normal" : "subsurface");
+            pp_warning(ps, &at, "radiosity subsurface is parsed but not "
+                       "rendered");
             break;
         case T_IMPORTANCE:
+            /* POV-Ray 3.7 takes it in an object's or #default's
+            ** radiosity {} only (pp_radiosity_block) */
             pp_float(ps);
-            pp_warning(ps, &at, "radiosity importance is parsed but not "
-                       "rendered");
+            pp_warning(ps, &at, "radiosity importance belongs in an "
+                       "object's or #default's radiosity {}: ignored here");
             break;
         case T_SAVE_FILE: case T_LOAD_FILE:
             pp_string(ps);
@@ -606,16 +647,14 @@ static void global_settings(pp_state *ps)
         case T_CHARSET: pp_next(ps); break;
         case T_HF_GRAY_16: pp_bool_opt(ps); break;
         case T_MAX_INTERSECTIONS: pp_float(ps); break;
-        case T_MM_PER_UNIT: pp_float(ps); break;
+        case T_MM_PER_UNIT: g->mm_per_unit = pp_float(ps); break;
         case T_PHOTONS: global_photons(ps, &g->photons); break;
         case T_RADIOSITY:
             g->radiosity = true;
             global_radiosity(ps, g);
             break;
         case T_SUBSURFACE:
-            pp_warn_once(ps, &at, T_SUBSURFACE, "subsurface");
-            pp_expect(ps, T_LBRACE, "'{'");
-            pp_skip_block(ps);
+            global_subsurface(ps, g);
             break;
         default: {
             pp_unexpected(ps, &at, "global_settings");

@@ -146,6 +146,12 @@ typedef struct iris_image_ref {
 ** A pattern: a function from a point to a value in [0,1] (or, for
 ** checker/hexagon/brick and friends, to a map index).
 */
+/* The most iterations a mandel, julia or magnet pattern runs per
+** evaluation (3.7 ns each: 0.4 ms); POV-Ray's examples use at most 10000.
+** A larger count is kept for the colouring (k / iterations) and warned
+** about by the parser; 'mandel 1e9' took 4 s per evaluation. */
+#define IRIS_PATTERN_MAX_ITERATIONS 100000
+
 typedef struct iris_pattern {
     enum iris_pattern_kind kind;
     iris_transform transform;  /* world-to-pattern is 'inv' */
@@ -167,7 +173,8 @@ typedef struct iris_pattern {
     double mortar;             /* default 0.5 */
     int noise_generator;       /* 1, 2 or 3 */
     iris_vec2 complex_c;       /* julia */
-    int iterations;            /* mandel, julia */
+    int iterations;            /* mandel, julia (evaluated with at most
+                                  IRIS_PATTERN_MAX_ITERATIONS) */
     iris_fn *fn;               /* FUNCTION */
     iris_image_ref *image;     /* IMAGE_MAP, IMAGE_PATTERN */
     struct iris_object *object; /* OBJECT */
@@ -233,6 +240,11 @@ typedef struct iris_finish {
     double irid, irid_thickness; iris_vec3 irid_turbulence;
     double legacy_ior;         /* finish{ior} of old scenes, 0 = unset */
     double legacy_refraction;  /* finish{refraction}, 1 */
+    /* subsurface { translucency C }: POV-Ray 3.7's BSSRDF in place of the
+    ** diffuse term where global_settings has subsurface{} (render/
+    ** subsurface.h); C is the mean free path in mm, 1/sigma'_s */
+    bool subsurface;
+    iris_colour translucency;  /* 0 */
 } iris_finish;
 
 /*
@@ -393,6 +405,7 @@ struct iris_object {
     /* Photons */
     bool photon_target;
     double photon_density;     /* spacing multiplier, 1 */
+    iris_loc photon_target_loc; /* its 'target' keyword (line 0: none) */
     enum iris_tristate photon_refraction, photon_reflection;
     bool photon_collect;       /* true unless 'collect off' */
     bool photon_pass_through;
@@ -402,6 +415,10 @@ struct iris_object {
     ** unless no_global_lights, by the scene's lights */
     int light_group_first, light_group_count;
     bool no_global_lights;
+    /* radiosity { importance F }: the share of a radiosity sample's rays
+    ** that shade it, (0, 1]; 0 = not given: the #default's (CSG children
+    ** take their parent's, povparse/obj.c finalize) */
+    double radiosity_importance;
 
     union {
         struct { iris_vec3 centre; double radius; } sphere;
@@ -469,6 +486,12 @@ enum iris_light_spectrum { IRIS_SPEC_D65 = 0, IRIS_SPEC_A,
                            IRIS_SPEC_F12 = IRIS_SPEC_F1 + 11,
                            IRIS_SPEC_BLACKBODY };
 
+/* The most sub-lights (size1 x size2) an area light may have: each trace
+** context keeps a shadow-ray table of that many entries (render/trace.c
+** tracer_init); a larger area light is rendered as a point light at its
+** centre and the parser says so. POV-Ray has no such limit. */
+#define IRIS_AREA_LIGHT_MAX_GRID (1024 * 1024)
+
 typedef struct iris_light {
     iris_loc loc;
     enum iris_light_kind kind;
@@ -481,7 +504,8 @@ typedef struct iris_light {
     /* area_light */
     bool area;
     iris_vec3 axis1, axis2;
-    int size1, size2;
+    int size1, size2;          /* above IRIS_AREA_LIGHT_MAX_GRID sub-lights
+                                  in all the light is a point light */
     int adaptive;              /* default 100 (area lights) */
     bool jitter, circular, orient, area_illumination;
     bool shadowless;
@@ -616,6 +640,8 @@ typedef struct iris_radiosity_settings {
     double adc_bailout;        /* 0.01 */
     bool always_sample;        /* false */
     bool media;                /* false: gather rays ignore media */
+    bool normal;               /* false: gather about the unperturbed
+                                  normal; true: the layer's (gather.c) */
 } iris_radiosity_settings;
 
 typedef struct iris_global_settings {
@@ -629,6 +655,15 @@ typedef struct iris_global_settings {
     bool radiosity;            /* a radiosity{} block was given */
     iris_radiosity_settings rad; /* valid when 'radiosity' */
     iris_photon_settings photons;
+    /* mm_per_unit and subsurface {} (render/subsurface.h) */
+    double mm_per_unit;        /* 10 */
+    bool subsurface;           /* a subsurface{} block was given */
+    int sss_samples_diffuse;   /* samples A, B: 50, 50 */
+    int sss_samples_single;
+    bool sss_radiosity;        /* radiosity BOOL: false */
+    /* #default { radiosity { importance F } }: 0 = not given (1) */
+    double rad_default_importance;
+    bool rad_importance_used;  /* some importance below 1 was given */
 } iris_global_settings;
 
 /* A warning found while parsing or building, kept for the caller. */

@@ -71,6 +71,8 @@ void iris_global_defaults(iris_global_settings *g)
     g->irid_wavelength.z = 0.48;
     g->number_of_waves = 10;
     g->noise_generator = 2;
+    g->mm_per_unit = 10;
+    g->sss_samples_diffuse = g->sss_samples_single = 50;
 }
 
 void iris_light_defaults(iris_light *l)

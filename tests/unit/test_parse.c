@@ -80,10 +80,12 @@ static void test_precedence(void **state)
     assert_near(fval("#declare A = 8 / 4 / 2;", "A"), 1, TOL);
     assert_near(fval("#declare A = -2 * -3;", "A"), 6, TOL);
     assert_near(fval("#declare A = 2 - -3 + +1;", "A"), 6, TOL);
-    assert_near(fval("#declare A = (1 < 2) & (3 > 2);", "A"), 1, TOL);
-    assert_near(fval("#declare A = (1 = 2) | !(2 != 2);", "A"), 1, TOL);
-    assert_near(fval("#declare A = (2 >= 3) ? 10 : 20;", "A"), 20, TOL);
-    assert_near(fval("#declare A = 1 < 2 ? 10 : 20;", "A"), 10, TOL);
+    /* a #declare value is a sum (POV-Ray's Parse_RValue): comparisons,
+    ** & | and ?: go in parentheses */
+    assert_near(fval("#declare A = ((1 < 2) & (3 > 2));", "A"), 1, TOL);
+    assert_near(fval("#declare A = ((1 = 2) | !(2 != 2));", "A"), 1, TOL);
+    assert_near(fval("#declare A = ((2 >= 3) ? 10 : 20);", "A"), 20, TOL);
+    assert_near(fval("#declare A = (1 < 2 ? 10 : 20);", "A"), 10, TOL);
     assert_near(fval("#declare A = 1.5e2 + .5;", "A"), 150.5, TOL);
 }
 
