@@ -8,12 +8,17 @@
 # streams, a working gamma other than 1), then a summary.
 #
 #   build=/path/to/build sh bench/examples-psnr.sh [-j JOBS] [-1] [-s WxH]
-#                                                 [DIR | scene.pov ...]
+#                                    [-o 'OPTS'] [DIR | scene.pov ...]
 #
 #   -j JOBS   scenes rendered at once (default 1); each renderer uses one
 #             thread, so the times compare one core with one core
 #   -1        only the first scene of every directory (a quick subset)
 #   -s WxH    image size (default 160x120)
+#   -o OPTS   extra POV-Ray switches given to both renderers after the
+#             defaults, split at blanks: '+A0.3 +AM1 +R3 -J' compares the
+#             antialiased images (jitter off keeps both deterministic);
+#             with +UA among them the PSNR covers the alpha channel too
+#             (psnr --rgba)
 #   TIMEOUT   seconds per render (default 60); MEMLIMIT KiB (2000000)
 #
 # Each scene's directory is copied to a scratch directory first, because
@@ -37,22 +42,31 @@ PSNR=${PSNR:-$build/tests/render/psnr}
 POVRAY=${POVRAY:-povray}
 TIMEOUT=${TIMEOUT:-60}
 MEMLIMIT=${MEMLIMIT:-2000000}
-jobs=1; first_only=0; size=160x120
-while getopts j:1s: opt; do
+jobs=1; first_only=0; size=160x120; extra=""
+while getopts j:1s:o: opt; do
     case $opt in
     j) jobs=$OPTARG ;; 1) first_only=1 ;; s) size=$OPTARG ;;
+    o) extra=$OPTARG ;;
     *) exit 2 ;;
     esac
 done
 shift $((OPTIND - 1))
 w=${size%x*}; h=${size#*x}
+# +UA: alpha output, compared with the colour (the switches are
+# case-insensitive)
+psnr_mode=""
+case " $(printf '%s' "$extra" | tr 'a-z' 'A-Z') " in
+*" +UA "*) psnr_mode=--rgba ;;
+esac
 [ -x "$IRIS" ] || { echo "examples-psnr: no iris binary at $IRIS"; exit 1; }
 [ -x "$PSNR" ] || make -C "$build" tests/render/psnr >/dev/null 2>&1 ||
     { echo "examples-psnr: cannot build $PSNR"; exit 1; }
 command -v "$POVRAY" >/dev/null || { echo "examples-psnr: no povray"; exit 1; }
 
 tmp=$(mktemp -d) || exit 1
-trap 'rm -rf "$tmp"' EXIT INT TERM
+# a signal ends the run (a trap alone would let the loop go on)
+trap 'rm -rf "$tmp"' EXIT
+trap 'exit 130' INT TERM
 
 DIR=/usr/share/doc/povray/examples
 if [ $# -eq 1 ] && [ -d "$1" ]; then
@@ -109,11 +123,11 @@ one() {
     t0=$(now)
     ( cd "$work/p" && ulimit -v "$MEMLIMIT" 2>/dev/null
       exec timeout "$TIMEOUT" "$POVRAY" "+I$base" "+O$work/pov.png" \
-          "+W$w" "+H$h" -D -V -GA +FN16 +WT1 ) >"$work/pov.log" 2>&1 </dev/null
+          "+W$w" "+H$h" -D -V -GA +FN16 +WT1 $extra ) >"$work/pov.log" 2>&1 </dev/null
     t1=$(now)
     ( cd "$work/i" && ulimit -v "$MEMLIMIT" 2>/dev/null
       exec timeout "$TIMEOUT" "$IRIS" "$base" -q -o "$work/iris.png" +FN16 \
-          "+W$w" "+H$h" --threads=1 ) >"$work/iris.log" 2>&1 </dev/null
+          "+W$w" "+H$h" --threads=1 $extra ) >"$work/iris.log" 2>&1 </dev/null
     rc=$?
     t2=$(now)
     tp=$(echo "$t0 $t1" | awk '{printf "%.2f", $2 - $1}')
@@ -132,7 +146,9 @@ one() {
     if [ ! -s "$work/pov.png" ]; then
         [ $rc -eq 0 ] && status="rendered, no reference"
     elif [ $rc -eq 0 ]; then
-        db=$("$PSNR" "$work/iris.png" "$work/pov.png" 2>/dev/null | cut -d' ' -f1)
+        # shellcheck disable=SC2086 (no mode: no argument)
+        db=$("$PSNR" $psnr_mode "$work/iris.png" "$work/pov.png" 2>/dev/null |
+             cut -d' ' -f1)
         [ -n "$db" ] || db="-"
     fi
     [ -n "${KEEP:-}" ] && mkdir -p "$KEEP/$(dirname "$rel")" &&

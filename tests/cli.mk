@@ -11,3 +11,9 @@ EXTRA_DIST += tests/cli/cli.sh tests/cli/scenes
 check_PROGRAMS += tests/cli/imgtool
 tests_cli_imgtool_SOURCES = tests/cli/imgtool.c
 tests_cli_imgtool_LDADD = libiris_core.la $(IRIS_LIBS)
+# the command line misused: every option's bad values, files, conflicts
+TESTS += tests/cli/misuse.sh
+EXTRA_DIST += tests/cli/misuse.sh
+# the render window +SR +ER +SC +EC, fractions included, against POV-Ray
+TESTS += tests/cli/window.sh
+EXTRA_DIST += tests/cli/window.sh

@@ -4,7 +4,7 @@
 ## stability.sh also uses tests/cli/imgtool (cli.mk) for PSNR.
 check_PROGRAMS += tests/stability/imgcheck tests/stability/test_hit_epsilon
 TESTS += tests/stability/test_hit_epsilon tests/stability/stability.sh \
-	tests/badinput/badinput.sh
+	tests/badinput/badinput.sh tests/stability/area_light_cap.sh
 tests_stability_imgcheck_SOURCES = tests/stability/imgcheck.c
 tests_stability_imgcheck_LDADD = libiris_core.la $(IRIS_LIBS)
 tests_stability_test_hit_epsilon_SOURCES = tests/stability/test_hit_epsilon.c \
@@ -13,6 +13,7 @@ tests_stability_test_hit_epsilon_CFLAGS = $(TEST_CFLAGS)
 tests_stability_test_hit_epsilon_LDADD = $(TEST_LDADD)
 EXTRA_DIST += tests/stability/stability.sh tests/stability/scenes \
 	tests/stability/caustic_mc.py \
+	tests/stability/area_light_cap.sh \
 	tests/badinput/badinput.sh tests/badinput/cases
 
 ## Stages scripts/run-tests runs after make check (issue 7); each can be

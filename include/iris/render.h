@@ -95,6 +95,13 @@ typedef struct iris_render_stats {
     uint64_t rays_traced;
     int threads, passes;
     uint64_t nan_pixels;       /* non-finite values caught and zeroed */
+    /* The eye pass's rays as POV-Ray's render statistics count them
+    ** (its "Rays", "Pixels" + "Samples", reflected, refracted,
+    ** transmitted rays, shadow ray tests and those that succeeded):
+    ** rays counts every trace, those max_trace_level or adc_bailout stop
+    ** included; rays_traced above counts the ray queries. */
+    uint64_t rays, rays_camera, rays_reflected, rays_refracted,
+             rays_transmitted, shadow_tests, shadow_hits;
 } iris_render_stats;
 
 /*

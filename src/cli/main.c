@@ -107,6 +107,39 @@ static double image_bytes(const struct cli_options *o)
     return per_pixel * (double)o->render.width * (double)o->render.height;
 }
 
+/*
+** True when the output the user gave names a directory: an existing one
+** ('-o renders', '+O.'), or a name ending in '/'. cli_output_name() would
+** add an extension to it and write 'renders.png' beside it or a hidden
+** 'renders/.png' inside it, neither of which was asked for.
+*/
+static bool output_is_directory(const char *given)
+{
+    if (!given)
+        return false;
+    size_t n = strlen(given);
+    struct stat st;
+    return (n > 0 && given[n - 1] == '/') ||
+           (stat(given, &st) == 0 && S_ISDIR(st.st_mode));
+}
+
+/*
+** 0 when file 'path' (--stats, --checkpoint) can be created where it is
+** named: its directory exists and the name is not a directory. Else -1
+** with errno set. Checked before the parse: those files are written at
+** the end, after the render, and a missing directory then cost the run
+** (a failed checkpoint write also left the image unwritten).
+*/
+static int file_can_be_written(const char *path)
+{
+    struct stat st;
+    if (stat(path, &st) == 0 && S_ISDIR(st.st_mode)) {
+        errno = EISDIR;
+        return -1;
+    }
+    return output_dir_exists(path);
+}
+
 /* True when 'a' and 'b' name the same existing file. */
 static bool same_file(const char *a, const char *b)
 {
@@ -179,6 +212,36 @@ static int iris_main(int argc, char **argv)
     if (mpi_passes_rank() != 0) /* rank 0 alone writes the error log */
         o.error_log = NULL;
 
+    /* the parser's read of a directory or a device said "No such file
+    ** or directory" */
+    struct stat scene_st;
+    if (stat(o.scene, &scene_st) == 0 && !S_ISREG(scene_st.st_mode)) {
+        fprintf(stderr, "iris: %s: cannot read the scene: %s\n", o.scene,
+                S_ISDIR(scene_st.st_mode) ? "it is a directory"
+                                          : "not a regular file");
+        return EXIT_USAGE;
+    }
+    if (o.action == CLI_RENDER && output_is_directory(o.output)) {
+        fprintf(stderr, "iris: %s: is a directory; name the image file "
+                "(e.g. -o %s%sscene.png)\n", o.output, o.output,
+                o.output[strlen(o.output) - 1] == '/' ? "" : "/");
+        return EXIT_USAGE;
+    }
+    const char *early[2][2] = { { o.stats_file, "--stats" },
+                                { o.render.checkpoint, "--checkpoint" } };
+    for (int k = 0; k < 2; k++)
+        if (early[k][0] && (o.action == CLI_RENDER || k == 0) &&
+            mpi_passes_rank() == 0 && file_can_be_written(early[k][0]) != 0) {
+            fprintf(stderr, "iris: %s=%s: cannot write there: %s\n",
+                    early[k][1], early[k][0], strerror(errno));
+            return EXIT_USAGE;
+        }
+    if (o.render.resume && access(o.render.resume, R_OK) != 0) {
+        fprintf(stderr, "iris: --resume=%s: %s\n", o.render.resume,
+                strerror(errno));
+        return EXIT_USAGE;
+    }
+
     char *out_name = cli_output_name(&o);
     if (!out_name) {
         fprintf(stderr, "iris: out of memory\n");
@@ -188,6 +251,30 @@ static int iris_main(int argc, char **argv)
         fprintf(stderr, "iris: %s: refusing to overwrite the scene file with the image\n", out_name);
         free(out_name);
         return EXIT_USAGE;
+    }
+    /* the files written besides the image: not the scene (--stats=s.pov
+    ** replaced it with JSON), not the image, not each other */
+    const char *written[3][2] = { { o.stats_file, "--stats" },
+                                  { o.render.checkpoint, "--checkpoint" },
+                                  { o.error_log, "--error-log" } };
+    for (int k = 0; k < 3; k++) {
+        const char *f = written[k][0], *clash = NULL;
+        if (!f)
+            continue;
+        if (same_file(f, o.scene))
+            clash = "the scene file";
+        else if (!strcmp(f, out_name) || same_file(f, out_name))
+            clash = "the image";
+        for (int m = 0; m < k && !clash; m++)
+            if (written[m][0] && (!strcmp(f, written[m][0]) ||
+                                  same_file(f, written[m][0])))
+                clash = written[m][1];
+        if (clash) {
+            fprintf(stderr, "iris: %s=%s: refusing to write over %s\n",
+                    written[k][1], f, clash);
+            free(out_name);
+            return EXIT_USAGE;
+        }
     }
     /* rank 0 alone writes (MPI) */
     if (o.action == CLI_RENDER && mpi_passes_rank() == 0 &&

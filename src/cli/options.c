@@ -160,13 +160,15 @@ static int pov_switch(struct cli_options *o, char sign, const char *arg,
         o->render.alpha = on;
     } else if (has_prefix(body, "SR") || has_prefix(body, "ER") ||
                has_prefix(body, "SC") || has_prefix(body, "EC")) {
-        if (!parse_int(body + 2, 1, 65536, &n))
-            return fail(err, errlen, "%s: expected a row or column number", arg);
-        int *slot = has_prefix(body, "SR") ? &o->render.start_row
-                  : has_prefix(body, "ER") ? &o->render.end_row
-                  : has_prefix(body, "SC") ? &o->render.start_col
-                                           : &o->render.end_col;
-        *slot = (int)n;
+        /* a row or column number, or a fraction of the image (+SR0.5):
+        ** resolve_window() below, once +W and +H are known */
+        if (!parse_num(body + 2, 0.0, 65536.0, &d))
+            return fail(err, errlen, "%s: expected a row or column number, "
+                        "or a fraction of the image in [0, 1]", arg);
+        int k = has_prefix(body, "SR") ? 0 : has_prefix(body, "ER") ? 1
+              : has_prefix(body, "SC") ? 2 : 3;
+        o->window_arg[k] = arg;
+        o->window[k] = d;
     } else if (strcasecmp(body, "D") == 0 || strcasecmp(body, "V") == 0 ||
                strcasecmp(body, "P") == 0 || strcasecmp(body, "X") == 0 ||
                has_prefix(body, "D0") || strcasecmp(body, "GA") == 0) {
@@ -312,6 +314,76 @@ static int long_option(int argc, char **argv, int *i, struct cli_options *o,
     return fail(err, errlen, "unknown option '%s' (see iris --help)", a);
 }
 
+/*
+** The render window as POV-Ray 3.7 computes it (View::StartRender in
+** source/backend/scene/view.cpp, and the same in renderfrontend.cpp): a
+** start in [0, 1) is a fraction, its first pixel (int)(size * v) counted
+** from 0; an end in [0, 1] is a fraction, its last pixel
+** (int)(size * v) - 1; any other value is the pixel (int)v counted from
+** 1 (+SR2.7 is row 2). So +ER1 is the last row, not the first. POV-Ray
+** keeps the value as a float (POVMSFloat): +SR0.7 of 10 rows starts at
+** row 7, (int)(10 * 0.7f) = 6, where double arithmetic would give 7.
+** Writes iris's 1-based render.start_row ... (0: the image's edge).
+*/
+static int resolve_window(struct cli_options *o, char *err, size_t errlen)
+{
+    iris_render_options *r = &o->render;
+    int *slot[4] = { &r->start_row, &r->end_row, &r->start_col, &r->end_col };
+    for (int k = 0; k < 4; k++) {
+        if (!o->window_arg[k])
+            continue;
+        bool start = k == 0 || k == 2;
+        int size = k < 2 ? r->height : r->width;
+        double v = (float)o->window[k];
+        if (start)
+            *slot[k] = v < 1.0 ? (int)(size * v) + 1 : (int)v;
+        else
+            *slot[k] = v <= 1.0 ? (int)(size * v) : (int)v;
+        /* +ER0.1 of 8 rows ends before the first row (POV-Ray: "Invalid
+        ** end column or row"); 0 would mean "to the edge" here */
+        if (*slot[k] < 1)
+            return fail(err, errlen, "%s: the window ends before the "
+                        "first %s", o->window_arg[k], k < 2 ? "row" : "column");
+    }
+    return 0;
+}
+
+/*
+** Options that contradict each other or the image size, said before the
+** parse rather than ignored or found after a render of hours.
+*/
+static int check_combination(const struct cli_options *o, char *err,
+                             size_t errlen)
+{
+    const iris_render_options *r = &o->render;
+    /* progressive_wanted(): only a progressive render writes one */
+    if (r->checkpoint && r->passes <= 1 && !(r->time_limit > 0.0) &&
+        !r->resume)
+        return fail(err, errlen, "--checkpoint=%s: only a progressive render "
+                    "writes a checkpoint: add --passes=N (N >= 2), "
+                    "--time-limit=S or --resume=FILE", r->checkpoint);
+    /* +SR/+SC past the image leave nothing to render (eyepass.c would
+    ** render the last row); +ER/+EC past it are errors too, as in POV-Ray
+    ** 3.7 ("Invalid start/end column or row"; eyepass.c would clip).
+    ** Messages give the row or column the switch resolved to. */
+    static const char *const sw[4] = { "+SR", "+ER", "+SC", "+EC" };
+    const int val[4] = { r->start_row, r->end_row, r->start_col, r->end_col };
+    for (int k = 0; k < 4; k++) {
+        int size = k < 2 ? r->height : r->width;
+        if (val[k] > size)
+            return fail(err, errlen, "%s%d: the image has %d %s (+%c%d)",
+                        sw[k], val[k], size, k < 2 ? "rows" : "columns",
+                        k < 2 ? 'H' : 'W', size);
+    }
+    if (r->end_row > 0 && r->start_row > r->end_row)
+        return fail(err, errlen, "+SR%d +ER%d: the start row is below the "
+                    "end row", r->start_row, r->end_row);
+    if (r->end_col > 0 && r->start_col > r->end_col)
+        return fail(err, errlen, "+SC%d +EC%d: the start column is right of "
+                    "the end column", r->start_col, r->end_col);
+    return 0;
+}
+
 int cli_parse(int argc, char **argv, struct cli_options *o, char *err,
               size_t errlen)
 {
@@ -327,7 +399,7 @@ int cli_parse(int argc, char **argv, struct cli_options *o, char *err,
             if (long_option(argc, argv, &i, o, err, errlen))
                 return -1;
         } else if (!strcmp(a, "-o")) {
-            if (i + 1 >= argc)
+            if (i + 1 >= argc || !argv[i + 1][0])
                 return fail(err, errlen, "%s needs a file name", a);
             o->output = argv[++i];
         } else if (!strcmp(a, "-q")) {
@@ -357,6 +429,9 @@ int cli_parse(int argc, char **argv, struct cli_options *o, char *err,
     if (o->action == CLI_RENDER || o->action == CLI_PARSE_ONLY || o->action == CLI_PLAN) {
         if (!o->scene)
             return fail(err, errlen, "%s", "no scene given (usage: iris [options] scene.pov)");
+        if (resolve_window(o, err, errlen))
+            return -1;
+        return check_combination(o, err, errlen);
     }
     return 0;
 }

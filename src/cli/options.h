@@ -45,6 +45,11 @@ struct cli_options {
     const char *error_log;      /* --error-log FILE.csv */
     double node_memory;         /* --node-memory: bytes all ranks on a
                                    node may use, 0 = no such limit */
+    /* +SR +ER +SC +EC as typed (NULL: not given) and their values; a
+    ** fraction needs the final +W/+H, so cli_parse() turns them into
+    ** render.start_row ... only after the last switch */
+    const char *window_arg[4];
+    double window[4];
 };
 
 /*

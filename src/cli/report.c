@@ -84,13 +84,25 @@ int stats_write(const char *path, const struct run_times *t,
             "\"time_write_s\": %.6f, \"time_total_s\": %.6f, "
             "\"photons_emitted\": %llu, \"photons_stored\": %llu, "
             "\"photon_bytes\": %llu, \"rays_traced\": %llu, "
-            "\"peak_rss_bytes\": %llu, \"threads\": %d, \"passes\": %d}\n",
+            "\"peak_rss_bytes\": %llu, \"threads\": %d, \"passes\": %d, "
+            /* the eye pass's rays as POV-Ray's statistics count them */
+            "\"rays\": %llu, \"rays_camera\": %llu, "
+            "\"rays_reflected\": %llu, \"rays_refracted\": %llu, "
+            "\"rays_transmitted\": %llu, \"shadow_tests\": %llu, "
+            "\"shadow_hits\": %llu}\n",
             t->parse, rs->time_build_s, rs->time_photon_s, rs->time_render_s,
             rs->time_render_cpu_s, t->write, t->total,
             (unsigned long long)rs->photons_emitted,
             (unsigned long long)rs->photons_stored,
             (unsigned long long)rs->photon_bytes,
             (unsigned long long)rs->rays_traced,
-            (unsigned long long)peak_rss_bytes(), rs->threads, rs->passes);
+            (unsigned long long)peak_rss_bytes(), rs->threads, rs->passes,
+            (unsigned long long)rs->rays,
+            (unsigned long long)rs->rays_camera,
+            (unsigned long long)rs->rays_reflected,
+            (unsigned long long)rs->rays_refracted,
+            (unsigned long long)rs->rays_transmitted,
+            (unsigned long long)rs->shadow_tests,
+            (unsigned long long)rs->shadow_hits);
     return fclose(f) == 0 ? 0 : -1;
 }

@@ -842,12 +842,16 @@ static double fractal(const iris_pattern *pat, vec3 p, bool julia)
     double ifac = given ? pat->params[1] : 1.0;
     double efac = given ? pat->params[3] : 1.0;
     int it_max = pat->iterations > 0 ? pat->iterations : 1;
+    /* the loop stops at the cap, the colouring keeps it_max: a point
+    ** escaping before the cap gets the colour an uncapped run gives */
+    int it_run = it_max < IRIS_PATTERN_MAX_ITERATIONS
+                     ? it_max : IRIS_PATTERN_MAX_ITERATIONS;
     if (pat->params[7] == 1 || pat->params[7] == 2) {
         /* magnet 1/2 (fractal_pattern.c) */
         int k;
         double ma, mb, m2;
         if (pat_magnet((int)pat->params[7], julia, p.x, p.y,
-                       pat->complex_c.u, pat->complex_c.v, it_max, &k, &ma,
+                       pat->complex_c.u, pat->complex_c.v, it_run, &k, &ma,
                        &mb, &m2))
             return fractal_exterior(etype, efac, k, it_max, ma, mb);
         return fractal_interior(itype, ifac, ma, mb, m2);
@@ -859,7 +863,7 @@ static double fractal(const iris_pattern *pat, vec3 p, bool julia)
     double ca = julia ? pat->complex_c.u : p.x;
     double cb = julia ? pat->complex_c.v : p.y;
     double mind2 = a * a + b * b;
-    for (int k = 0; k < it_max; k++) {
+    for (int k = 0; k < it_run; k++) {
         double ra = a, rb = b;
         for (int e = 1; e < n; e++) {
             double t = ra * a - rb * b;

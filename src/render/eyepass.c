@@ -142,6 +142,7 @@ static bool trace_one(struct job *j, struct trace_ctx *c, double x,
             r.st.e[i] = j->cam_stack.e[i];
     }
     c->level = 0;
+    c->n.camera++;
     trace_ray(c, &r, 1.0, false, rgb);
     rgb[3] = c->transm;
     /* v * 0 is 0 for finite v, NaN for an infinity or NaN: one test for
@@ -193,7 +194,7 @@ static bool trace_sample(struct job *j, struct trace_ctx *c, double x,
         return trace_one(j, c, x, y, 0, x, y, rgb);
     const struct focal_blur *fb = &j->fb;
     int seed = focal_blur_seed(x, y);
-    double sum[NCH] = { 0, 0, 0, 0 }, s2[3] = { 0, 0, 0 };
+    double sum[NCH] = { 0, 0, 0, 0 }, s2[NCH] = { 0, 0, 0, 0 };
     int nr = 0, level = 0;
     bool spectral = false;
     do {
@@ -207,7 +208,7 @@ static bool trace_sample(struct job *j, struct trace_ctx *c, double x,
                                   col);
             for (int k = 0; k < NCH; k++)
                 sum[k] += col[k];
-            for (int k = 0; k < 3; k++)
+            for (int k = 0; k < NCH; k++)
                 s2[k] += col[k] * col[k];
         }
     } while (!focal_blur_converged(fb, nr, sum, s2) && nr < fb->samples);
@@ -368,11 +369,14 @@ static void px_gamma_exact(const struct job *j, struct px *p)
     p->gerr = 0.0;
 }
 
-/* The difference the AA threshold is compared with. */
+/* The difference the AA threshold is compared with: POV-Ray's
+** Colour_Distance_RGBT, the gamma-adjusted colour and the transmit
+** channel as it is (under +UA the background's edges; a camera ray that
+** does not exist has transmit 1 also without). */
 static double aa_distance(const struct px *a, const struct px *b)
 {
     return fabs(a->g[0] - b->g[0]) + fabs(a->g[1] - b->g[1]) +
-           fabs(a->g[2] - b->g[2]);
+           fabs(a->g[2] - b->g[2]) + fabs(a->c[3] - b->c[3]);
 }
 
 /* Whether a and b differ by the AA threshold, as with exact pow(): the
@@ -452,6 +456,9 @@ static void put_pixel(struct job *j, int x, int y, const double in[NCH],
                       bool spectral)
 {
     const struct tracer *t = j->tracer;
+    /* interrupted: the pixel's rays may have stopped (trace_stopped) */
+    if (t->interrupt && *t->interrupt)
+        return;
     float *px = &j->out->pixels[((size_t)y * j->out->width + x) * 4];
     double col[3] = { in[0], in[1], in[2] };
     if (!isfinite(col[0]) || !isfinite(col[1]) || !isfinite(col[2])) {
@@ -770,7 +777,14 @@ enum iris_status eyepass_run(const struct tracer *tr,
     j.aa = opts->aa;
     j.aa_depth = opts->aa_depth < 1 ? 1 : opts->aa_depth > 9 ? 9 : opts->aa_depth;
     j.aa_threshold = opts->aa_threshold;
-    eye_aa_gamma_init(&j.gam, opts->aa_gamma);
+    /* POV-Ray compares colours encoded by the AA gamma from linear light:
+    ** its curve decodes the working gamma first (view.cpp's transcoding
+    ** curve, one power law for the two), so under assumed_gamma 2.2 the
+    ** exponent is 2.2/2.5, not 1/2.5 (AA decisions, and the pixels
+    ** supersampled, as POV-Ray's) */
+    double aa_wg = tr->gamma_off ? 1.0 : tr->working_gamma;
+    eye_aa_gamma_init(&j.gam, (opts->aa_gamma > 0 ? opts->aa_gamma : 1.0) /
+                                  aa_wg);
     /* POV-Ray clips the jitter amount to [0, 1] */
     j.jitter = opts->jitter ? fmin(fmax(opts->jitter_amount, 0.0), 1.0) : 0.0;
     j.ortho = scene->camera.kind == IRIS_CAM_ORTHOGRAPHIC ||
@@ -833,8 +847,17 @@ enum iris_status eyepass_run(const struct tracer *tr,
             opts->progress(opts->progress_user, "render", 1.0);
     }
     if (stats) {
-        for (int i = 0; i < n_ctx; i++)
+        for (int i = 0; i < n_ctx; i++) {
+            const struct trace_counts *n = &j.ctx[i].n;
             stats->rays_traced += j.ctx[i].rays;
+            stats->rays += n->rays;
+            stats->rays_camera += n->camera;
+            stats->rays_reflected += n->reflected;
+            stats->rays_refracted += n->refracted;
+            stats->rays_transmitted += n->transmitted;
+            stats->shadow_tests += n->shadow_tests;
+            stats->shadow_hits += n->shadow_hits;
+        }
         stats->threads = threads;
         stats->passes = 1;
         stats->nan_pixels += atomic_load(&j.nan_count);

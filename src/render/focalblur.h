@@ -60,10 +60,11 @@ void focal_blur_subpixel(int seed, int nr, double *dx, double *dy);
 void focal_blur_ray(const struct focal_blur *fb, const iris_camera *cam,
                     double x, double y, int nr, vec3 raw, ray *r);
 
-/* Whether the per-channel sums of n rays (s1 = sum c, s2 = sum c^2) pass
-** the confidence test, so that no more rays are needed. */
+/* Whether the per-channel sums of n rays (s1 = sum c, s2 = sum c^2 over
+** r, g, b and the transmit channel) pass the confidence test, so that no
+** more rays are needed. */
 bool focal_blur_converged(const struct focal_blur *fb, int n,
-                          const double s1[3], const double s2[3]);
+                          const double s1[4], const double s2[4]);
 
 /* The x with P(chi^2_df > x) = p (Cephes' chdtri), for df > 0 and p in
 ** (0, 1). */

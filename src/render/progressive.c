@@ -254,6 +254,7 @@ static enum iris_status build_map(struct tracer *tr, const struct accel *acc,
     po.pass = pass;
     po.radius_scale = progressive_radius_scale(pass);
     po.mat = mat;
+    po.interrupt = tr->interrupt;
     memset(ps, 0, sizeof *ps);
     char *logbuf = NULL;
     size_t loglen = 0;
@@ -633,6 +634,13 @@ enum iris_status progressive_run(struct tracer *tr, const struct accel *acc,
             memset(&es, 0, sizeof es);
             st = eyepass_run(tr, &po, threads, &img, &es);
             es_sum.rays_traced += es.rays_traced;
+            es_sum.rays += es.rays;
+            es_sum.rays_camera += es.rays_camera;
+            es_sum.rays_reflected += es.rays_reflected;
+            es_sum.rays_refracted += es.rays_refracted;
+            es_sum.rays_transmitted += es.rays_transmitted;
+            es_sum.shadow_tests += es.shadow_tests;
+            es_sum.shadow_hits += es.shadow_hits;
             es_sum.nan_pixels += es.nan_pixels;
             es_sum.threads = es.threads;
             if (st != IRIS_OK) {
@@ -755,6 +763,13 @@ enum iris_status progressive_run(struct tracer *tr, const struct accel *acc,
         stats->photons_stored = stored;
         stats->photon_bytes = bytes;
         stats->rays_traced += es_sum.rays_traced;
+        stats->rays += es_sum.rays;
+        stats->rays_camera += es_sum.rays_camera;
+        stats->rays_reflected += es_sum.rays_reflected;
+        stats->rays_refracted += es_sum.rays_refracted;
+        stats->rays_transmitted += es_sum.rays_transmitted;
+        stats->shadow_tests += es_sum.shadow_tests;
+        stats->shadow_hits += es_sum.shadow_hits;
         stats->nan_pixels += es_sum.nan_pixels;
         stats->threads = es_sum.threads ? es_sum.threads : threads;
     }

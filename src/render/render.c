@@ -154,6 +154,7 @@ static enum iris_status photon_pass(const struct render_plan *plan,
     po.seed = opts->seed;
     po.mat = mat;
     po.log = opts->log; /* the spacing-cap warning goes with the others */
+    po.interrupt = opts->interrupt;
     struct photon_stats ps;
     memset(&ps, 0, sizeof ps);
     enum iris_status st = build_or_load(t->scene, acc, &po, map, &ps, err,
@@ -352,6 +353,7 @@ enum iris_status iris_render(const iris_scene *scene,
     tr.seed = opts->seed;
     tr.spectral_min = opts->spectral_samples_min;
     tr.alpha = opts->alpha;
+    tr.interrupt = opts->interrupt; /* a slow pixel stops too (trace.c) */
     double t1 = par_now();
     struct photon_map *pmap = NULL;
     st = photon_pass(&plan, &tr, acc, mat, threads, opts, &pmap, stats, err,

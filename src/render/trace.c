@@ -15,6 +15,7 @@
 #include "render/eyespectrum.h"
 #include "render/media.h"
 #include "render/rainbow.h"
+#include "render/subsurface.h"
 #include "render/gather.h"
 #include "material/noise.h"
 #include "math/transform.h"
@@ -80,7 +81,8 @@ bool tracer_init(struct tracer *t, const iris_scene *scene,
                           &t->lights[i]);
             if (t->lights[i].area) {
                 long g = (long)t->lights[i].size1 * t->lights[i].size2;
-                if (g > 1 << 20) /* a sane cap: 1024 x 1024 sub-lights */
+                /* a point light, as the parser warned */
+                if (g > IRIS_AREA_LIGHT_MAX_GRID)
                     t->lights[i].area = false;
                 else if (g > t->max_area_grid)
                     t->max_area_grid = (int)g;
@@ -396,8 +398,6 @@ static void shadow_colour(struct trace_ctx *c, const struct interior_stack *st,
     vec3 n = h->shading_n;
     double nd = v3_dot(n, L);
     const iris_texture *tex = hit_texture(h, nd > 0.0);
-    /* (a blob blending component textures may let light through
-    ** where its hit's texture alone would not) */
     if (texture_opaque(tex) && !mat_texture_blended(h->obj)) {
         /* lc times the sum below, which is +0 here */
         for (int k = 0; k < 3; k++)
@@ -502,6 +502,19 @@ static inline void shadow_media(struct trace_ctx *c,
         shadow_media_on(c, st, light, o, L, len, at_surface, lc);
 }
 
+/* True once the render was interrupted: the ray is not traced (black),
+** so that a pixel of millions of rays (an area light with
+** area_illumination, focal blur) ends within milliseconds of SIGTERM
+** instead of minutes; the eye pass writes no pixel after it. The flag is
+** read every 256 rays, not at every one (a volatile load). */
+static inline bool trace_stopped(struct trace_ctx *c)
+{
+    if (!c->stopped && (c->rays & 255) == 0 && c->t->interrupt &&
+        *c->t->interrupt)
+        c->stopped = true;
+    return c->stopped;
+}
+
 /* POV-Ray's TracePointLightShadowRay: walks the segment to the light,
 ** filtering 'lc' by every object met, until it is black. The shadow ray
 ** starts with the eye ray's interiors and, as POV-Ray's ComputeShadowMedia
@@ -522,13 +535,19 @@ static void point_shadow(struct trace_ctx *c, const struct interior_stack *eye_s
     for (int guard = 0; guard < 1024; guard++) {
         ray r = { origin, L };
         struct hit h;
+        if (trace_stopped(c)) {
+            lc[0] = lc[1] = lc[2] = 0.0;
+            return;
+        }
         c->rays++;
+        c->n.shadow_tests++;
         if (!t->q.intersect(t->q.impl, &r, eps, depth - eps,
                             ACCEL_SKIP_NO_SHADOW, &h) ||
             !(h.t > eps) || !(h.t < depth - eps)) {
             shadow_media(c, st, light, origin, L, depth, false, lc);
             return;
         }
+        c->n.shadow_hits++;
         if (t->photon_shadow && t->photon_map &&
             t->photon_shadow(t->photon_map, h.obj, light, lit)) {
             lc[0] = lc[1] = lc[2] = 0.0;
@@ -614,7 +633,7 @@ static void area_subset(struct trace_ctx *c, const struct area_job *j,
     area_sample(c, j, u1, v2, s[2]);
     area_sample(c, j, u2, v2, s[3]);
     int adaptive = j->l->src->adaptive;
-    if ((u2 - u1 > 1 || v2 - v1 > 1) && level < 64 &&
+    if ((u2 - u1 > 1 || v2 - v1 > 1) && level < 64 && !c->stopped &&
         (level < adaptive || colour_distance(s[0], s[1]) > 0.1 ||
          colour_distance(s[1], s[3]) > 0.1 ||
          colour_distance(s[3], s[2]) > 0.1 ||
@@ -804,7 +823,7 @@ static void full_area_light(struct trace_ctx *c, const struct layer_shade *s,
     int n1 = l->size1, n2 = l->size2;
     vec3 a1, a2;
     area_axes(l, s->h->p, &a1, &a2);
-    for (int u = 0; u < n1; u++)
+    for (int u = 0; u < n1 && !c->stopped; u++)
         for (int v = 0; v < n2; v++) {
             double ju = u, jv = v;
             if (l->src->jitter) {
@@ -925,7 +944,13 @@ static void reflect(struct trace_ctx *c, const struct tray *eye,
     nr.r.d = v3_norm(R);
     nr.tmin = h->eps;
     nr.reflected = true;
+    /* POV-Ray's reflected rays, and all they spawn, see the +UA
+    ** background as opaque (sky_colour) */
+    bool opaque_bg = c->opaque_bg;
+    c->opaque_bg = true;
+    c->n.reflected++;
     trace_ray(c, &nr, weight, false, out);
+    c->opaque_bg = opaque_bg;
     if (f && f->irid > 0.0)
         irid_colour(c->t, f, nr.r.d, d, n, h->p, out);
 }
@@ -959,6 +984,7 @@ static bool refract_one(struct trace_ctx *c, const struct tray *eye,
     nr.r.o = h->p;
     nr.r.d = T;
     out[0] = out[1] = out[2] = 0.0;
+    c->n.refracted++;
     trace_ray(c, &nr, weight, false, out);
     return false;
 }
@@ -1050,6 +1076,7 @@ static bool refraction(struct trace_ctx *c, const struct tray *eye,
     if (fabs(eta - 1.0) < T_EPSILON && !dispersive) {
         nr.r.o = h->p;
         out[0] = out[1] = out[2] = 0.0;
+        c->n.transmitted++;
         trace_ray(c, &nr, weight, true, out);
         return false;
     }
@@ -1185,11 +1212,20 @@ static void lighted_texture(struct trace_ctx *c, const struct tray *eye,
                                        filcol[2] * col[2] };
                 double mx = mat_greyscale(fc) * att * f->diffuse;
                 if (!gi_done && mx > t->adc) {
-                    gather_irradiance(c, eye, h, raw, weight * mx, gi_e);
+                    gather_irradiance(c, eye, h, raw, l->n, weight * mx,
+                                      gi_e);
                     gi_done = true;
                 }
                 for (int k = 0; k < 3; k++)
                     tmp[k] += col[k] * gi_e[k] * f->diffuse * att;
+            }
+            /* subsurface{}: the BSSRDF stands for the diffuse term of
+            ** the lights and photons below (subsurface.h) */
+            struct subsurface_layer sss;
+            if (f->subsurface && subsurface_enabled(t)) {
+                l = subsurface_shade(c, eye, h, l, raw, fres_n, lit, &sss,
+                                     tmp);
+                f = l->finish;
             }
             struct layer_shade s = { l, eye, h, att };
             if (lit && (f->diffuse != 0.0 || f->diffuse_back != 0.0 ||
@@ -1311,9 +1347,19 @@ static void sky_colour(struct trace_ctx *c, vec3 d, double out[3])
     const iris_sky_sphere *sky = sc->sky_sphere;
     double col[3] = { 0, 0, 0 }, filcol[3] = { 1, 1, 1 };
     const iris_colour *bg = &sc->background;
+    /* +UA: the background is transparent, except to reflected and
+    ** radiosity rays, which POV-Ray lets see it opaque */
+    bool alpha_bg = t->alpha && !c->opaque_bg && c->gi_depth == 0;
     if (t->legacy) {
         /* POV-Ray's pre-3.7 compositing: background shows through the
-        ** sky by the accumulated filter and transmit. */
+        ** sky by the accumulated filter and transmit. Under +UA the
+        ** sky of an eye or refracted ray is transparent black (3.6's
+        ** alpha background; the sky sphere is not drawn). */
+        if (alpha_bg) {
+            out[0] = out[1] = out[2] = 0.0;
+            c->transm = 1.0;
+            return;
+        }
         out[0] = bg->r; out[1] = bg->g; out[2] = bg->b;
         if (!sky || sky->n_pigments == 0)
             return;
@@ -1359,11 +1405,12 @@ static void sky_colour(struct trace_ctx *c, vec3 d, double out[3])
     ** t are dropped, and a background statement's colour was composed on
     ** black first: rgb * (1 - transmit) (POV-Ray does that as it parses
     ** 'background', so the default background and one a program sets
-    ** directly are not scaled). Not done here: POV-Ray's reflected rays
-    ** see the alpha background as opaque. */
+    ** directly are not scaled). Reflected rays see the alpha background
+    ** opaque: f and t dropped, the colour not scaled. */
     iris_colour b = *bg;
-    if (!t->alpha) {
-        double keep = sc->has_background ? 1.0 - b.t : 1.0;
+    if (!alpha_bg) {
+        /* the precomposition on black is the parser's without +UA only */
+        double keep = !t->alpha && sc->has_background ? 1.0 - b.t : 1.0;
         b.r *= keep; b.g *= keep; b.b *= keep;
         b.f = b.t = 0.0;
     }
@@ -1443,6 +1490,10 @@ static void apply_fog(struct trace_ctx *c, const ray *r, double depth,
     }
     for (int k = 0; k < 3; k++)
         col[k] = sum_col[k] + sum_att[k] * col[k];
+    /* the fog hides the background as it hides colour: +UA's alpha
+    ** (POV-Ray's ComputeFog scales the transmit channel alike) */
+    if (!shadow)
+        c->transm *= mat_greyscale(sum_att);
 }
 
 /* ------------------------------------------------------------------ */
@@ -1474,7 +1525,8 @@ double trace_ray(struct trace_ctx *c, const struct tray *r, double weight,
     const struct tracer *t = c->t;
     rgb[0] = rgb[1] = rgb[2] = 0.0;
     c->transm = 0.0;
-    if (c->level >= t->max_level || weight < t->adc)
+    c->n.rays++;               /* before the bailouts, as POV-Ray counts */
+    if (c->level >= t->max_level || weight < t->adc || trace_stopped(c))
         return HUGE_VAL;
     struct hit h;
     c->rays++;
@@ -1487,6 +1539,17 @@ double trace_ray(struct trace_ctx *c, const struct tray *r, double weight,
                                 skip, &h);
     if (found && !(h.t > 0 && isfinite(h.t)))
         found = false;
+    if (c->imp_check) {
+        /* a radiosity gather ray: an object less important than the
+        ** ray's rank in its sample only gives its distance (POV-Ray) */
+        c->imp_check = false;
+        double imp = found && h.obj && h.obj->radiosity_importance > 0.0
+                         ? h.obj->radiosity_importance
+                         : t->scene->settings.rad_default_importance;
+        c->imp_found = imp > 0.0 ? (float)imp : 1.0f;
+        if (c->imp_found < c->imp_query)
+            return found ? h.t : HUGE_VAL;
+    }
     if (!continued)
         c->level++;
     if (found)

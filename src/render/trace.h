@@ -94,6 +94,10 @@ struct tracer {
     ** gather rays' hits read (gather.c). NULL without */
     struct gather *gather;
     const void *photon_map_local, *photon_map_gather;
+    /* iris_render_options.interrupt (SIGINT/SIGTERM), or NULL: read every
+    ** 256 rays of a context, so that one pixel of millions of rays stops
+    ** within milliseconds (trace.c trace_stopped) */
+    volatile int *interrupt;
 };
 
 /* The interiors a ray is inside, innermost last (semantics §1.2). */
@@ -134,6 +138,20 @@ static inline void tray_copy(struct tray *dst, const struct tray *src)
         dst->st.e[i] = src->st.e[i];
 }
 
+/* What a context's rays were, counted where POV-Ray's render statistics
+** count them (trace.cpp), so that the two renderers' work can be compared
+** ray for ray (tests/render/raycounts.sh, bench/ray-counts.sh). */
+struct trace_counts {
+    uint64_t rays;             /* trace_ray() calls, those that max_trace_
+                                  level or adc_bailout stop included
+                                  (POV-Ray's "Rays") */
+    uint64_t camera;           /* camera rays ("Pixels" + "Samples") */
+    uint64_t reflected, refracted, transmitted;
+    uint64_t shadow_tests;     /* shadow ray queries */
+    uint64_t shadow_hits;      /* ... that met an object before the light
+                                  ("Succeeded") */
+};
+
 /* One thread's scratch space. */
 struct trace_ctx {
     const struct tracer *t;
@@ -147,11 +165,23 @@ struct trace_ctx {
                                   background the ray saw through
                                   transparent surfaces (POV-Ray's transmit
                                   channel; alpha = 1 - transm) */
+    bool opaque_bg;            /* under a reflected ray: the +UA background
+                                  is seen opaque (POV-Ray's ticket.
+                                  alphaBackground, cleared by
+                                  ComputeReflection) */
     uint64_t rays;
+    struct trace_counts n;     /* POV-Ray's statistics of these rays */
+    bool stopped;              /* the interrupt was seen: no more rays */
     double (*grid)[3];         /* area-light samples, max_area_grid */
     bool *grid_set;
     int gi_depth;              /* > 0 inside a radiosity gather ray */
     struct gather_local *gl;   /* the gather's tile-local records */
+    /* radiosity importance (POV-Ray's radiosityImportanceQueried/Found):
+    ** set by the gather for its next ray; trace_ray stores the hit
+    ** object's importance in imp_found and does not shade the hit when
+    ** it is below imp_query (the rays it spawns do not check) */
+    bool imp_check;
+    float imp_query, imp_found;
     /* Never touched: one cache line between this context's fields and
     ** the next one's in an array of contexts (one per thread). Without
     ** it thread 1's writes (rng, level, transm, rays at every ray) and

@@ -256,6 +256,71 @@ st=1
     grep -q "interrupt\.pov:[0-9]*:[0-9]*: error: interrupted" "$tmp/out" && st=0
 tap_result_todo $st "SIGINT while parsing: exit 130 (got $rc) within 2 s (${secs}s), located" ""
 
+# SIGTERM inside one slow pixel: 256 area lights of 1000 x 1000
+# sub-lights with area_illumination make the pixel 2.6e8 shadow rays
+# (40 s of CPU; the render checked the signal only between tiles, so it
+# ran to the end). The signal goes once iris has used 0.3 s of CPU, long
+# past the parse and the build (10 ms), so it lands inside the pixel. It
+# must stop within 2 s with exit 130 and write the image it has (the
+# pixel left unrendered), alone and in a progressive pass (--passes=2,
+# whose first pass is cut short: the partial image). 'timeout' bounds a
+# hang; the CPU time read is iris's, timeout's child. The same for a
+# photon pass of 2.2e7 photons (10 s of CPU, 'collect off' so that no
+# memory grows: it ran to the end, 22 s after the signal, before). And
+# for the global (radiosity) photon pass: 20 diffuse bounces in a closed
+# box around a rippled isosurface, 25 s of CPU (it went on 21.7 s after
+# the signal, the batches of 4096 photons being checked only at their
+# start: now every photon).
+{ printf '#version 3.7;\nglobal_settings { radiosity { recursion_limit 20 } }\n'
+  printf 'camera { location <0, 0, -3> look_at 0 }\n'
+  printf 'light_source { <0, 0.5, -1>, rgb 1 }\n'
+  printf 'box { -2, 2 inverse pigment { rgb 0.99 } finish { diffuse 1 } }\n'
+  printf 'isosurface { function { x*x + y*y + z*z - 0.25 + 0.01 * sin(40 * x) * sin(40 * y) * sin(40 * z) }\n'
+  printf '  contained_by { box { -1, 1 } } max_gradient 1000 pigment { rgb 0.99 } }\n'
+} >"$S/slow_global.pov"
+{ printf '#version 3.7;\nglobal_settings { photons { count 50000000 } }\n'
+  printf 'camera { location <0, 1, -3> look_at 0 }\n'
+  printf 'light_source { <0, 5, -5>, rgb 1 photons { refraction on } }\n'
+  printf 'sphere { 0, 1 pigment { rgbf 1 } interior { ior 1.5 }\n'
+  printf '  photons { target refraction on } }\n'
+  printf 'plane { y, -1 pigment { rgb 1 } photons { collect off } }\n'
+} >"$S/slow_photons.pov"
+{ printf '#version 3.7;\ncamera { location <0, 1, -3> look_at 0 }\n'
+  printf '#declare I = 0;\n#while (I < 256)\n'
+  printf '  light_source { <I / 4 - 32, 5, 0>, rgb 0.005\n'
+  printf '    area_light x, z, 1000, 1000 area_illumination on }\n'
+  printf '  #declare I = I + 1;\n#end\nplane { y, 0 pigment { rgb 1 } }\n'
+} >"$S/slow_pixel.pov"
+# cpu_ticks PID: user + system CPU time of PID's child (iris under
+# timeout) in clock ticks, 0 before it starts or once it is gone
+cpu_ticks() {
+    c=$(cat "/proc/$1/task/$1/children" 2>/dev/null | cut -d' ' -f1)
+    t=$(awk '{ print $14 + $15 }' "/proc/${c:-none}/stat" 2>/dev/null)
+    echo "${t:-0}"
+}
+for spec in slow_pixel: slow_pixel:--passes=2 slow_photons: slow_global:; do
+    scene=${spec%%:*} mode=${spec#*:}
+    rm -f "$tmp/slow.png"
+    timeout -s KILL $WALL "$IRIS" -q +W1 +H1 $mode "$S/$scene.pov" \
+        -o "$tmp/slow.png" >"$tmp/out" 2>&1 &
+    pid=$!
+    i=0  # 0.3 s of CPU at 100 ticks a second, at most 30 s of waiting
+    while [ "$(cpu_ticks $pid)" -lt 30 ] && [ $i -lt 300 ] &&
+          kill -0 $pid 2>/dev/null; do
+        sleep 0.1
+        i=$((i + 1))
+    done
+    kill -TERM $pid
+    t0=$(date +%s)
+    wait $pid
+    rc=$?
+    secs=$(( $(date +%s) - t0 ))
+    st=1
+    [ "$rc" = 130 ] && [ "$secs" -le 2 ] && [ -s "$tmp/slow.png" ] && st=0
+    tap_result_todo $st "SIGTERM inside $scene ${mode:-(one pass)}: exit 130 (got $rc) within 2 s (${secs}s), image written" ""
+    [ $st = 0 ] || head -n 3 "$tmp/out" | sed 's/^/#   /'
+done
+
 # The output never replaces the scene: not by its own name, not through
 # another spelling of its path, not through a symbolic link.
 printf '#include "head.inc"\nsphere { 0, 1 pigment { rgb 1 } }\n' >"$S/keep.pov"

@@ -113,6 +113,53 @@ static void test_bad_usage(void **state)
 
 /* Output names follow POV-Ray: scene base name + .png, +FE gives .exr,
 ** and a name without extension gets one. */
+/* Options that contradict each other or the image (options.c
+** check_combination): a checkpoint only a progressive render writes; a
+** render window starting past the image or after its end. Legal
+** neighbours of each pass. */
+static void test_conflicts(void **state)
+{
+    (void)state;
+    struct cli_options o;
+    char err[256];
+    assert_int_equal(parse(&o, err, 2, "s.pov", "--checkpoint=c"), -1);
+    assert_non_null(strstr(err, "only a progressive render"));
+    assert_int_equal(parse(&o, err, 3, "s.pov", "--checkpoint=c",
+                           "--passes=1"), -1);
+    assert_int_equal(parse(&o, err, 3, "s.pov", "--checkpoint=c",
+                           "--passes=2"), 0);
+    assert_int_equal(parse(&o, err, 3, "s.pov", "--checkpoint=c",
+                           "--time-limit=5"), 0);
+    assert_int_equal(parse(&o, err, 3, "s.pov", "--checkpoint=c",
+                           "--resume=c"), 0);
+    /* rows and columns are 1-based: +SR8 is the last row of +H8 */
+    assert_int_equal(parse(&o, err, 4, "s.pov", "+W8", "+H8", "+SR8"), 0);
+    assert_int_equal(parse(&o, err, 4, "s.pov", "+W8", "+H8", "+SR9"), -1);
+    assert_string_equal(err, "+SR9: the image has 8 rows (+H8)");
+    assert_int_equal(parse(&o, err, 4, "s.pov", "+SC9", "+W8", "+H8"), -1);
+    assert_string_equal(err, "+SC9: the image has 8 columns (+W8)");
+    assert_int_equal(parse(&o, err, 4, "s.pov", "+H8", "+SR5", "+ER5"), 0);
+    assert_int_equal(parse(&o, err, 4, "s.pov", "+H8", "+SR6", "+ER5"), -1);
+    assert_int_equal(parse(&o, err, 4, "s.pov", "+W8", "+SC3", "+EC2"), -1);
+    /* +ER past the image is an error, as in POV-Ray 3.7 ("Invalid end
+    ** column or row") */
+    assert_int_equal(parse(&o, err, 4, "s.pov", "+H8", "+SR2", "+ER100"), -1);
+    assert_string_equal(err, "+ER100: the image has 8 rows (+H8)");
+    /* fractions of the image (tests/cli/window.sh renders them against
+    ** POV-Ray): +SR0.5 of 8 rows is row (int)(8 * 0.5) + 1 = 5, +ER0.75
+    ** ends at (int)(8 * 0.75) = 6, +EC1 at the last column, whichever
+    ** order +W/+H come in */
+    assert_int_equal(parse(&o, err, 6, "s.pov", "+SR0.5", "+ER0.75", "+EC1",
+                           "+W8", "+H8"), 0);
+    assert_int_equal(o.render.start_row, 5);
+    assert_int_equal(o.render.end_row, 6);
+    assert_int_equal(o.render.end_col, 8);
+    assert_int_equal(o.render.start_col, 0);
+    /* -o with an empty name */
+    assert_int_equal(parse(&o, err, 3, "s.pov", "-o", ""), -1);
+    assert_string_equal(err, "-o needs a file name");
+}
+
 static void test_output_name(void **state)
 {
     (void)state;
@@ -142,6 +189,7 @@ int main(void)
         cmocka_unit_test(test_pov_switches),
         cmocka_unit_test(test_long_options),
         cmocka_unit_test(test_bad_usage),
+        cmocka_unit_test(test_conflicts),
         cmocka_unit_test(test_output_name),
     };
     return cmocka_run_group_tests_name("cli options", tests, NULL, NULL);

@@ -7,6 +7,9 @@
 # of at least 35 dB on the sRGB values (psnr.c). A scene may lower its bar
 # with a line '// parity-min-psnr: N reason', or mark a known failure of
 # another part with '// parity-todo: reason' (reported as TAP TODO).
+# A line '// parity-options: SWITCHES' gives both renderers more POV-Ray
+# switches after the defaults (e.g. '+UA' or '+AM2 +R4 -J'); with +UA
+# the alpha channel is compared too (psnr --rgba).
 #
 # Every scene here is one iris renders: a scene error (exit status 2)
 # fails like any other exit status, so a parser regression cannot hide
@@ -44,9 +47,15 @@ for scene in $scenes; do
     todo=$(sed -n 's|^// parity-todo: *\(.*\)|\1|p' "$scene" | head -n 1)
     directive=""
     [ -n "$todo" ] && directive=" # TODO $todo"
+    opts=$(sed -n 's|^// parity-options: *\(.*\)|\1|p' "$scene" | head -n 1)
+    mode=""
+    case " $(printf '%s' "$opts" | tr 'a-z' 'A-Z') " in
+    *" +UA "*) mode=--rgba ;;
+    esac
 
+    # shellcheck disable=SC2086 (opts: several switches)
     "$IRIS" "+I$scene" "+O$work/$name.iris.png" "+L$srcdir/scenes" $size $aa \
-        -q --threads=2 \
+        $opts -q --threads=2 \
         > "$work/$name.iris.log" 2>&1
     rc=$?
     if [ $rc -ne 0 ]; then
@@ -55,13 +64,13 @@ for scene in $scenes; do
         continue
     fi
     (cd "$work" && "$POVRAY" "+I$scene" "+O$work/$name.pov.png" \
-        "+L$srcdir/scenes" $size $aa \
+        "+L$srcdir/scenes" $size $aa $opts \
         -D -V +FN > "$work/$name.pov.log" 2>&1)
     if [ ! -s "$work/$name.pov.png" ]; then
         echo "ok $i - $name # SKIP POV-Ray did not render it"
         continue
     fi
-    res=$("$psnr" "$work/$name.iris.png" "$work/$name.pov.png" 2>&1)
+    res=$("$psnr" $mode "$work/$name.iris.png" "$work/$name.pov.png" 2>&1)
     db=${res%% *}
     if [ "$db" = inf ] || awk -v a="$db" -v b="$min" \
         'BEGIN { exit !(a + 0 >= b + 0 && a != "") }'; then

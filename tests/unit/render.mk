@@ -95,3 +95,17 @@ TESTS += tests/unit/test_camray
 tests_unit_test_camray_SOURCES = tests/unit/test_camray.c tests/testutil.h
 tests_unit_test_camray_CFLAGS = $(TEST_CFLAGS)
 tests_unit_test_camray_LDADD = $(TEST_LDADD)
+check_PROGRAMS += tests/unit/test_subsurface
+TESTS += tests/unit/test_subsurface
+tests_unit_test_subsurface_SOURCES = tests/unit/test_subsurface.c tests/testutil.h
+tests_unit_test_subsurface_CFLAGS = $(TEST_CFLAGS)
+tests_unit_test_subsurface_LDADD = $(TEST_LDADD)
+# the iteration cap of mandel/julia/magnet patterns (IRIS_PATTERN_MAX_ITERATIONS)
+check_PROGRAMS += tests/unit/test_fractal_cap
+TESTS += tests/unit/test_fractal_cap
+tests_unit_test_fractal_cap_SOURCES = tests/unit/test_fractal_cap.c tests/testutil.h
+tests_unit_test_fractal_cap_CFLAGS = $(TEST_CFLAGS)
+tests_unit_test_fractal_cap_LDADD = $(TEST_LDADD)
+# iris's ray counts against POV-Ray's render statistics (tests/render/raycounts.sh)
+TESTS += tests/render/raycounts.sh
+EXTRA_DIST += tests/render/raycounts.sh
