@@ -5,6 +5,9 @@
 #   time_median N CMD...   runs CMD N times (output discarded) and prints
 #                          the median wall time in seconds
 #   ratio A B              prints A/B with three decimals
+#   default_scenes         prints the parity scenes and the example scenes
+#                          of example-scenes.txt, one path a line (the
+#                          scenes a bench renders when given none)
 
 time_once() {
     t0=$(date +%s.%N)
@@ -42,4 +45,13 @@ bench_setup() {
     trap 'rm -rf "$BENCH_TMP"' EXIT
     [ -x "$IRIS" ] || { echo "bench: no iris binary in $build"; exit 1; }
     command -v "$POVRAY" >/dev/null || { echo "bench: povray not found"; exit 1; }
+}
+
+default_scenes() {
+    printf '%s\n' "$here"/../tests/render/scenes/*.pov
+    [ -f "$here/example-scenes.txt" ] || return 0
+    while read -r s; do
+        case $s in ''|'#'*) continue ;; esac
+        echo "/usr/share/doc/povray/examples/$s"
+    done <"$here/example-scenes.txt"
 }

@@ -29,15 +29,9 @@ done
 shift $((OPTIND - 1))
 bench_setup
 w=${size%x*}; h=${size#*x}
-if [ $# -eq 0 ]; then
-    set -- "$here"/../tests/render/scenes/*.pov
-    if [ -f "$here/example-scenes.txt" ]; then
-        while read -r s; do
-            case $s in ''|'#'*) continue ;; esac
-            set -- "$@" "/usr/share/doc/povray/examples/$s"
-        done <"$here/example-scenes.txt"
-    fi
-fi
+# no scene given: the parity scenes and the example scenes (paths have no
+# blanks, so word splitting is safe)
+[ $# -eq 0 ] && set -- $(default_scenes)
 common="+W$w +H$h +A0.3 +AM1 +R3"
 
 # POV-Ray's statistic 'label' from its log, 0 when not printed.

@@ -167,6 +167,37 @@ static int peek_op(pp_state *ps)
     return k;
 }
 
+/* One component of a binary operator: arithmetic (+ - * /), a relation
+** (POV-Ray's Parse_Rel_Term: 1 or 0; equality within POV-Ray's absolute
+** EPSILON, 1e-10, also for '<=' and '>='; '<' and '>' exact) or '&' / '|'
+** (Parse_Logical). */
+static double component(pp_state *ps, const pp_token *at, int op,
+                        double x, double y)
+{
+    bool same = !pp_true(x - y);
+    switch (op) {
+    case T_PLUS: return x + y;
+    case T_MINUS: return x - y;
+    case T_STAR: return x * y;
+    case T_SLASH:
+        if (y == 0)
+            pp_error(ps, at, "division by zero");
+        return x / y;
+    case T_LT: return x < y;
+    case T_LE: return x <= y || same;
+    case T_EQUALS: return same;
+    case T_NE: return !same;
+    case T_GE: return x >= y || same;
+    case T_GT: return x > y;
+    case T_AMP: return pp_true(x) && pp_true(y);
+    default: return pp_true(x) || pp_true(y); /* T_BAR */
+    }
+}
+
+/* A binary operator component by component: the operands are promoted to
+** the longer one (a float fills every component, a shorter vector gets
+** zeros), so '(<1,2,3> = <1,2,4>)' is <1,1,0>; the result is a colour if
+** either operand is one. */
 static void binop(pp_state *ps, const pp_token *at, pp_value *a,
                   const pp_value *bb, int op)
 {
@@ -177,20 +208,8 @@ static void binop(pp_state *ps, const pp_token *at, pp_value *a,
     bool colour = a->kind == V_COLOUR || b.kind == V_COLOUR;
     pp_value_promote(a, dim);
     pp_value_promote(&b, dim);
-    for (int i = 0; i < dim; i++) {
-        double x = a->v[i], y = b.v[i], r = 0;
-        switch (op) {
-        case T_PLUS: r = x + y; break;
-        case T_MINUS: r = x - y; break;
-        case T_STAR: r = x * y; break;
-        case T_SLASH:
-            if (y == 0)
-                pp_error(ps, at, "division by zero");
-            r = x / y;
-            break;
-        }
-        a->v[i] = r;
-    }
+    for (int i = 0; i < dim; i++)
+        a->v[i] = component(ps, at, op, a->v[i], b.v[i]);
     a->dim = dim;
     a->kind = dim == 1 ? V_FLOAT : colour ? V_COLOUR : V_VECTOR;
 }
@@ -1247,57 +1266,6 @@ static pp_value expr_add(pp_state *ps)
     return a;
 }
 
-/* One relational operator, component by component as POV-Ray's
-** Parse_Rel_Term: the operands are promoted to the longer one (a float
-** fills every component, a shorter vector gets zeros), and each
-** component is 1 or 0, so '(<1,2,3> = <1,2,4>)' is <1,1,0>. Equality is
-** within POV-Ray's absolute EPSILON (1e-10), also for '<=' and '>=';
-** '<' and '>' are exact. */
-static void compare(pp_state *ps, const pp_token *at, pp_value *a,
-                    const pp_value *bb, int op)
-{
-    pp_value b = *bb;
-    need_numeric(ps, at, a);
-    need_numeric(ps, at, &b);
-    int dim = a->dim > b.dim ? a->dim : b.dim;
-    bool colour = a->kind == V_COLOUR || b.kind == V_COLOUR;
-    pp_value_promote(a, dim);
-    pp_value_promote(&b, dim);
-    for (int i = 0; i < dim; i++) {
-        double x = a->v[i], y = b.v[i];
-        bool same = !pp_true(x - y), r;
-        switch (op) {
-        case T_LT: r = x < y; break;
-        case T_LE: r = x <= y || same; break;
-        case T_EQUALS: r = same; break;
-        case T_NE: r = !same; break;
-        case T_GE: r = x >= y || same; break;
-        default: r = x > y; break;
-        }
-        a->v[i] = r;
-    }
-    a->dim = dim;
-    a->kind = dim == 1 ? V_FLOAT : colour ? V_COLOUR : V_VECTOR;
-}
-
-/* '&' or '|', component by component as POV-Ray's Parse_Logical. */
-static void logical(pp_state *ps, const pp_token *at, pp_value *a,
-                    const pp_value *bb, bool and)
-{
-    pp_value b = *bb;
-    need_numeric(ps, at, a);
-    need_numeric(ps, at, &b);
-    int dim = a->dim > b.dim ? a->dim : b.dim;
-    bool colour = a->kind == V_COLOUR || b.kind == V_COLOUR;
-    pp_value_promote(a, dim);
-    pp_value_promote(&b, dim);
-    for (int i = 0; i < dim; i++)
-        a->v[i] = and ? pp_true(a->v[i]) && pp_true(b.v[i])
-                      : pp_true(a->v[i]) || pp_true(b.v[i]);
-    a->dim = dim;
-    a->kind = dim == 1 ? V_FLOAT : colour ? V_COLOUR : V_VECTOR;
-}
-
 /* rel_term: sum { ('<' | '<=' | '=' | '!=' | '>=' | '>') sum } */
 static pp_value expr_cmp(pp_state *ps)
 {
@@ -1323,7 +1291,7 @@ static pp_value expr_cmp(pp_state *ps)
                      op == T_GE ? c >= 0 : c > 0);
             continue;
         }
-        compare(ps, &at, &a, &b, op);
+        binop(ps, &at, &a, &b, op);
     }
 }
 
@@ -1340,7 +1308,7 @@ static pp_value expr_logical(pp_state *ps)
         pp_next(ps);
         pp_token at = ps->tok;
         pp_value b = expr_cmp(ps);
-        logical(ps, &at, &a, &b, op == T_AMP);
+        binop(ps, &at, &a, &b, op);
     }
 }
 

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /*
 ** parse_util.h: what the parser's unit tests (test_parse.c,
-** test_parse_parity.c) share: parse a scene from a string, failing the
+** test_parse_parity.c and others) share: parse a scene from a string, failing the
 ** test on a parse error, and write a scratch file.
 */
 #ifndef IRIS_TESTS_PARSE_UTIL_H
@@ -29,6 +29,27 @@ static inline iris_scene *pt_scene_with(const char *sdl,
     iris_diag_list_fini(&d);
     assert_int_equal(st, IRIS_OK);
     return sc;
+}
+
+/* Parses 'sdl' (as "t.pov"); returns the number of warnings, or -1 if it
+** does not parse, and the first diagnostic's line and column. */
+static inline int pt_parse_warnings(const char *sdl, unsigned *line,
+                                    unsigned *col)
+{
+    iris_scene *sc = NULL;
+    iris_diag_list d;
+    iris_diag_list_init(&d);
+    enum iris_status st = iris_parse_string("t.pov", sdl, strlen(sdl), NULL,
+                                            &sc, &d);
+    if (d.n > 0) {
+        *line = d.items[0].line;
+        *col = d.items[0].col;
+    }
+    int warnings = d.n_warnings;
+    iris_diag_list_fini(&d);
+    if (sc)
+        iris_scene_destroy(sc);
+    return st == IRIS_OK ? warnings : -1;
 }
 
 /* Writes 'text' to 'path'; fails the test if it cannot. */

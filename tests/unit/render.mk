@@ -66,7 +66,7 @@ EXTRA_DIST += tests/render/alpha.sh tests/render/alpha
 check_PROGRAMS += tests/unit/test_fractal_pattern
 TESTS += tests/unit/test_fractal_pattern
 tests_unit_test_fractal_pattern_SOURCES = tests/unit/test_fractal_pattern.c \
-	tests/testutil.h
+	tests/testutil.h tests/unit/parse_util.h
 tests_unit_test_fractal_pattern_CFLAGS = $(TEST_CFLAGS)
 tests_unit_test_fractal_pattern_LDADD = $(TEST_LDADD)
 check_PROGRAMS += tests/unit/test_srgb8
@@ -103,7 +103,8 @@ tests_unit_test_subsurface_LDADD = $(TEST_LDADD)
 # the iteration cap of mandel/julia/magnet patterns (IRIS_PATTERN_MAX_ITERATIONS)
 check_PROGRAMS += tests/unit/test_fractal_cap
 TESTS += tests/unit/test_fractal_cap
-tests_unit_test_fractal_cap_SOURCES = tests/unit/test_fractal_cap.c tests/testutil.h
+tests_unit_test_fractal_cap_SOURCES = tests/unit/test_fractal_cap.c tests/testutil.h \
+	tests/unit/parse_util.h
 tests_unit_test_fractal_cap_CFLAGS = $(TEST_CFLAGS)
 tests_unit_test_fractal_cap_LDADD = $(TEST_LDADD)
 # iris's ray counts against POV-Ray's render statistics (tests/render/raycounts.sh)

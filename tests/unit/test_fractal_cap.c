@@ -19,6 +19,7 @@
 #include <time.h>
 
 #include "iris/parse.h"
+#include "parse_util.h"
 #include "material/mat_internal.h"
 
 /* The step at which z <- z² + c, z0 = c, first has |z|² > 4, or -1
@@ -117,46 +118,26 @@ static void test_interior_cost_bounded(void **state)
     assert_true(dt < 0.5);
 }
 
-/* Parses 'sdl'; returns the number of warnings (-1 on failure) and the
-** first diagnostic's place. */
-static int parse_warnings(const char *sdl, unsigned *line, unsigned *col)
-{
-    iris_scene *sc = NULL;
-    iris_diag_list d;
-    iris_diag_list_init(&d);
-    enum iris_status st = iris_parse_string("t.pov", sdl, strlen(sdl), NULL,
-                                            &sc, &d);
-    if (d.n > 0) {
-        *line = d.items[0].line;
-        *col = d.items[0].col;
-    }
-    int warnings = d.n_warnings;
-    iris_diag_list_fini(&d);
-    if (sc)
-        iris_scene_destroy(sc);
-    return st == IRIS_OK ? warnings : -1;
-}
-
 /* Counts above the cap are warned about at the count, in all three
 ** forms; the cap itself and POV-Ray's examples' counts are not. */
 static void test_parser_warns_at_count(void **state)
 {
     (void)state;
     unsigned line = 0, col = 0;
-    assert_int_equal(parse_warnings(
+    assert_int_equal(pt_parse_warnings(
         "plane { y, 0 pigment { mandel 100000 } }\n"
         "plane { y, 0 pigment { julia <0.3, 0.4>, 10000 } }\n"
         "plane { y, 0 pigment { magnet 2 mandel 300 } }\n", &line, &col), 0);
-    assert_int_equal(parse_warnings(
+    assert_int_equal(pt_parse_warnings(
         "plane { y, 0\n  pigment { mandel 1e9 } }\n", &line, &col), 1);
     assert_int_equal(line, 2);
     assert_int_equal(col, 20);
-    assert_int_equal(parse_warnings(
+    assert_int_equal(pt_parse_warnings(
         "plane { y, 0 pigment { julia <0.3, 0.4>, 100001 } }\n", &line,
         &col), 1);
     assert_int_equal(line, 1);
     assert_int_equal(col, 42);
-    assert_int_equal(parse_warnings(
+    assert_int_equal(pt_parse_warnings(
         "plane { y, 0 pigment { magnet 1 julia <0.3, 0.4>, 2e8 } }\n",
         &line, &col), 1);
     assert_int_equal(col, 51);

@@ -14,6 +14,7 @@
 #include <string.h>
 
 #include "iris/parse.h"
+#include "parse_util.h"
 #include "material/fractal_pattern.h"
 
 /*
@@ -75,40 +76,22 @@ static void test_magnet_julia(void **state)
     assert_int_equal(k, 0);
 }
 
-static int parse_status(const char *sdl, unsigned *line, unsigned *col)
-{
-    iris_scene *sc = NULL;
-    iris_diag_list d;
-    iris_diag_list_init(&d);
-    enum iris_status st = iris_parse_string("t.pov", sdl, strlen(sdl), NULL,
-                                            &sc, &d);
-    if (d.n > 0) {
-        *line = d.items[0].line;
-        *col = d.items[0].col;
-    }
-    int warnings = d.n_warnings;
-    iris_diag_list_fini(&d);
-    if (sc)
-        iris_scene_destroy(sc);
-    return st == IRIS_OK ? warnings : -1;
-}
-
 /* magnet parses without a warning; a bad type or form is a located error */
 static void test_magnet_parse(void **state)
 {
     (void)state;
     unsigned line = 0, col = 0;
-    assert_int_equal(parse_status(
+    assert_int_equal(pt_parse_warnings(
         "plane { y, 0 pigment { magnet 1 mandel 30 interior 1, 200 "
         "exterior 5, 1 } }\n"
         "plane { y, 0 normal { magnet 2 julia <0.3, 0.4>, 30 0.2 } }\n",
         &line, &col), 0);
-    assert_int_equal(parse_status(
+    assert_int_equal(pt_parse_warnings(
         "plane { y, 0\n pigment { magnet 3 mandel 30 } }\n", &line, &col),
         -1);
     assert_int_equal(line, 2);
     assert_int_equal(col, 12);
-    assert_int_equal(parse_status(
+    assert_int_equal(pt_parse_warnings(
         "plane { y, 0 pigment { magnet 1 bozo 30 } }\n", &line, &col), -1);
     assert_int_equal(line, 1);
 }
