@@ -148,11 +148,12 @@ tap_is "... one located error from rank 0, naming rank 1" \
     "$(grep -c 'caustic_ball.pov:23:23: error: photons: .* 56.9 MB .*--node-memory shared by the node.s MPI ranks.*(MPI rank 1)$' "$tmp/f1.err")" "1"
 tap_ok "... and no image" test ! -e "$tmp/f1.png"
 # (b) rank 1 dies of a signal: 'ulimit -t 1' ends it (SIGXCPU, then
-# SIGKILL) after 1 s of CPU, well inside its share of 400 passes of
-# 24x24 (~0.03 s each). mpirun ends the job: non-zero exit, not a hang,
+# SIGKILL) after 1 s of CPU, well inside its share of 4000 passes of
+# 24x24 (~0.007 s each, ~14 s of CPU for its half; 400 passes became
+# too few once passes got faster). mpirun ends the job: non-zero exit, not a hang,
 # and its report names rank 1 and the signal (nothing else can: rank 1
 # is gone, and rank 0 waits at an agreement until mpirun ends it).
-sargs="-q $scene +W24 +H24 --threads 1 --passes 400 --seed 3 -o $tmp/f2.png"
+sargs="-q $scene +W24 +H24 --threads 1 --passes 4000 --seed 3 -o $tmp/f2.png"
 printf '#!/bin/sh\nulimit -t 1\nexec "$@"\n' >"$tmp/cpu1"
 chmod +x "$tmp/cpu1"
 mpmd "$sargs" "$tmp/cpu1" "" >"$tmp/f2.out" 2>&1
