@@ -504,6 +504,10 @@ enum iris_status pmap_build_global(const iris_scene *scene,
     size_t n_all = 0;
     if (rc == IRIS_OK)
         rc = pmap_concat(g.outs, n_batches, &all, &n_all);
+    else if (g.outs) /* pmap_concat frees the batches' records; here we do */
+        for (int64_t b = 0; b < n_batches; b++)
+            if (!g.outs[b].borrowed)
+                iris_free(g.outs[b].ph);
     iris_free(g.outs);
     iris_free(g.src);
     double t1 = par_now();

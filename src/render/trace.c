@@ -1173,6 +1173,9 @@ static void lighted_texture(struct trace_ctx *c, const struct tray *eye,
         const struct mat_layer *l = &ev->layers[sk->first + i];
         const iris_colour *P = &l->pigment;
         const iris_finish *f = l->finish;
+        /* subsurface_shade() may point l into this (the layer without
+        ** its diffuse term): it must live to the end of the iteration */
+        struct subsurface_layer sss;
         if (i == 0)
             n_top = l->n;
         one_found = one_found || l->valid;
@@ -1221,7 +1224,6 @@ static void lighted_texture(struct trace_ctx *c, const struct tray *eye,
             }
             /* subsurface{}: the BSSRDF stands for the diffuse term of
             ** the lights and photons below (subsurface.h) */
-            struct subsurface_layer sss;
             if (f->subsurface && subsurface_enabled(t)) {
                 l = subsurface_shade(c, eye, h, l, raw, fres_n, lit, &sss,
                                      tmp);
