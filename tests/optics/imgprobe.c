@@ -13,7 +13,7 @@
 **   imgprobe range IMAGE X0 Y0 X1 Y1
 **       "rmin gmin bmin rmax gmax bmax": the least and greatest linear
 **       value of each channel over the rectangle (a uniform image's
-**       spread, which a mean would hide).
+**       spread, which a mean would hide); nan if any value is a NaN.
 **   imgprobe radial IMAGE RMAX
 **       one line per ring of pixels about the image's centre, "k r g b":
 **       the mean linear colour of the pixels whose centres lie k..k+1
@@ -125,8 +125,10 @@ int main(int argc, char **argv)
             for (int c = 0; c < 3; c++) {
                 double v = a.pixels[4 * ((size_t)y * a.width + x) + c];
                 s[c] += v;
-                lo[c] = v < lo[c] ? v : lo[c];
-                hi[c] = v > hi[c] ? v : hi[c];
+                /* a NaN sticks (every comparison with it is false), so
+                ** that range reports one instead of skipping it */
+                lo[c] = v < lo[c] || v != v ? v : lo[c];
+                hi[c] = v > hi[c] || v != v ? v : hi[c];
             }
         if (rows)
             printf("%d %.9g %.9g %.9g\n", y, s[0], s[1], s[2]);

@@ -133,6 +133,20 @@ function planck_xy(T,   l, p, X, Y, Z) {
     CX = X / (X + Y + Z); CY = Y / (X + Y + Z)
 }
 
+# xy of a tabulated spectral power distribution S (an array by
+# wavelength, rows every `step` nm: 1 for illuminant A, 5 for the F
+# lamps; linear between rows, as the CIE tables are read) over 380..780
+# nm, 1 nm sums with XB, YB, ZB as in planck_xy; sets CX, CY.
+function spd_xy(S, step,   l, i, f, p, X, Y, Z) {
+    X = Y = Z = 0
+    for (l = 380; l <= 780; l++) {
+        i = int(l / step) * step; f = (l - i) / step
+        p = f > 0 ? S[i] * (1 - f) + S[i + step] * f : S[i]
+        X += p * XB[l]; Y += p * YB[l]; Z += p * ZB[l]
+    }
+    CX = X / (X + Y + Z); CY = Y / (X + Y + Z)
+}
+
 # A ray travelling -z at x = b (0 < b < 1) through a circle of radius 1
 # at the origin (the water cylinder's cross-section, in the xz plane:
 # PX = x, PY = z), index n: refracted in, reflected once inside,

@@ -9,6 +9,9 @@
 // fixed index 1.62 (no dispersion): the line is seen sharp.
 #version 3.7;
 #ifndef (PLAIN) #declare PLAIN = 0; #end
+// DISP > 0 (check "extreme dispersion"): POV-Ray's 'ior 1.62 dispersion
+// DISP' in place of F2
+#ifndef (DISP) #declare DISP = 0; #end
 global_settings { assumed_gamma 1 max_trace_level 10 }
 background { color rgb 0 }
 // rays along (3.654, 1.628) (rising 24 degrees), from the points
@@ -30,5 +33,6 @@ prism { linear_sweep linear_spline -1.5, 1.5, 4,
   pigment { color rgbf <1, 1, 1, 1> }
   finish { ambient 0 diffuse 0 }
   interior { ior 1.62 dispersion_samples 64
-    #ifdef (iris_version) #if (!PLAIN) glass "F2" #end #end }
+    #if (DISP > 0) dispersion DISP
+    #else #ifdef (iris_version) #if (!PLAIN) glass "F2" #end #end #end }
 }

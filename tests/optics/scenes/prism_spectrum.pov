@@ -8,10 +8,14 @@
 #version 3.7;
 #ifndef (LAW) #declare LAW = 0; #end
 // GLASS (check "glass catalogue"): 0 F2, 1 fused_silica, 2 N-BAF10 from
-// iris's glass "NAME" catalogue; CY, SPAN the wall's window (the test
+// iris's glass "NAME" catalogue, 3 SCHOTT N-SF5's coefficients given
+// inline ('sellmeier <B1, B2, B3>, <C1, C2, C3>', C in um^2, copied from
+// data/glass_sellmeier.csv); CY, SPAN the wall's window (the test
 // centres it on its own prediction: the glasses deviate the beam
 // differently)
 #ifndef (GLASS) #declare GLASS = 0; #end
+// DISP: the 'dispersion' of LAW 1 (POV-Ray's ior/dispersion)
+#ifndef (DISP) #declare DISP = 1.03; #end
 #ifndef (CY) #declare CY = -0.58; #end
 #ifndef (SPAN) #declare SPAN = 0.36; #end
 global_settings {
@@ -48,9 +52,11 @@ prism { linear_sweep linear_spline -1.5, 1.5, 4,
             #case (0) glass "F2" #break
             #case (1) glass "fused_silica" #break
             #case (2) glass "N-BAF10" #break
+            #case (3) sellmeier <1.52481889, 0.187085527, 1.42729015>,
+              <0.011254756, 0.0588995392, 129.141675> #break
           #end
         #break
-        #case (1) dispersion 1.03 #break
+        #case (1) dispersion DISP #break
         #case (2) cauchy 1.60, 0.008 #break
         #case (3) abbe 1.62, 30 #break
         #case (4) ior_decay 1.66, 1.61, 100 #break
