@@ -17,8 +17,9 @@
 # hit's texture as a render does (render.c): the table is what users get.
 # -s shoots without it (textures taken as solid pigments: photon_bench
 # -m 0), the way the tables of sessions 1-5 were made.
-# Scenes the wavefront tracer takes (src/photon/wavefront.h: spheres and
-# planes, uniform textures) are shot by it; -w shoots every scene with the
+# Scenes the wavefront tracer takes (src/photon/wavefront.h: spheres,
+# planes and convex objects: boxes, convex prisms, capped cylinders and
+# their intersections; uniform textures) are shot by it; -w shoots every scene with the
 # scalar tracer (photon_bench -w 0), as sessions 1-7 did. The last column
 # says which tracer shot each scene (its kernel: avx2 or generic).
 # Without scenes it uses the photon scenes of scenes/. Build the driver

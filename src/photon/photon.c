@@ -40,6 +40,11 @@ static bool fast_inside(const void *ctx, const iris_object *obj, vec3 p)
     return accel_inside(pfast_accel(ctx), obj, p);
 }
 
+bool pmap_world_is_scene(const struct pmap_world *w)
+{
+    return w->intersect == world_intersect || w->intersect == pfast_intersect;
+}
+
 enum iris_status photon_map_build(const iris_scene *scene,
                                   const struct accel *accel,
                                   const struct photon_options *opts,

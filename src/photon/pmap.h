@@ -93,6 +93,11 @@ enum iris_status pmap_from_raw(const iris_scene *scene,
 void pmap_caustic_setup(struct photon_map *m, const iris_photon_settings *ps,
                         const struct photon_options *opts);
 
+/* Whether 'w' answers from the scene's own geometry (accel or the fast
+** path, photon.c), not a test double: the wavefront tracer (wavefront.c)
+** intersects the scene's shapes itself only then. */
+bool pmap_world_is_scene(const struct pmap_world *w);
+
 /* The shooting rule of semantics §2.2b for one light and target. */
 bool pmap_shoots(const iris_light *l, const iris_object *target);
 

@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /*
-** wavefront.h: the photon tracer of sphere-and-plane scenes in lockstep,
-** eight photons a step in single precision (wavefront.c, wf_kernel.h).
+** wavefront.h: the photon tracer of scenes of spheres, planes and convex
+** objects in lockstep, eight photons a step in single precision
+** (wavefront.c, wf_kernel.h).
 **
 ** shoot.c lays out the rings and numbers the photons as for the scalar
 ** tracer (trace.c); for a scene this path accepts (wf_build) it hands each
@@ -77,15 +78,22 @@ struct wf_state;               /* one thread's lanes (wavefront.c) */
 ** The wavefront tracer of the caustic photons of 'scene' through world
 ** 'w', for the 'n' pairs 'tc' (shoot.c's combos) with lights 'L', or NULL
 ** when any pair or the scene is outside what it handles (then shoot.c
-** traces with trace.c): the photon fast path's plain scan (fastpath.h),
-** no media, lights outside every interior, no area-light grid, no light
-** fade, tightness 0; every texture one colour everywhere, a coloured
-** filter's transmittance > 0 at every wavelength; mirrors of a constant
-** grey reflection (no falloff, fresnel or metallic); no pass_through;
-** interiors without fade;
-** refracting spheres clear of every other object, or one refracting plane;
-** every primitive and the light within 1e4 target radii of the origin
-** (float's rounding far below the target).
+** traces with trace.c): a world answering from the scene's geometry
+** (pmap_world_is_scene()) of at most 8 objects photons meet, each a
+** sphere, a plane, or a convex object: a box, a linear prism of one
+** convex polygon, a capped cylinder, or an intersection of those, planes
+** (also inverse) and spheres, with at most 32 half-spaces, balls and
+** cylinders in all; transforms affine for planes, boxes and prisms, a
+** similarity for spheres and cylinders; no clipped_by or bounded_by, the
+** parts of an intersection of one surface; no media, lights outside
+** every interior, no area-light grid, no light fade, tightness 0; every
+** texture one colour everywhere, a coloured filter's transmittance > 0
+** at every wavelength; mirrors of a constant grey reflection (no
+** falloff, fresnel or metallic); no pass_through; interiors without
+** fade; refracting spheres and convex objects clear of every object a
+** photon can pass (by their boxes; an opaque one may cut into them), or
+** one refracting plane; every primitive and the light within 1e4 target
+** sizes of the origin (float's rounding far below the target).
 ** 'why' (may be NULL) gets the first reason refused. 'L' is copied.
 */
 struct wf_scene *wf_build(const iris_scene *scene, const struct pmap_world *w,

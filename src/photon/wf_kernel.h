@@ -468,15 +468,144 @@ AI int bounce(const struct wf_scene *ws, const struct wf_prims *P,
             tb = sel(hit, t, tb);
             id = seli(hit, splati(kk), id);
         }
+        /* convex objects: the ray's span inside each, the latest entry
+        ** and the first exit over its half-spaces and balls, each end
+        ** with its constituent's normal (the (p·ka - c)·s of the tables);
+        ** a lane on its surface going in (last = k) takes the far end,
+        ** one going out (last = k + WF_OUT) none of it */
+        vf gcx = zero, gcy = zero, gcz = zero, gka = zero, gsc = one;
+        vf gax = zero, gay = zero, gaz = zero;
+        for (int k = 0; k < P->nc; k++) {
+            vf tn = -inf, tf = inf;
+            vi miss = splati(0);
+            vf ecx = zero, ecy = zero, ecz = zero, eka = zero, esc = one;
+            vf xcx = zero, xcy = zero, xcz = zero, xka = zero, xsc = one;
+            vf eax = zero, eay = zero, eaz = zero;
+            vf xax = zero, xay = zero, xaz = zero;
+            int j0 = P->cfirst[k], j1 = j0 + P->ccount[k];
+            for (int j = j0; j < j1; j++) {
+                vf t0, t1;
+                vi en, ex;
+                if (P->hkind[j] == WF_HALF_CYL) {
+                    /* an infinite cylinder: the sphere's solve in the
+                    ** plane across its axis */
+                    const float ax = P->hax[j], ay = P->hay[j],
+                                az = P->haz[j];
+                    vf cx = ox - P->hc[j][0], cy = oy - P->hc[j][1],
+                        cz = oz - P->hc[j][2];
+                    vf oa = cx * ax + cy * ay + cz * az;
+                    vf da = dx * ax + dy * ay + dz * az;
+                    vf bx = cx - oa * ax, by = cy - oa * ay,
+                        bz = cz - oa * az;
+                    vf ex_ = dx - da * ax, ey = dy - da * ay,
+                        ez = dz - da * az;
+                    vf A = ex_ * ex_ + ey * ey + ez * ez;
+                    /* along the axis: inside for all t, or never */
+                    vi par = A < 1e-12f;
+                    vf As = sel(par, one, A);
+                    vf tc = -(bx * ex_ + by * ey + bz * ez) / As;
+                    vf qx = bx + tc * ex_, qy = by + tc * ey,
+                        qz = bz + tc * ez;
+                    vf disc = P->hd[j] - (qx * qx + qy * qy + qz * qz);
+                    vf h = vsqrt(vmax(disc, zero) / As);
+                    vf b2 = bx * bx + by * by + bz * bz;
+                    miss |= seli(par, b2 > P->hd[j], disc < 0.0f);
+                    t0 = sel(par, -inf, tc - h);
+                    t1 = sel(par, inf, tc + h);
+                    en = t0 > tn;
+                    ex = t1 < tf;
+                } else if (P->hkind[j] == WF_HALF_BALL) {
+                    vf cx = ox - P->hc[j][0], cy = oy - P->hc[j][1],
+                        cz = oz - P->hc[j][2];
+                    vf b = cx * dx + cy * dy + cz * dz;
+                    vf qx = cx - b * dx, qy = cy - b * dy, qz = cz - b * dz;
+                    vf disc = P->hd[j] - (qx * qx + qy * qy + qz * qz);
+                    vf h = vsqrt(vmax(disc, zero));
+                    miss |= disc < 0.0f;
+                    t0 = -b - h;
+                    t1 = -b + h;
+                    en = t0 > tn;
+                    ex = t1 < tf;
+                } else {
+                    vf dn = dx * P->hc[j][0] + dy * P->hc[j][1] +
+                             dz * P->hc[j][2];
+                    vf on = ox * P->hc[j][0] + oy * P->hc[j][1] +
+                             oz * P->hc[j][2];
+                    vf t = (P->hd[j] - on) / dn;
+                    /* parallel to it and outside: never inside */
+                    miss |= (dn == 0.0f) & (on > P->hd[j]);
+                    t0 = t1 = t;
+                    en = (dn < 0.0f) & (t > tn);
+                    ex = (dn > 0.0f) & (t < tf);
+                }
+                tn = sel(en, t0, tn);
+                ecx = sel(en, splat(P->hnx[j]), ecx);
+                ecy = sel(en, splat(P->hny[j]), ecy);
+                ecz = sel(en, splat(P->hnz[j]), ecz);
+                eka = sel(en, splat(P->hka[j]), eka);
+                esc = sel(en, splat(P->hsc[j]), esc);
+                tf = sel(ex, t1, tf);
+                xcx = sel(ex, splat(P->hnx[j]), xcx);
+                xcy = sel(ex, splat(P->hny[j]), xcy);
+                xcz = sel(ex, splat(P->hnz[j]), xcz);
+                xka = sel(ex, splat(P->hka[j]), xka);
+                xsc = sel(ex, splat(P->hsc[j]), xsc);
+                if (P->any_cyl) {
+                    eax = sel(en, splat(P->hax[j]), eax);
+                    eay = sel(en, splat(P->hay[j]), eay);
+                    eaz = sel(en, splat(P->haz[j]), eaz);
+                    xax = sel(ex, splat(P->hax[j]), xax);
+                    xay = sel(ex, splat(P->hay[j]), xay);
+                    xaz = sel(ex, splat(P->haz[j]), xaz);
+                }
+            }
+            int kk = P->ns + P->np + k;
+            vi self_in = last == kk;
+            vi far = self_in | (tn <= 0.0f);
+            vf t = sel(far, tf, tn);
+            vi hit = (self_in | (~miss & (tn <= tf))) & (t > 0.0f) &
+                     (t < tb) & (last != kk + WF_OUT);
+            tb = sel(hit, t, tb);
+            id = seli(hit, splati(kk), id);
+            gcx = sel(hit, sel(far, xcx, ecx), gcx);
+            gcy = sel(hit, sel(far, xcy, ecy), gcy);
+            gcz = sel(hit, sel(far, xcz, ecz), gcz);
+            gka = sel(hit, sel(far, xka, eka), gka);
+            gsc = sel(hit, sel(far, xsc, esc), gsc);
+            if (P->any_cyl) {
+                gax = sel(hit, sel(far, xax, eax), gax);
+                gay = sel(hit, sel(far, xay, eay), gay);
+                gaz = sel(hit, sel(far, xaz, eaz), gaz);
+            }
+        }
         vi alive = ((iota + i) < n) & (id >= 0) & (tb < inf);
         vi idc = seli(alive, id, splati(0));
         vf px = ox + tb * dx, py = oy + tb * dy, pz = oz + tb * dz;
         vf depth = ld(S->depth + i) + tb;
         vi flags = picki(P->flags, idc);
         vf ka = pick(P->nka, idc), sc = pick(P->nsc, idc);
-        vf nx = (px * ka - pick(P->ncx, idc)) * sc;
-        vf ny = (py * ka - pick(P->ncy, idc)) * sc;
-        vf nz = (pz * ka - pick(P->ncz, idc)) * sc;
+        vf ncx = pick(P->ncx, idc), ncy = pick(P->ncy, idc),
+           ncz = pick(P->ncz, idc);
+        vi convex = splati(0);
+        if (P->nc > 0) {
+            convex = idc >= P->ns + P->np;
+            ka = sel(convex, gka, ka);
+            sc = sel(convex, gsc, sc);
+            ncx = sel(convex, gcx, ncx);
+            ncy = sel(convex, gcy, ncy);
+            ncz = sel(convex, gcz, ncz);
+        }
+        vf nx = (px * ka - ncx) * sc;
+        vf ny = (py * ka - ncy) * sc;
+        vf nz = (pz * ka - ncz) * sc;
+        if (P->any_cyl) {
+            /* a cylinder's: less the part along its axis (0 elsewhere) */
+            vi cyl = convex & ((gax != 0.0f) | (gay != 0.0f) | (gaz != 0.0f));
+            vf na = nx * gax + ny * gay + nz * gaz;
+            nx = sel(cyl, nx - na * gax, nx);
+            ny = sel(cyl, ny - na * gay, ny);
+            nz = sel(cyl, nz - na * gaz, nz);
+        }
         vf dn = dx * nx + dy * ny + dz * nz;
         vi entering = dn < 0.0f;
         vf sg = sel(entering, one, -one);
@@ -581,7 +710,12 @@ AI int bounce(const struct wf_scene *ws, const struct wf_prims *P,
         if (P->any_tspec)
             pack(S->white + w, ld(S->white + i), perm);
         packi((int32_t *)S->key + w, (vi)key, perm);
-        packi(S->last + w, id, perm);
+        /* a convex object's lane leaving it outward: last = k + WF_OUT */
+        vi nlast = id;
+        if (P->nc > 0)
+            nlast = seli(convex & (ndx * nx + ndy * ny + ndz * nz >= 0.0f),
+                         id + WF_OUT, id);
+        packi(S->last + w, nlast, perm);
         packi(S->inside + w, inside, perm);
         packi(S->chroma + w, chroma, perm);
         w += __builtin_popcount(m);

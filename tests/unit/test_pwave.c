@@ -25,7 +25,12 @@
 ** records a path, each with the emission at its wavelength: the power in
 ** four 100 nm bands); coloured filters under the white light, an amber
 ** glass ball and a tinted filter that also mirrors (its lanes' roulettes
-** depend on lambda: power, histogram and bands only). Then: the
+** depend on lambda: power, histogram and bands only). Convex objects
+** (session 9): scenes/prism.pov's rotated dispersive prism, lens.pov's
+** intersection of two balls, gem.pov's 17 planes and a cylinder, and a
+** transformed glass box, dome and mirror box; for these the histogram's
+** window follows the light (fit_window), and for every scene the spot's
+** size (the window's sum of e·r^2) is compared too. Then: the
 ** same map for 1 and 2 threads; scenes outside the wavefront's set fall
 ** back to the scalar tracer (the very same map as with it turned off);
 ** the kernel for any CPU gives the AVX2 kernel's map;
@@ -131,8 +136,91 @@ static const char *const WATER =
     "  finish { diffuse 0 reflection { 0.8 } }\n"
     "  photons { target reflection on collect off } }\n";
 
-/* Outside the wavefront's set: a transformed sphere (the fast path's
-** general scan), and a box (no fast path at all). */
+/* Convex objects (wavefront.c: intersections of half-spaces and balls,
+** transforms folded into world space). scenes/prism.pov: a cylinder
+** light through a rotated and translated dispersive prism of F2 (a
+** linear prism: three walls and two caps) onto a floor; its spectrum
+** lands 2-5 units off the origin (the histogram's window follows the
+** map, 'same_distribution'). */
+static const char *const PRISM =
+    "global_settings { max_trace_level 10\n"
+    "  photons { spacing 0.0007 autostop 0 } }\n"
+    "light_source { <-4.154, -0.562, 0> color rgb 3\n"
+    "  cylinder point_at <-0.5, 1.066, 0> radius 0.05 falloff 0.08\n"
+    "  tightness 0 photons { refraction on reflection off } }\n"
+    "plane { y, -1 pigment { color rgb 1 } finish { ambient 0 diffuse 1 } }\n"
+    "prism { linear_sweep linear_spline -1.5, 1.5, 4,\n"
+    "  <-1, 0>, <1, 0>, <0, 1.732>, <-1, 0>\n"
+    "  rotate -90*x translate <0, 0.2, 0>\n"
+    "  pigment { color rgbf <1, 1, 1, 1> } finish { ambient 0 diffuse 0 }\n"
+    "  interior { ior 1.62 dispersion 1.04 glass \"F2\" }\n"
+    "  photons { target refraction on reflection off collect off } }\n";
+
+/* scenes/lens.pov (spacing 0.02, not 0.01: a quarter of the photons): a
+** parallel light through a biconvex lens of N-BK7, the intersection of
+** two spheres translated, focused onto the floor */
+static const char *const LENS =
+    "global_settings { max_trace_level 10\n"
+    "  photons { spacing 0.02 autostop 0 } }\n"
+    "light_source { <0, 20, 0> color rgb 1 parallel point_at <0, 0, 0>\n"
+    "  photons { refraction on reflection on } }\n"
+    "plane { y, 0 pigment { color rgb 1 } finish { ambient 0 diffuse 0.9 } }\n"
+    "intersection {\n"
+    "  sphere { <0, -3.7, 0>, 4 } sphere { <0, 3.7, 0>, 4 }\n"
+    "  translate <0, 2.4, 0>\n"
+    "  pigment { color rgbf <1, 1, 1, 1> } finish { ambient 0 diffuse 0 }\n"
+    "  interior { ior 1.52 dispersion 1.02 glass \"N-BK7\" }\n"
+    "  photons { target refraction on reflection on collect off } }\n";
+
+/* A glass box (ior 1.5) rotated about two axes and scaled unevenly (an
+** affine map: its faces stay planes) under the ball's light, beside a
+** dome (a ball cut by a plane: a ball and a half-space in one object)
+** scaled uniformly (a similarity: the ball stays a ball), and a mirror
+** box (p = 0.7, a convex object's mirror roulette) */
+static const char *const BOXES =
+    BALL_HEAD
+    "box { <-0.5, -0.5, -0.5>, <0.5, 0.5, 0.5> scale <1.2, 0.8, 1>\n"
+    "  rotate <20, 35, 0> translate <-0.6, 2.5, 0>\n"
+    "  pigment { color rgbf <1, 1, 1, 1> }\n"
+    "  finish { ambient 0 diffuse 0 } interior { ior 1.5 }\n"
+    "  photons { target refraction on reflection on collect off } }\n"
+    "intersection { sphere { 0, 0.5 } plane { -y, -0.1 }\n"
+    "  scale 1.2 translate <1.0, 2.0, 0.3>\n"
+    "  pigment { color rgbf <1, 1, 1, 1> }\n"
+    "  finish { ambient 0 diffuse 0 } interior { ior 1.6 }\n"
+    "  photons { target refraction on reflection on collect off } }\n"
+    "box { <-0.3, 1.5, 0.6>, <0.3, 1.8, 1.0> rotate 30*z\n"
+    "  pigment { color rgb 0.2 } finish { diffuse 0 reflection { 0.7 } }\n"
+    "  photons { target reflection on collect off } }\n";
+
+/* scenes/gem.pov (spacing 0.006, not 0.012: four times the photons): a
+** point light into a diamond cut as the intersection of 17 planes and a
+** capped cylinder (its girdle), deep internal reflections (ior 2.417,
+** max_trace_level 8); its pavilion's tip cuts into the floor (an
+** opaque object may) */
+static const char *const GEM =
+    "global_settings { max_trace_level 8\n"
+    "  photons { spacing 0.006 autostop 0 } }\n"
+    "light_source { <2, 7, -3> color rgb 1.2\n"
+    "  photons { refraction on reflection on } }\n"
+    "plane { y, 0 pigment { color rgb 0.8 } finish { ambient 0 diffuse 0.8 } }\n"
+    "#declare Gem = intersection {\n"
+    "  plane { y, 0.3 }\n"
+    "  #for (I, 0, 7) plane { <0, 1.2, -1>, 0.75 rotate (I * 45 + 22.5) * y }\n"
+    "  #end\n"
+    "  #for (I, 0, 7) plane { <0, -1.05, -1>, 0.72 rotate I * 45 * y } #end\n"
+    "  cylinder { <0, -2, 0>, <0, 2, 0>, 1 }\n"
+    "}\n"
+    "object { Gem translate <0, 0.75, 0>\n"
+    "  pigment { color rgbf <1, 1, 1, 1> }\n"
+    "  finish { ambient 0 diffuse 0 reflection { 0.05, 1 fresnel } }\n"
+    "  interior { ior 2.417 dispersion 1.06 glass \"diamond\" }\n"
+    "  photons { target refraction on reflection on collect off } }\n";
+
+/* Outside the wavefront's set: a sphere scaled unevenly (an ellipsoid);
+** a glass box touching a glass ball (a lane's medium would not be one
+** object); a difference (not convex); a cone (a shape the lanes do not
+** intersect); a prism whose profile is not convex. */
 static const char *const SCALED =
     BALL_HEAD
     "sphere { 0, 1 scale <1, 0.8, 1> translate <0, 2.5, 0>\n"
@@ -140,9 +228,33 @@ static const char *const SCALED =
     "  finish { ambient 0 diffuse 0 } interior { ior 1.5 }\n"
     "  photons { target refraction on reflection on collect off } }\n";
 
-static const char *const BOX =
+static const char *const BOX_ON_BALL =
+    BALL_HEAD BALL_SPHERE
+    "box { <-0.7, 0.5, -0.7>, <0.7, 1.5, 0.7>\n"
+    "  pigment { color rgbf <1, 1, 1, 1> }\n"
+    "  finish { ambient 0 diffuse 0 } interior { ior 1.5 }\n"
+    "  photons { target refraction on reflection on collect off } }\n";
+
+static const char *const DIFFERENCE =
     BALL_HEAD
-    "box { <-0.7, 1.8, -0.7>, <0.7, 3.2, 0.7>\n"
+    "difference { sphere { 0, 1 } sphere { <0, 1, 0>, 0.5 }\n"
+    "  translate <0, 2.5, 0>\n"
+    "  pigment { color rgbf <1, 1, 1, 1> }\n"
+    "  finish { ambient 0 diffuse 0 } interior { ior 1.5 }\n"
+    "  photons { target refraction on reflection on collect off } }\n";
+
+static const char *const CONE =
+    BALL_HEAD
+    "intersection { plane { y, 0.3 } plane { -y, 0.5 }\n"
+    "  cone { <0, -2, 0>, 1, <0, 2, 0>, 0.5 } translate <0, 2.5, 0>\n"
+    "  pigment { color rgbf <1, 1, 1, 1> }\n"
+    "  finish { ambient 0 diffuse 0 } interior { ior 2.4 }\n"
+    "  photons { target refraction on reflection on collect off } }\n";
+
+static const char *const CONCAVE_PRISM =
+    BALL_HEAD
+    "prism { linear_sweep linear_spline 2, 3, 5,\n"
+    "  <-1, -1>, <1, -1>, <0, 0>, <0, 1>, <-1, -1>\n"
     "  pigment { color rgbf <1, 1, 1, 1> }\n"
     "  finish { ambient 0 diffuse 0 } interior { ior 1.5 }\n"
     "  photons { target refraction on reflection on collect off } }\n";
@@ -215,14 +327,50 @@ static struct photon_map *build(const struct world *w, bool scalar,
 #define BANDS 4
 struct summary {
     double n, n_white, power, power2;
+    double wx, wz, half;       /* the histogram's window: centre, half
+                                  width */
     double cell[GRID][GRID], cell2[GRID][GRID];
+    double spread, spread2;    /* the window's sum of e·r^2 (r from its
+                                  centre) and of (e·r^2)^2: the spot's
+                                  size, finer than the cells (a focus) */
     double lam_n, lam, lam2;
     double band[BANDS], band2[BANDS];
 };
 
-static void summarise(const struct photon_map *m, struct summary *s)
+/* The histogram's window of map 'm' when the scene's light does not land
+** about the origin: centred on the records' power-weighted mean, 2.5 of
+** their larger power-weighted sd either side (both maps take the first
+** map's window: a fixed grid for the comparison) */
+static void fit_window(const struct photon_map *m, struct summary *s)
+{
+    const struct pstore *ps = &m->store;
+    double w = 0, x = 0, z = 0, x2 = 0, z2 = 0;
+    for (size_t i = 0; i < ps->n; i++) {
+        vec3 p = pstore_position(ps, i);
+        double e = ps->ph[i].power;
+        w += e;
+        x += e * p.x;
+        z += e * p.z;
+        x2 += e * p.x * p.x;
+        z2 += e * p.z * p.z;
+    }
+    assert_true(w > 0);
+    s->wx = x / w;
+    s->wz = z / w;
+    double sx = sqrt(fmax(x2 / w - s->wx * s->wx, 0.0));
+    double sz = sqrt(fmax(z2 / w - s->wz * s->wz, 0.0));
+    s->half = 2.5 * fmax(sx, sz);
+    assert_true(s->half > 0);
+}
+
+/* 'win' (may be NULL: the origin's, HALF) gives the histogram's window */
+static void summarise(const struct photon_map *m, struct summary *s,
+                      const struct summary *win)
 {
     memset(s, 0, sizeof *s);
+    s->half = win ? win->half : HALF;
+    s->wx = win ? win->wx : 0.0;
+    s->wz = win ? win->wz : 0.0;
     const struct pstore *ps = &m->store;
     for (size_t i = 0; i < ps->n; i++) {
         vec3 p = pstore_position(ps, i);
@@ -245,11 +393,16 @@ static void summarise(const struct photon_map *m, struct summary *s)
             s->band[k] += e;
             s->band2[k] += e * e;
         }
-        int cx = (int)floor((p.x + HALF) / (2 * HALF) * GRID);
-        int cz = (int)floor((p.z + HALF) / (2 * HALF) * GRID);
+        int cx = (int)floor((p.x - s->wx + s->half) / (2 * s->half) * GRID);
+        int cz = (int)floor((p.z - s->wz + s->half) / (2 * s->half) * GRID);
         if (cx >= 0 && cx < GRID && cz >= 0 && cz < GRID) {
             s->cell[cx][cz] += e;
             s->cell2[cx][cz] += e * e;
+            double r2 = ((p.x - s->wx) * (p.x - s->wx) +
+                         (p.z - s->wz) * (p.z - s->wz)) /
+                        (s->half * s->half);
+            s->spread += e * r2;
+            s->spread2 += e * r2 * e * r2;
         }
     }
 }
@@ -275,8 +428,8 @@ static double sigma(double sq_a, double sq_b)
 ** roulette depends on lambda (a coloured filter that also mirrors), which
 ** the scalar siblings take once with their mean probability and each
 ** sibling's lane with its own: the same power, other record counts. */
-static void same_distribution(const char *sdl, uint64_t seed, int pass,
-                              int per, bool by_count)
+static void same_distribution_in(const char *sdl, uint64_t seed, int pass,
+                                 int per, bool by_count, bool fit)
 {
     struct world w;
     world_open(&w, sdl);
@@ -287,9 +440,11 @@ static void same_distribution(const char *sdl, uint64_t seed, int pass,
     assert_int_equal(st[0].wavefront, 0);
     assert_int_equal(st[1].wavefront, st[1].shot);
     assert_int_equal(st[0].shot, st[1].shot); /* the same photons shot */
-    struct summary a, b;
-    summarise(m[0], &a);
-    summarise(m[1], &b);
+    struct summary a, b, win;
+    if (fit)
+        fit_window(m[0], &win);
+    summarise(m[0], &a, fit ? &win : NULL);
+    summarise(m[1], &b, fit ? &win : NULL);
     assert_true(a.n > 5000);
     /* records: each photon's path is stored (mostly once) with
     ** probability q, independently, as one white record or 'per'
@@ -319,6 +474,13 @@ static void same_distribution(const char *sdl, uint64_t seed, int pass,
         }
     double sd_p = sigma(a.power2, b.power2);
     assert_true(fabs(a.power - b.power) <= 5.0 * sd_p + 1e-4 * a.power);
+    /* the spot's size: a sum of e·r^2 over the window, its variance
+    ** bounded as the power's (r^2 in units of the window's half width) */
+    a.spread2 *= per;
+    b.spread2 *= per;
+    double sd_s = sigma(a.spread2, b.spread2);
+    if (fabs(a.spread - b.spread) > 5.0 * sd_s + 1e-4 * a.spread)
+        fail_msg("spread: %g vs %g (sd %g)", a.spread, b.spread, sd_s);
     /* the floor's coarse histogram, cell by cell */
     for (int i = 0; i < GRID; i++)
         for (int j = 0; j < GRID; j++) {
@@ -359,6 +521,19 @@ static void same_distribution(const char *sdl, uint64_t seed, int pass,
     for (int k = 0; k < 2; k++)
         photon_map_destroy(m[k]);
     world_close(&w);
+}
+
+/* The floor's histogram about the origin (the ball's caustic) */
+static void same_distribution(const char *sdl, uint64_t seed, int pass,
+                              int per, bool by_count)
+{
+    same_distribution_in(sdl, seed, pass, per, by_count, false);
+}
+
+/* The histogram where the map's light lands (fit_window) */
+static void same_distribution_fit(const char *sdl, uint64_t seed, int pass)
+{
+    same_distribution_in(sdl, seed, pass, 1, true, true);
 }
 
 static void test_ball(void **state)
@@ -408,13 +583,32 @@ static void test_mirror_filter(void **state)
     same_distribution(WATER, 8, 0, 1, true);
 }
 
+/* Convex objects: the prism's spectrum (dispersive F2: chromatic records,
+** their power by band), the lens's focus (two balls in one object, and
+** the white records of its outside reflection), a rotated, unevenly
+** scaled glass box, a dome (a ball and a half-space) and a mirror box,
+** the gem (planes and a cylinder, internal reflections, cutting into the
+** floor); pass 0 and a progressive pass (uniform in the cell). */
+static void test_convex(void **state)
+{
+    (void)state;
+    same_distribution_fit(PRISM, 21, 0);
+    same_distribution_fit(PRISM, 22, 2);
+    same_distribution_fit(LENS, 23, 0);
+    same_distribution_fit(LENS, 24, 1);
+    same_distribution(BOXES, 25, 0, 1, true);
+    same_distribution(BOXES, 26, 3, 1, true);
+    same_distribution_fit(GEM, 27, 0);
+    same_distribution_fit(GEM, 28, 2);
+}
+
 /* The wavefront map does not depend on the thread count (random streams
 ** keyed by photon index, batches concatenated in order). */
 static void test_threads(void **state)
 {
     (void)state;
-    const char *scenes[3] = { BALL, MIRROR, ORANGE_BALL };
-    for (int k = 0; k < 3; k++) {
+    const char *scenes[5] = { BALL, MIRROR, ORANGE_BALL, PRISM, BOXES };
+    for (int k = 0; k < 5; k++) {
         struct world w;
         world_open(&w, scenes[k]);
         struct photon_stats st[2];
@@ -432,13 +626,16 @@ static void test_threads(void **state)
 
 /* A scene the wavefront does not take is the scalar tracer's, record for
 ** record; one it takes gives another sample (else the comparisons above
-** compared the scalar map with itself). Outside: a transformed sphere, a
-** box, a scene too large for float against its target. */
+** compared the scalar map with itself). Outside: an ellipsoid, a scene
+** too large for float against its target, a glass box on the floor, a
+** difference, a cylinder, a concave prism. */
 static void test_fallback(void **state)
 {
     (void)state;
-    const char *scenes[4] = { SCALED, BOX, HUGE_GROUND, BALL };
-    for (int k = 0; k < 4; k++) {
+    const char *scenes[] = { SCALED, HUGE_GROUND, BOX_ON_BALL, DIFFERENCE,
+                             CONE, CONCAVE_PRISM, BALL, LENS, GEM };
+    const int n = (int)(sizeof scenes / sizeof *scenes), n_out = 6;
+    for (int k = 0; k < n; k++) {
         struct world w;
         world_open(&w, scenes[k]);
         struct photon_stats st[2];
@@ -448,7 +645,7 @@ static void test_fallback(void **state)
         bool same = m1->store.n == m2->store.n &&
                     memcmp(m1->store.ph, m2->store.ph,
                            m1->store.n * sizeof *m1->store.ph) == 0;
-        if (k < 3) {
+        if (k < n_out) {
             assert_int_equal(st[0].wavefront, 0);
             assert_true(same);
         } else {
@@ -485,8 +682,9 @@ static void test_environment(void **state)
 static void test_generic_kernel(void **state)
 {
     (void)state;
-    const char *scenes[4] = { BALL, MIRROR, ORANGE_BALL, AMBER_BALL };
-    for (int k = 0; k < 4; k++) {
+    const char *scenes[7] = { BALL,  MIRROR, ORANGE_BALL, AMBER_BALL,
+                              PRISM, BOXES,  GEM };
+    for (int k = 0; k < 7; k++) {
         struct world w;
         world_open(&w, scenes[k]);
         struct photon_stats st[2];
@@ -550,6 +748,7 @@ int main(void)
         cmocka_unit_test(test_coloured_light),
         cmocka_unit_test(test_coloured_filter),
         cmocka_unit_test(test_mirror_filter),
+        cmocka_unit_test(test_convex),
         cmocka_unit_test(test_threads),
         cmocka_unit_test(test_fallback),
         cmocka_unit_test(test_environment),
