@@ -1021,6 +1021,7 @@ void pp_directive(pp_state *ps, const pp_token *hash)
         double v = pp_float(ps);
         ps->version = v;
         ps->scene->version = v;
+        ps->version_set = true;
         if (!pp_next_is_directive(ps))
             pp_accept(ps, T_SEMI);
         return;

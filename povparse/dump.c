@@ -76,7 +76,7 @@ static const char *pattern_name(int k)
         "radial", "ripples", "slope", "spherical", "spiral1", "spiral2",
         "spotted", "waves", "wood", "wrinkles", "object", "tiling",
         "pavement", "square", "triangular", "facets", "density_file",
-        "face_blend",
+        "face_blend", "cubic",
     };
     return k >= 0 && k < IRIS_PAT_COUNT ? n[k] : "?";
 }

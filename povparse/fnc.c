@@ -511,7 +511,7 @@ static void load_images(pp_state *ps, iris_fn *fn)
 {
     iris_scene *sc = ps->scene;
     if (!iris_fn_load_images(&fn->code[0], sc->settings.assumed_gamma,
-                             ps->version))
+                             pp_effective_version(ps)))
         pp_nomem(ps);
     if (!fn->code[0].images)
         return;

@@ -584,7 +584,8 @@ static bool list_pattern(int kind)
 {
     return kind == IRIS_PAT_CHECKER || kind == IRIS_PAT_HEXAGON ||
            kind == IRIS_PAT_BRICK || kind == IRIS_PAT_OBJECT ||
-           kind == IRIS_PAT_SQUARE || kind == IRIS_PAT_TRIANGULAR;
+           kind == IRIS_PAT_SQUARE || kind == IRIS_PAT_TRIANGULAR ||
+           kind == IRIS_PAT_CUBIC;
 }
 
 /* mandel/julia colouring in params[] (src/material/pattern.c fractal):
@@ -653,7 +654,13 @@ static bool pattern_kind(pp_state *ps, iris_pattern *p)
         break;
     case T_CYLINDRICAL: p->kind = IRIS_PAT_CYLINDRICAL; break;
     case T_DENTS: p->kind = IRIS_PAT_DENTS; break;
-    case T_FACETS: p->kind = IRIS_PAT_FACETS; break;
+    case T_FACETS:
+        /* POV-Ray's defaults: size 0.1, coords 0, metric 2 */
+        p->kind = IRIS_PAT_FACETS;
+        p->params[0] = 0.1;
+        p->params[1] = 0;
+        p->params[3] = 2;
+        break;
     case T_GRADIENT:
         /* POV-Ray normalises the vector (Parse_Pattern's VNormalizeEq):
         ** gradient x+y has stripes 1/sqrt(2) apart, not 1/2 */
@@ -724,6 +731,7 @@ static bool pattern_kind(pp_state *ps, iris_pattern *p)
     case T_WRINKLES: p->kind = IRIS_PAT_WRINKLES; break;
     case T_SQUARE: p->kind = IRIS_PAT_SQUARE; break;
     case T_TRIANGULAR: p->kind = IRIS_PAT_TRIANGULAR; break;
+    case T_CUBIC: p->kind = IRIS_PAT_CUBIC; break;
     case T_TILING:
         p->kind = IRIS_PAT_TILING;
         p->params[0] = pp_float(ps);
@@ -731,7 +739,13 @@ static bool pattern_kind(pp_state *ps, iris_pattern *p)
         if (!(p->params[0] >= 1.0 && p->params[0] < 28.0))
             pp_error(ps, &at, "tiling number must be between 1 and 27");
         break;
-    case T_PAVEMENT: p->kind = IRIS_PAT_PAVEMENT; p->params[0] = 3; p->params[1] = 1; break;
+    case T_PAVEMENT:
+        /* src/material has no pavement: it evaluates to 0 (said once) */
+        pp_warn_once(ps, &at, at.kind, "pavement");
+        p->kind = IRIS_PAT_PAVEMENT;
+        p->params[0] = 3;
+        p->params[1] = 1;
+        break;
     case T_SLOPE: {
         /* slope VECTOR
         ** | slope { [point_at] VECTOR [, [LO] [, [HI]]]
@@ -792,6 +806,19 @@ static bool pattern_kind(pp_state *ps, iris_pattern *p)
             p->object = pp_object(ps);
             if (!p->object)
                 pp_error(ps, &ps->tok, "expected an object");
+        }
+        /* transforms after the object move it (Parse_Bound_Clip):
+        ** object { Logo scale 0.5 translate x } */
+        for (;;) {
+            pp_next(ps);
+            iris_transform x;
+            if (!pp_transform_item(ps, &x)) {
+                pp_unget(ps);
+                break;
+            }
+            iris_object *c = pp_object_copy(ps, p->object);
+            pp_object_transform(ps, c, &x);
+            p->object = c;
         }
         /* the list items and the '}' follow (see close_object_pattern) */
         break;
@@ -885,7 +912,10 @@ static bool pattern_mod(pp_state *ps, iris_pattern *p)
         }
         return true;
     }
-    case T_METRIC: p->params[3] = pp_float(ps); return true;
+    case T_METRIC:
+        /* POV-Ray reads a vector and keeps its x: 'metric <1,1,1>' */
+        p->params[3] = pp_vector(ps).x;
+        return true;
     case T_OFFSET: p->params[4] = pp_float(ps); return true;
     case T_SOLID: p->params[5] = 1; return true;
     case T_CONTROL0: p->params[0] = pp_float(ps); return true;
@@ -1237,9 +1267,9 @@ static void pigment_list(pp_state *ps, iris_pigment *p, int max)
     iris_map_entry *e = pp_alloc(ps, (size_t)max * sizeof *e);
     int n = 0;
     bool pigments = false;
+    /* Directives between the entries run as they come, as in POV-Ray,
+    ** whose tokenizer executes them: 'brick #end #if (C) rgb 1, rgb 0' */
     while (n < max) {
-        if (pp_next_is_directive(ps))
-            break;
         pp_next(ps);
         pp_token at = ps->tok;
         if (at.kind == T_COMMA && n > 0) {
@@ -1272,6 +1302,9 @@ static void pigment_list(pp_state *ps, iris_pigment *p, int max)
             pp_unget(ps);
             break;
         }
+        /* POV-Ray's Parse_Blend_List takes an optional ',' after every
+        ** entry, the last one too: 'brick rgb 1, rgb 0,' */
+        pp_accept(ps, T_COMMA);
     }
     if (n == 0)
         return;
@@ -1373,7 +1406,8 @@ static iris_pigment *pigment_body(pp_state *ps, const iris_pigment *base,
             if (list_pattern(p->pattern.kind)) {
                 int max = p->pattern.kind == IRIS_PAT_HEXAGON ? 3 :
                           p->pattern.kind == IRIS_PAT_SQUARE ? 4 :
-                          p->pattern.kind == IRIS_PAT_TRIANGULAR ? 6 : 2;
+                          p->pattern.kind == IRIS_PAT_TRIANGULAR ||
+                          p->pattern.kind == IRIS_PAT_CUBIC ? 6 : 2;
                 pigment_list(ps, p, max);
                 close_object_pattern(ps, &p->pattern);
             }
@@ -1440,7 +1474,7 @@ static void default_map(pp_state *ps, iris_pigment *p)
     case IRIS_PAT_MARBLE: m = &marble_map; break;
     case IRIS_PAT_HEXAGON: m = &hex_map; break;
     case IRIS_PAT_SQUARE: m = &cubic_map; n = 4; break;
-    case IRIS_PAT_TRIANGULAR: m = &cubic_map; break;
+    case IRIS_PAT_TRIANGULAR: case IRIS_PAT_CUBIC: m = &cubic_map; break;
     case IRIS_PAT_CHECKER: case IRIS_PAT_OBJECT: m = &hex_map; n = 2; break;
     default: break;
     }
@@ -1574,10 +1608,13 @@ static iris_normal *normal_body(pp_state *ps, const iris_normal *base,
             n->pattern.warps = keep.warps;
             if (list_pattern(np.kind)) {
                 /* checker 0.5 or checker normal{..}, normal{..} */
-                int max = np.kind == IRIS_PAT_HEXAGON ? 3 : 2;
+                int max = np.kind == IRIS_PAT_HEXAGON ? 3 :
+                          np.kind == IRIS_PAT_SQUARE ? 4 :
+                          np.kind == IRIS_PAT_TRIANGULAR ||
+                          np.kind == IRIS_PAT_CUBIC ? 6 : 2;
                 iris_map_entry *e = pp_alloc(ps, (size_t)max * sizeof *e);
                 int cnt = 0;
-                while (cnt < max && !pp_next_is_directive(ps)) {
+                while (cnt < max) {
                     pp_next(ps);
                     if (ps->tok.kind == T_COMMA && cnt > 0)
                         pp_next(ps);
@@ -1592,6 +1629,8 @@ static iris_normal *normal_body(pp_state *ps, const iris_normal *base,
                     }
                     e[cnt].value = cnt;
                     cnt++;
+                    /* a ',' after the last entry too (Parse_Blend_List) */
+                    pp_accept(ps, T_COMMA);
                 }
                 close_object_pattern(ps, &np);
                 if (cnt) {
@@ -1703,8 +1742,16 @@ iris_finish *pp_finish(pp_state *ps, const iris_finish *base)
         switch (at.kind) {
         case T_RBRACE:
             /* albedo forms, from the final brilliance/phong_size/roughness */
-            if (diffuse_albedo)
-                f->diffuse *= (f->brilliance + 1) / 2;
+            /* POV-Ray scales the back side too, and keeps the values as
+            ** written for radiosity and subsurface (RawDiffuse); a
+            ** finish copied from one with albedo keeps that one's
+            ** scaled values as its own raw ones */
+            f->albedo_scale = 0;
+            if (diffuse_albedo) {
+                f->albedo_scale = (f->brilliance + 1) / 2;
+                f->diffuse *= f->albedo_scale;
+                f->diffuse_back *= f->albedo_scale;
+            }
             if (phong_albedo)
                 f->phong *= (f->phong_size + 1) / 2;
             if (spec_albedo && f->roughness > 0) {
@@ -2081,10 +2128,11 @@ static iris_texture *texture_body(pp_state *ps, int end)
             if (list_pattern(np.kind)) {
                 int max = np.kind == IRIS_PAT_HEXAGON ? 3 :
                           np.kind == IRIS_PAT_SQUARE ? 4 :
-                          np.kind == IRIS_PAT_TRIANGULAR ? 6 : 2;
+                          np.kind == IRIS_PAT_TRIANGULAR ||
+                          np.kind == IRIS_PAT_CUBIC ? 6 : 2;
                 iris_map_entry *e = pp_alloc(ps, (size_t)max * sizeof *e);
                 int cnt = 0;
-                while (cnt < max && !pp_next_is_directive(ps)) {
+                while (cnt < max) {
                     pp_next(ps);
                     if (ps->tok.kind == T_COMMA && cnt > 0)
                         pp_next(ps);
@@ -2099,6 +2147,8 @@ static iris_texture *texture_body(pp_state *ps, int end)
                     }
                     e[cnt].value = cnt;
                     cnt++;
+                    /* a ',' after the last entry too (Parse_Blend_List) */
+                    pp_accept(ps, T_COMMA);
                 }
                 t->n_entries = cnt;
                 t->entries = e;

@@ -269,7 +269,12 @@ static void object_photons(pp_state *ps, iris_object *o)
     }
 }
 
-/* clipped_by { objects | bounded_by } and bounded_by { objects | clipped_by } */
+/*
+** clip_bound: clipped_by '{' ( object { object } { TRANSFORM } | bounded_by ) '}'
+**             bounded_by '{' ( object { object } { TRANSFORM } | clipped_by ) '}'
+** Transforms after the objects move all of them, as POV-Ray's
+** Parse_Bound_Clip does: clipped_by { Box scale 2 }.
+*/
 static void clip_bound(pp_state *ps, iris_object *o, bool clip)
 {
     pp_expect(ps, T_LBRACE, "'{'");
@@ -280,6 +285,12 @@ static void clip_bound(pp_state *ps, iris_object *o, bool clip)
         pp_token at = ps->tok;
         if (at.kind == T_RBRACE)
             break;
+        iris_transform x;
+        if (n > 0 && pp_transform_item(ps, &x)) {
+            for (int i = 0; i < n; i++)
+                pp_object_transform(ps, list[i], &x);
+            continue;
+        }
         if (clip && at.kind == T_BOUNDED_BY) {
             if (o->bounded_by && n < 64)
                 list[n++] = pp_object_copy(ps, o->bounded_by);
@@ -1773,7 +1784,12 @@ static void csg_body(pp_state *ps, iris_object *o, const pp_token *open)
             ((pp_obj *)o)->global_lights = pp_bool_opt(ps);
             continue;
         }
-        if (shape_kind(at.kind) >= 0 || at.kind == T_OBJECT) {
+        if (at.kind == T_IDENT && at.val.kind == V_LIGHT) {
+            add_light_to(ps, o, light_copy(ps, at.val.u.light));
+            continue;
+        }
+        if (shape_kind(at.kind) >= 0 || at.kind == T_OBJECT ||
+            (at.kind == T_IDENT && at.val.kind == V_OBJECT)) {
             pp_unget(ps);
             iris_object *c = pp_object(ps);
             /* a light_source referenced by object{} comes back as NULL
@@ -1800,11 +1816,27 @@ static void csg_body(pp_state *ps, iris_object *o, const pp_token *open)
     }
 }
 
+/*
+** object: OBJECT_IDENTIFIER | LIGHT_IDENTIFIER | 'object' '{' ... '}'
+**       | SHAPE '{' ... '}' | CSG '{' ... '}'
+** A bare identifier is a copy of the declared object without modifiers,
+** as POV-Ray's Parse_Object (OBJECT_ID_TOKEN): 'Floor' alone in the scene,
+** a CSG's children, clipped_by { Box }. A declared light_source is an
+** object there too; it comes back wrapped in an empty union, as from
+** object { Light }.
+*/
 iris_object *pp_object(pp_state *ps)
 {
     pp_next(ps);
     pp_token at = ps->tok;
     int kw = at.kind;
+    if (kw == T_IDENT && at.val.kind == V_OBJECT)
+        return pp_object_copy(ps, at.val.u.obj);
+    if (kw == T_IDENT && at.val.kind == V_LIGHT) {
+        iris_object *o = obj_new(ps, IRIS_OBJ_UNION, &at);
+        add_light_to(ps, o, light_copy(ps, at.val.u.light));
+        return o;
+    }
     if (kw == T_OBJECT) {
         pp_expect(ps, T_LBRACE, "'{' after object");
         pp_next(ps);
@@ -1843,10 +1875,11 @@ iris_object *pp_object(pp_state *ps)
     }
     pp_token open = at;
     pp_expect(ps, T_LBRACE, "'{'");
-    if (kind < IRIS_OBJ_UNION) {
+    if (kind != IRIS_OBJ_LIGHT_GROUP) {
         /* SHAPE { OBJECT_ID mods }: a copy of the identifier, as POV-Ray's
         ** Parse_Object_Id (mesh { camera_mesh ... } in the mesh_camera
-        ** demos) */
+        ** demos). A CSG does the same (Parse_CSG): union { Id mods } is
+        ** the copy itself, not a union around it. */
         pp_next(ps);
         pp_token id = ps->tok;
         if (id.kind == T_IDENT && id.val.kind == V_OBJECT) {

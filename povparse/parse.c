@@ -227,6 +227,13 @@ static enum iris_status run(const char *name, const char *text, size_t len,
     }
     push_declares(ps);
     pp_scene_items(ps);
+    /* A scene in which no #version ran (none of its own, none in an
+    ** include file: colors.inc and most others set one and restore
+    ** 'version', 3.7, at their end) renders as POV-Ray 3.7 renders it:
+    ** with EffectiveLanguageVersion() 3.62 (the end of its Parser::Parse:
+    ** no gamma correction without assumed_gamma, 3.6's layered-texture
+    ** opacity and sky; src/render reads scene->version). */
+    sc->version = pp_effective_version(ps);
     if (ps->n_conds > 0) {
         pp_cond *c = &ps->conds[ps->n_conds - 1];
         pp_error_at(ps, c->file, c->off, 1, "directive without #end");

@@ -343,6 +343,10 @@ struct pp_state {
     ** one, else 1 (0 counts as 1). A float's '.y' needs Terms > 1. */
     int dot_terms;
     bool gamma_given;
+    /* a #version directive has run (the scene's or an include file's):
+    ** until then POV-Ray 3.7's EffectiveLanguageVersion() is 3.62, though
+    ** 'version' reads 3.7 (pp_effective_version) */
+    bool version_set;
     bool srgb_warned;      /* "sRGB colour before assumed_gamma" once */
     int depth;             /* nesting of the grammar's recursion */
     uintptr_t stack_base;  /* frame address where the parse started */
@@ -578,8 +582,16 @@ iris_interior *pp_interior_transform(pp_state *ps, const iris_interior *in,
                                      const iris_transform *xf);
 void pp_add_atmosphere_media(pp_state *ps, iris_media *m);
 
+/* POV-Ray 3.7's EffectiveLanguageVersion(): the last #version, or 3.62
+** while none has run (the renderer's compatibility switches). */
+static inline double pp_effective_version(const pp_state *ps)
+{
+    return ps->version_set ? ps->version : 3.62;
+}
+
 /* ---- obj.c: objects ----------------------------------------------- */
-/* Parses an object if the current token starts one; NULL otherwise. */
+/* Parses an object if the current token starts one (a shape, CSG,
+** object {}, or a bare object or light identifier); NULL otherwise. */
 iris_object *pp_object(pp_state *ps);
 bool pp_starts_object(pp_state *ps);
 iris_object *pp_object_copy(pp_state *ps, const iris_object *o);

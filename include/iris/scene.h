@@ -97,6 +97,8 @@ enum iris_pattern_kind {
                                   a mesh face, blended across it (POV-Ray's
                                   Mesh::Determine_Textures): the corners
                                   are 'vector' and params[0..5] */
+    IRIS_PAT_CUBIC,            /* 6 entries on the pyramids around +-x,
+                                  +-y, +-z (POV-Ray 3.7's cubic pattern) */
     IRIS_PAT_COUNT
 };
 
@@ -226,6 +228,11 @@ typedef struct iris_finish {
     iris_colour emission;      /* 0 */
     double diffuse;            /* 0.6 */
     double diffuse_back;       /* 0 */
+    /* 'diffuse albedo D' multiplied diffuse and diffuse_back by
+    ** (brilliance + 1) / 2, this factor; 0 when not. Radiosity and
+    ** subsurface take the diffuse as written (POV-Ray's RawDiffuse):
+    ** iris_finish_raw_diffuse() */
+    double albedo_scale;
     double brilliance;         /* 1 */
     double phong, phong_size;  /* 0, 40 */
     double specular, roughness;/* 0, 0.05 */
@@ -246,6 +253,12 @@ typedef struct iris_finish {
     bool subsurface;
     iris_colour translucency;  /* 0 */
 } iris_finish;
+
+/* The diffuse of 'f' before 'diffuse albedo' scaled it. */
+static inline double iris_finish_raw_diffuse(const iris_finish *f)
+{
+    return f->albedo_scale > 0 ? f->diffuse / f->albedo_scale : f->diffuse;
+}
 
 /*
 ** A wavelength-dependent index of refraction (iris extensions, see
@@ -686,7 +699,8 @@ typedef struct iris_scene_cleanup {
 typedef struct iris_scene {
     iris_arena *arena;         /* owns everything below */
     iris_scene_cleanup *cleanups; /* run by iris_scene_destroy, in order */
-    double version;            /* #version, 3.7 if never given */
+    double version;            /* the last #version; 3.62 if none ran
+                                  (POV-Ray 3.7 EffectiveLanguageVersion) */
 
     int n_files;               /* files[0] is "" (unknown) */
     const char **files;

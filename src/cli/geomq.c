@@ -96,6 +96,14 @@ static bool shape_box(const iris_object *o, vec3 *a, vec3 *b)
     if (!prof && !why)
         why = geom_validate(o);
     bool ok = !why && geom_bounds(o, prof, a, b);
+    /* text: POV-Ray's glyph boxes, not the outline's tight one (a
+    ** leading space counts, off-curve points widen a letter) */
+    if (ok && o->kind == IRIS_OBJ_TEXT && prof && prof->pov_box) {
+        a->x = prof->pov_lo.u;
+        a->y = prof->pov_lo.v;
+        b->x = prof->pov_hi.u;
+        b->y = prof->pov_hi.v;
+    }
     geom_profile_free(prof);
     return ok;
 }

@@ -70,6 +70,11 @@ struct geom_profile {
     int *group_first, *group_count;
     iris_vec2 *group_lo, *group_hi;
     iris_vec2 lo, hi;          /* box of every segment */
+    /* text only (pov_box set): POV-Ray's box of the glyphs, each glyph's
+    ** control box (off-curve points included) at its place, an empty
+    ** glyph (a space) its pen point; min_extent/max_extent report it */
+    bool pov_box;
+    iris_vec2 pov_lo, pov_hi;
     /*
     ** Runs of at most PROFILE_RUN consecutive segments of one group, each
     ** with its 2-D box, so that a ray or an inside test skips the runs it

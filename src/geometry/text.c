@@ -14,12 +14,15 @@
 #include "geometry/geom.h"
 
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <string.h>
 
 #include <ft2build.h>
 #include FT_FREETYPE_H
 #include FT_OUTLINE_H
+#include FT_TRUETYPE_TABLES_H
+#include FT_TRUETYPE_TAGS_H
 
 /* Straight pieces per quadratic or cubic outline arc: the chord error is
 ** about 1/(8·64) of the arc's bulge, invisible at text sizes. */
@@ -129,6 +132,49 @@ static unsigned long utf8_next(const unsigned char **s)
     return v;
 }
 
+/*
+** The box a TrueType glyph's 'glyf' entry stores in its header (font
+** units): POV-Ray reads it, then widens it by the outline's points, and
+** places and boxes the glyph by the result; a font may store a box wider
+** than its points. An empty glyph (a space) has the box 0. False when
+** the face has no such tables (the caller then uses the points' box).
+*/
+static bool glyf_header_box(FT_Face face, FT_UInt gi, FT_BBox *box)
+{
+    TT_Header *head = FT_IS_SFNT(face)
+                          ? FT_Get_Sfnt_Table(face, FT_SFNT_HEAD) : NULL;
+    if (!head)
+        return false;
+    FT_Byte b[10];
+    FT_ULong len, off0, off1;
+    if (head->Index_To_Loc_Format == 0) {
+        len = 4; /* 16-bit offsets, in units of 2 bytes */
+        if (FT_Load_Sfnt_Table(face, TTAG_loca, (FT_Long)gi * 2, b, &len))
+            return false;
+        off0 = (FT_ULong)((b[0] << 8) | b[1]) * 2;
+        off1 = (FT_ULong)((b[2] << 8) | b[3]) * 2;
+    } else {
+        len = 8;
+        if (FT_Load_Sfnt_Table(face, TTAG_loca, (FT_Long)gi * 4, b, &len))
+            return false;
+        off0 = ((FT_ULong)b[0] << 24) | ((FT_ULong)b[1] << 16) |
+               ((FT_ULong)b[2] << 8) | b[3];
+        off1 = ((FT_ULong)b[4] << 24) | ((FT_ULong)b[5] << 16) |
+               ((FT_ULong)b[6] << 8) | b[7];
+    }
+    box->xMin = box->yMin = box->xMax = box->yMax = 0;
+    if (off1 <= off0)
+        return true;
+    len = 10; /* numberOfContours, xMin, yMin, xMax, yMax: int16 each */
+    if (FT_Load_Sfnt_Table(face, TTAG_glyf, (FT_Long)off0, b, &len))
+        return false;
+    box->xMin = (int16_t)((b[2] << 8) | b[3]);
+    box->yMin = (int16_t)((b[4] << 8) | b[5]);
+    box->xMax = (int16_t)((b[6] << 8) | b[7]);
+    box->yMax = (int16_t)((b[8] << 8) | b[9]);
+    return true;
+}
+
 /* Opens the font file, trying POV-Ray's font directory for bare names. */
 static FT_Error open_face(FT_Library lib, const char *path, FT_Face *face)
 {
@@ -225,11 +271,24 @@ struct geom_profile *geom_text_profile(const iris_object *o, const char **why)
         double adv = g->advance.x * c.scale;
         double lsb = g->metrics.horiBearingX * c.scale;
         double xmin = lsb;
-        if (g->format == FT_GLYPH_FORMAT_OUTLINE) {
+        /* POV-Ray's glyph box: the glyf header's widened by the points
+        ** (for an empty glyph the header's 0, else the points') */
+        FT_BBox gb = { 0, 0, 0, 0 };
+        bool have_gb = glyf_header_box(face, gi, &gb);
+        if (g->format == FT_GLYPH_FORMAT_OUTLINE &&
+            g->outline.n_points > 0) {
             FT_BBox box;
             FT_Outline_Get_CBox(&g->outline, &box);
-            if (g->outline.n_points > 0)
-                xmin = box.xMin * c.scale;
+            if (have_gb) {
+                gb.xMin = box.xMin < gb.xMin ? box.xMin : gb.xMin;
+                gb.yMin = box.yMin < gb.yMin ? box.yMin : gb.yMin;
+                gb.xMax = box.xMax > gb.xMax ? box.xMax : gb.xMax;
+                gb.yMax = box.yMax > gb.yMax ? box.yMax : gb.yMax;
+            } else {
+                gb = box;
+                have_gb = true;
+            }
+            xmin = gb.xMin * c.scale;
         }
         if (first) {
             c.dx = -xmin;
@@ -239,6 +298,29 @@ struct geom_profile *geom_text_profile(const iris_object *o, const char **why)
             x += adv + kern;
         }
         c.dy = y;
+        {
+            /* POV-Ray's glyph box: its glyf header's, which holds every
+            ** point of the outline, or a point for an empty glyph */
+            double x0 = 0, x1 = 0, y0 = 0, y1 = 0;
+            if (have_gb) {
+                x0 = gb.xMin * c.scale;
+                x1 = gb.xMax * c.scale;
+                y0 = gb.yMin * c.scale;
+                y1 = gb.yMax * c.scale;
+            }
+            iris_vec2 glo = { c.dx + x0, c.dy + y0 };
+            iris_vec2 ghi = { c.dx + x1, c.dy + y1 };
+            if (!p->pov_box) {
+                p->pov_lo = glo;
+                p->pov_hi = ghi;
+                p->pov_box = true;
+            } else {
+                p->pov_lo.u = fmin(p->pov_lo.u, glo.u);
+                p->pov_lo.v = fmin(p->pov_lo.v, glo.v);
+                p->pov_hi.u = fmax(p->pov_hi.u, ghi.u);
+                p->pov_hi.v = fmax(p->pov_hi.v, ghi.v);
+            }
+        }
         if (g->format == FT_GLYPH_FORMAT_OUTLINE) {
             c.open = false;
             FT_Outline_Decompose(&g->outline, &fns, &c);

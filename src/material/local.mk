@@ -6,4 +6,5 @@ libiris_core_la_SOURCES += %reldir%/material.h %reldir%/mat_internal.h \
 	%reldir%/fractal_pattern.c %reldir%/fractal_pattern.h \
 	%reldir%/pigment.c %reldir%/normal.c %reldir%/texture.c \
 	%reldir%/multitex.c \
-	%reldir%/objpattern.c %reldir%/objpattern.h
+	%reldir%/objpattern.c %reldir%/objpattern.h \
+	%reldir%/listpat.c %reldir%/listpat.h

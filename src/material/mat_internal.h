@@ -102,6 +102,10 @@ double pat_rand(unsigned long i);
 const iris_image *mat_find_image(const struct mat_ctx *ctx,
                                  const iris_image_ref *ref);
 
+/* Forgets every converted texel pigment.c remembers (its texel memo):
+** called as a context's images are freed. */
+void mat_texel_memo_forget(void);
+
 /* Image map lookup (planar/spherical/cylindrical, once, interpolate) at
 ** pattern-space point 'q'. Returns false outside a 'once' image. */
 bool mat_image_lookup(const struct mat_ctx *ctx, const iris_image_ref *ref,

@@ -14,6 +14,8 @@
 #include "config.h"
 
 #include <math.h>
+#include <stdbool.h>
+#include <stdlib.h>
 
 #include "material/mat_internal.h"
 #include "material/noise.h"
@@ -106,6 +108,69 @@ static vec3 wrinkles_normal(const iris_normal *nrm, vec3 q, vec3 n)
 }
 
 /* Hermite interpolation of a slope_map between two <height, slope>. */
+/*
+** facets [size S] [coords C] [metric M] (a normal-only pattern, POV-Ray
+** 3.7's facets in normal.cpp): one random point per unit cube (the same
+** points as crackle's); the normal, scaled by 1/S (coords 0) or the
+** point itself (coords C != 0), is moved to the nearest such point among
+** its cube's 80 neighbours within a 3-D knight's move. Without coords the
+** point's position becomes the normal, which makes flat facets that
+** follow a curved surface; with coords the normal is pushed by C times
+** the part of the noise vector at that point across it, the same
+** everywhere in one Voronoi cell. Metric 2 is the squared distance,
+** metric 1 POV-Ray's signed dx+dy+dz, others the sum of |d|^M.
+*/
+static vec3 facet_point(int x, int y, int z)
+{
+    unsigned long seed = (unsigned long)noise_hash3d(x & 0xFFF, y & 0xFFF,
+                                                     z & 0xFFF);
+    return v3(x + pat_rand(seed), y + pat_rand(seed + 1),
+              z + pat_rand(seed + 2));
+}
+
+static double facet_metric(vec3 d, double metric)
+{
+    if (metric == 2)
+        return v3_len2(d);
+    if (metric == 1)
+        return d.x + d.y + d.z;
+    return pow(fabs(d.x), metric) + pow(fabs(d.y), metric) +
+           pow(fabs(d.z), metric);
+}
+
+static vec3 facets_normal(const iris_pattern *pat, vec3 q, vec3 n)
+{
+    double size = pat->params[0], coords = pat->params[1];
+    double metric = pat->params[3];
+    n = v3_norm(n);
+    vec3 t = v3_scale(coords != 0 ? q : n, size < 1e-6 ? 1e6 : 1.0 / size);
+    /* floor, not a mirror about 0, a hair below the point (POV-Ray's
+    ** PickInCube) */
+    int bx = (int)floor(t.x - 1e-10), by = (int)floor(t.y - 1e-10),
+        bz = (int)floor(t.z - 1e-10);
+    vec3 best = v3(0, 0, 0);
+    double best_d = INFINITY;
+    bool first = true;
+    for (int dx = -2; dx <= 2; dx++)
+        for (int dy = -2; dy <= 2; dy++)
+            for (int dz = -2; dz <= 2; dz++) {
+                if ((abs(dx) == 2) + (abs(dy) == 2) + (abs(dz) == 2) > 1)
+                    continue;
+                vec3 c = facet_point(bx + dx, by + dy, bz + dz);
+                double d = facet_metric(v3_sub(c, t), metric);
+                if (first || d < best_d) {
+                    best_d = d;
+                    best = c;
+                    first = false;
+                }
+            }
+    if (coords == 0)
+        return best;
+    vec3 pert = noise_vector(best);
+    pert = v3_sub(pert, v3_scale(n, v3_dot(pert, n)));
+    return v3_madd(n, pert, coords);
+}
+
 static double hermite(double t, double h1, double s1, double h2, double s2)
 {
     double tt = t * t, ttt = tt * t;
@@ -221,6 +286,9 @@ vec3 mat_perturb_normal(const struct mat_ctx *ctx, const iris_normal *nrm,
         break;
     case IRIS_PAT_WAVES:
         np = waves_normal(ctx, nrm, q, np, false);
+        break;
+    case IRIS_PAT_FACETS:
+        np = facets_normal(pat, q, np);
         break;
     case IRIS_PAT_QUILTED:
         /* a normal-only pattern in POV-Ray: the cell vector, not the

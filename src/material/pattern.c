@@ -24,6 +24,7 @@
 
 #include "iris/fn.h"
 #include "material/fractal_pattern.h"
+#include "material/listpat.h"
 #include "material/mat_internal.h"
 #include "material/noise.h"
 #include "material/tiling.h"
@@ -355,7 +356,7 @@ bool pat_is_list(enum iris_pattern_kind kind)
     return kind == IRIS_PAT_CHECKER || kind == IRIS_PAT_HEXAGON ||
            kind == IRIS_PAT_BRICK || kind == IRIS_PAT_OBJECT ||
            kind == IRIS_PAT_SQUARE || kind == IRIS_PAT_TRIANGULAR ||
-           kind == IRIS_PAT_IMAGE_MAP;
+           kind == IRIS_PAT_CUBIC || kind == IRIS_PAT_IMAGE_MAP;
 }
 
 /* POV-Ray's density clipping for boxed, spherical, cylindrical, planar. */
@@ -915,6 +916,9 @@ static double raw_value(const struct mat_ctx *ctx, const iris_pattern *pat,
     }
     case IRIS_PAT_GRANITE: return granite(p, gen);
     case IRIS_PAT_HEXAGON: return hexagon(p);
+    case IRIS_PAT_SQUARE: return pattern_square(p);
+    case IRIS_PAT_TRIANGULAR: return pattern_triangular(p);
+    case IRIS_PAT_CUBIC: return pattern_cubic(p);
     case IRIS_PAT_LEOPARD: {
         double s = (sin(p.x) + sin(p.y) + sin(p.z)) / 3.0;
         return s * s;

@@ -11,6 +11,8 @@
 #include "config.h"
 
 #include <math.h>
+#include <stdatomic.h>
+#include <stdint.h>
 #include <string.h>
 
 #include "image/srgb8.h"
@@ -352,8 +354,11 @@ static void palette_ft(const struct mat_image *mi, const iris_image_ref *ref,
                 ref->palette_ft[i].value;
 }
 
-static iris_colour texel(const struct mat_image *mi, const iris_image *img,
-                         const iris_image_ref *ref, double x, double y)
+/* The texel at image position (x, y), and in 'at' its address (the
+** key of the converted-texel memo below). */
+static iris_colour texel_at(const struct mat_image *mi, const iris_image *img,
+                            const iris_image_ref *ref, double x, double y,
+                            const float **at)
 {
     int ix, iy;
     if (ref->once) {
@@ -364,6 +369,7 @@ static iris_colour texel(const struct mat_image *mi, const iris_image *img,
         iy = (int)wrap(y, img->height);
     }
     const float *px = &img->pixels[((size_t)iy * img->width + ix) * 4];
+    *at = px;
     iris_colour c = { px[0], px[1], px[2], 0, 1.0 - px[3] };
     if (ref->n_palette_ft > 0)
         palette_ft(mi, ref, ix, iy, &c);
@@ -471,6 +477,92 @@ static void to_stored(const iris_image_ref *ref, iris_colour *c)
                      : encode_texel(*ch[k]);
 }
 
+/*
+** Converted texels, remembered. image_to_working() and to_stored() give a
+** texel's r, g, b from its stored r, g, b and the conversion's parameters
+** alone (ref->gamma; the scene's assumed_gamma and version), and a
+** magnified image map or bump map converts the same few texels again
+** and again: each bilinear sample four, neighbouring samples mostly the
+** same four. Each conversion (srgb8_index, the table search of
+** conv_texel, three channels) was 25 % of an image-map scene's eye pass
+** (43_image_map_gamma, callgrind), srgb8_encode 16 % of a bump map's
+** (37). So each thread keeps the last conversions it made in a small
+** direct-mapped table keyed by the texel's address and those
+** parameters, and a hit returns the very doubles the conversion gave.
+** The images belong to a mat_ctx and are immutable while it lives; when
+** one is destroyed (mat_ctx_destroy calls mat_texel_memo_forget) the
+** epoch changes and no entry made before matches again, so an image
+** allocated later at the same address is never answered from an old
+** entry. Thread-local: no locks, and nothing allocated.
+*/
+#define TEXEL_MEMO_BITS 9
+struct texel_memo {
+    const float *px;       /* the texel's address; NULL: empty */
+    unsigned epoch;        /* texel_epoch when filled */
+    unsigned mode;         /* texel_as() */
+    double gamma, working_gamma;
+    double rgb[3];         /* the converted r, g, b */
+};
+static _Thread_local struct texel_memo texel_memo[1 << TEXEL_MEMO_BITS];
+/* From 1: the empty (zeroed) entries, epoch 0, never match. Wraps after
+** 2^32 destroyed contexts; an entry would have to survive all of them. */
+static atomic_uint texel_epoch = 1;
+
+void mat_texel_memo_forget(void)
+{
+    atomic_fetch_add_explicit(&texel_epoch, 1, memory_order_release);
+}
+
+/* texel_at() (x, y), then into the working space ('working', as
+** image_to_working) or as stored ('stored', as to_stored), through the
+** memo. */
+static iris_colour texel_as(const struct mat_ctx *working,
+                            const struct mat_image *mi, const iris_image *img,
+                            const iris_image_ref *ref, double x, double y,
+                            bool stored)
+{
+    const float *px;
+    iris_colour c = texel_at(mi, img, ref, x, y, &px);
+    if (!working && !stored)
+        return c;
+    /* everything the two conversions read besides the texel */
+    const iris_scene *sc = working ? working->scene : NULL;
+    unsigned mode = (working ? 1u : 0u) | (stored ? 2u : 0u) |
+                    (sc ? 4u : 0u) |
+                    (sc && sc->version > 0 && sc->version < 3.7 ? 8u : 0u);
+    double wg = sc ? sc->settings.assumed_gamma : 0.0;
+    /* image_to_working() changes nothing (its three tests fail): an image
+    ** map in a linear scene (assumed_gamma 1) needs no memo */
+    if (!stored && (!sc || (!(ref->gamma > 0) && !(mode & 8u) &&
+                            !(wg > 0 && wg != 1.0))))
+        return c;
+    unsigned epoch = atomic_load_explicit(&texel_epoch, memory_order_acquire);
+    /* texels are 16 bytes apart; the multiply spreads rows that a
+    ** power-of-two width would put in one slot */
+    uint64_t h = ((uint64_t)(uintptr_t)px >> 4) * UINT64_C(0x9e3779b97f4a7c15);
+    struct texel_memo *m = &texel_memo[h >> (64 - TEXEL_MEMO_BITS)];
+    if (m->px == px && m->epoch == epoch && m->mode == mode &&
+        m->gamma == ref->gamma && m->working_gamma == wg) {
+        c.r = m->rgb[0];
+        c.g = m->rgb[1];
+        c.b = m->rgb[2];
+        return c;
+    }
+    if (working)
+        image_to_working(working, ref, &c);
+    if (stored)
+        to_stored(ref, &c);
+    m->px = px;
+    m->epoch = epoch;
+    m->mode = mode;
+    m->gamma = ref->gamma;
+    m->working_gamma = wg;
+    m->rgb[0] = c.r;
+    m->rgb[1] = c.g;
+    m->rgb[2] = c.b;
+    return c;
+}
+
 /* The weights of texels (ix, iy), (ix-1, iy), (ix, iy-1), (ix-1, iy-1)
 ** at fractions (p, q) past texel ix-1, iy-1's centre: bilinear. */
 static void bilinear_weights(double p, double q, double *f0, double *f1,
@@ -519,11 +611,7 @@ static void sample_at_as(const struct mat_ctx *working,
                          bool stored, iris_colour *out)
 {
     if (ref->interpolate != 2 && ref->interpolate != 4) {
-        *out = texel(mi, img, ref, x, y);
-        if (working)
-            image_to_working(working, ref, out);
-        if (stored)
-            to_stored(ref, out);
+        *out = texel_as(working, mi, img, ref, x, y, stored);
         return;
     }
     /* The four texels around the sample, weighted bilinearly or by
@@ -537,22 +625,10 @@ static void sample_at_as(const struct mat_ctx *working,
         norm_dist_weights(p, qf, &f0, &f1, &f2, &f3);
     else
         bilinear_weights(p, qf, &f0, &f1, &f2, &f3);
-    iris_colour c0 = texel(mi, img, ref, ix, iy);
-    iris_colour c1 = texel(mi, img, ref, ix - 1, iy);
-    iris_colour c2 = texel(mi, img, ref, ix, iy - 1);
-    iris_colour c3 = texel(mi, img, ref, ix - 1, iy - 1);
-    if (working) {
-        image_to_working(working, ref, &c0);
-        image_to_working(working, ref, &c1);
-        image_to_working(working, ref, &c2);
-        image_to_working(working, ref, &c3);
-    }
-    if (stored) {
-        to_stored(ref, &c0);
-        to_stored(ref, &c1);
-        to_stored(ref, &c2);
-        to_stored(ref, &c3);
-    }
+    iris_colour c0 = texel_as(working, mi, img, ref, ix, iy, stored);
+    iris_colour c1 = texel_as(working, mi, img, ref, ix - 1, iy, stored);
+    iris_colour c2 = texel_as(working, mi, img, ref, ix, iy - 1, stored);
+    iris_colour c3 = texel_as(working, mi, img, ref, ix - 1, iy - 1, stored);
     out->r = c0.r * f0 + c1.r * f1 + c2.r * f2 + c3.r * f3;
     out->g = c0.g * f0 + c1.g * f1 + c2.g * f2 + c3.g * f3;
     out->b = c0.b * f0 + c1.b * f1 + c2.b * f2 + c3.b * f3;
@@ -608,7 +684,7 @@ double mat_density_file(const struct mat_ctx *ctx, const iris_pattern *pat,
                             q.z);
 }
 
-/* The palette index of the texel at image position (x, y) as texel()
+/* The palette index of the texel at image position (x, y) as texel_at()
 ** picks it, without interpolation (POV-Ray only reads a palette index
 ** from an uninterpolated lookup): clamped for `once`, else wrapped. */
 static int index_at(const struct mat_image *mi, const iris_image_ref *ref,

@@ -247,6 +247,8 @@ void mat_ctx_destroy(struct mat_ctx *ctx)
 {
     if (!ctx)
         return;
+    /* before the images go: no texel of theirs may be remembered */
+    mat_texel_memo_forget();
     for (int i = 0; i < ctx->n_images; i++) {
         if (ctx->images[i].img.width > 0)
             iris_image_fini(&ctx->images[i].img);
@@ -330,6 +332,18 @@ static void set_empty(struct mat_eval *e)
     e->stacks[0].n = 0;
 }
 
+/* 'src' as combine() reads it: its counts, its used layers and stacks.
+** A whole struct mat_eval is 2.8 kB, nearly all of it unused layers. */
+static void copy_used(struct mat_eval *dst, const struct mat_eval *src)
+{
+    dst->n_layers = src->n_layers;
+    dst->n_stacks = src->n_stacks;
+    memcpy(dst->layers, src->layers,
+           (size_t)src->n_layers * sizeof src->layers[0]);
+    memcpy(dst->stacks, src->stacks,
+           (size_t)src->n_stacks * sizeof src->stacks[0]);
+}
+
 /* Keeps the MAT_MAX_STACKS heaviest of 'n' candidate stacks. */
 struct cand {
     double w;
@@ -407,7 +421,10 @@ static void eval_average(const struct mat_ctx *ctx, const iris_texture *t,
                          int depth, vec3 *pn)
 {
     int n = t->n_entries < MAX_AVERAGE ? t->n_entries : MAX_AVERAGE;
-    struct mat_eval *alt = iris_malloc((size_t)n * sizeof *alt);
+    /* A mesh face's three vertex textures (face_blend) on the stack, as
+    ** eval_map()'s entries; longer averages, rarer, on the heap */
+    struct mat_eval local[3];
+    struct mat_eval *alt = n <= 3 ? local : iris_malloc((size_t)n * sizeof *alt);
     if (!alt) {
         *out = *rest;
         return;
@@ -430,7 +447,8 @@ static void eval_average(const struct mat_ctx *ctx, const iris_texture *t,
         w[i] /= total;
     }
     combine(alts, w, n, rest, out);
-    iris_free(alt);
+    if (alt != local)
+        iris_free(alt);
 }
 
 /* A material_map layer (an image_map pattern over textures): the one
@@ -456,18 +474,14 @@ static void eval_material_map(const struct mat_ctx *ctx,
         k %= n;
     if (k > n - 1)
         k = n - 1;
-    struct mat_eval *alt = iris_malloc(sizeof *alt);
-    if (!alt) {
-        *out = *rest;
-        return;
-    }
+    /* on the stack, as in eval_map() */
+    struct mat_eval alt;
     struct mat_point wpt = *pt;
     wpt.p = pat_warp_world(ctx, pat, pt->p);
-    eval_list(ctx, t->entries[k].texture, &wpt, alt, depth + 1, pn);
-    const struct mat_eval *alts[1] = { alt };
+    eval_list(ctx, t->entries[k].texture, &wpt, &alt, depth + 1, pn);
+    const struct mat_eval *alts[1] = { &alt };
     double w[1] = { 1.0 };
     combine(alts, w, 1, rest, out);
-    iris_free(alt);
 }
 
 /* A texture_map layer: the two neighbouring entries and their weights. */
@@ -499,11 +513,12 @@ static void eval_map(const struct mat_ctx *ctx, const iris_texture *t,
         if (v == e[c].value)
             p = c;
     }
-    struct mat_eval *alt = iris_malloc(2 * sizeof *alt);
-    if (!alt) {
-        *out = *rest;
-        return;
-    }
+    /* On the stack, not the heap: a malloc and free of these per hit were
+    ** 5 % of a texture_map scene's eye pass (18_texture_map, callgrind).
+    ** eval_list() nests at most 9 deep (depth > 8 stops it), each level
+    ** with its 'rest', these two and eval_average()'s three: under 25 kB
+    ** a level, 220 kB in all, far below a thread's stack (8 MB). */
+    struct mat_eval alt[2];
     const struct mat_eval *alts[2];
     double w[2];
     int n_alts = 0;
@@ -521,7 +536,6 @@ static void eval_map(const struct mat_ctx *ctx, const iris_texture *t,
         w[n_alts++] = 1.0 - frac;
     }
     combine(alts, w, n_alts, rest, out);
-    iris_free(alt);
 }
 
 static void eval_list(const struct mat_ctx *ctx, const iris_texture *tex,
@@ -561,12 +575,11 @@ static void eval_list(const struct mat_ctx *ctx, const iris_texture *tex,
     for (int i = n - 1; i >= 0; i--) {
         const iris_texture *t = list[i];
         if (t->map_pattern.kind != IRIS_PAT_NONE && t->n_entries > 0) {
-            struct mat_eval *rest = iris_malloc(sizeof *rest);
-            if (!rest)
-                return;
-            *rest = *out;
-            eval_map(ctx, t, pt, rest, out, depth, pn);
-            iris_free(rest);
+            /* the layers below, which eval_map() puts under its
+            ** entries: only their used part is copied */
+            struct mat_eval rest;
+            copy_used(&rest, out);
+            eval_map(ctx, t, pt, &rest, out, depth, pn);
             continue;
         }
         /* A plain layer goes on top of every stack: the stacks are

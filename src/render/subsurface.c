@@ -457,7 +457,8 @@ const struct mat_layer *subsurface_shade(struct trace_ctx *c,
                            l->finish->translucency.b };
     bool any = false;
     for (int k = 0; k < 3; k++) {
-        double alpha = sss_reduced_albedo(tab, pig[k] * l->finish->diffuse);
+        double alpha = sss_reduced_albedo(
+            tab, pig[k] * iris_finish_raw_diffuse(l->finish));
         /* a channel with no mean free path or no albedo has no transport
         ** (POV-Ray divides by 0 there) */
         s.live[k] = tl[k] > 0.0 && alpha > 0.0 && isfinite(tl[k]);

@@ -1210,17 +1210,19 @@ static void lighted_texture(struct trace_ctx *c, const struct tray *eye,
             }
             if (gi_eye && f->diffuse > 0.0) {
                 /* POV-Ray's radiosity term: pigment x it x diffuse x att,
-                ** gathered once the layer could show it above adc */
+                ** gathered once the layer could show it above adc; the
+                ** diffuse as written, not scaled by 'albedo' (RawDiffuse) */
                 const double fc[3] = { filcol[0] * col[0], filcol[1] * col[1],
                                        filcol[2] * col[2] };
-                double mx = mat_greyscale(fc) * att * f->diffuse;
+                double raw_d = iris_finish_raw_diffuse(f);
+                double mx = mat_greyscale(fc) * att * raw_d;
                 if (!gi_done && mx > t->adc) {
                     gather_irradiance(c, eye, h, raw, l->n, weight * mx,
                                       gi_e);
                     gi_done = true;
                 }
                 for (int k = 0; k < 3; k++)
-                    tmp[k] += col[k] * gi_e[k] * f->diffuse * att;
+                    tmp[k] += col[k] * gi_e[k] * raw_d * att;
             }
             /* subsurface{}: the BSSRDF stands for the diffuse term of
             ** the lights and photons below (subsurface.h) */

@@ -11,3 +11,5 @@ plane { y, 0 }
 #declare F = function { transform { translate <1, 2, 3> } }
 #declare V = F(1, 1, 1);
 #debug concat("F(1,1,1) = ", vstr(3, V, ", ", 0, 3), "\n")
+// pavement (POV-Ray 3.7's polyform paving) is not evaluated by iris
+box { 0, 1 pigment { pavement number_of_sides 4 number_of_tiles 2 } }
