@@ -110,3 +110,9 @@ tests_unit_test_fractal_cap_LDADD = $(TEST_LDADD)
 # iris's ray counts against POV-Ray's render statistics (tests/render/raycounts.sh)
 TESTS += tests/render/raycounts.sh
 EXTRA_DIST += tests/render/raycounts.sh
+check_PROGRAMS += tests/unit/test_texelmemo
+TESTS += tests/unit/test_texelmemo
+tests_unit_test_texelmemo_SOURCES = tests/unit/test_texelmemo.c \
+	tests/testutil.h tests/unit/parse_util.h
+tests_unit_test_texelmemo_CFLAGS = $(TEST_CFLAGS)
+tests_unit_test_texelmemo_LDADD = $(TEST_LDADD)
