@@ -89,8 +89,8 @@ void iris_render_defaults(iris_render_options *o);
 typedef struct iris_render_stats {
     double time_build_s, time_photon_s, time_render_s;
     double time_render_cpu_s;  /* CPU seconds of the eye pass's tile loop,
-                                  summed over the threads (0 for
-                                  progressive renders) */
+                                  summed over the threads (and the
+                                  passes of a progressive render) */
     uint64_t photons_emitted, photons_stored, photon_bytes;
     uint64_t rays_traced;
     int threads, passes;

@@ -40,7 +40,9 @@
 #include "photon/pmap.h"
 
 #include <math.h>
+#include <pthread.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "spectrum/spectrum.h"
 #include "util/mem.h"
@@ -195,7 +197,8 @@ struct radius_job {
     const struct pstore *s;
     int k;
     size_t m;
-    struct pstore_found *bufs;   /* k per thread */
+    struct pstore_found *bufs;   /* 'stride' a thread, k used */
+    size_t stride;
     double *r2s;
     double r0;                   /* pass 2 */
     double *rho_out;
@@ -205,7 +208,7 @@ static void radius_sample(void *ctx, int64_t i, int thread)
 {
     struct radius_job *j = ctx;
     const struct pstore *s = j->s;
-    struct pstore_found *buf = j->bufs + (size_t)thread * (size_t)j->k;
+    struct pstore_found *buf = j->bufs + (size_t)thread * j->stride;
     size_t idx = (size_t)i * s->n / j->m;
     double r2;
     if (!j->rho_out) {
@@ -237,9 +240,13 @@ double pmap_auto_radius_mt(const struct pstore *s, int gather_max,
     m = m < 100 ? 100 : m > 1000 ? 1000 : m;
     if (m > s->n)
         m = s->n;
-    struct radius_job j = { s, gather_max, m, NULL, NULL, 0.0, NULL };
-    j.bufs = iris_malloc((size_t)threads * (size_t)gather_max *
-                         sizeof *j.bufs);
+    struct radius_job j = { s, gather_max, m, NULL, 0, NULL, 0.0, NULL };
+    /* at least a cache line between two threads' buffers: the k-nearest
+    ** heap is written at every photon it keeps, the root at the buffer's
+    ** start and the last entries at its end, and a line shared by two
+    ** threads' heaps would move between the cores at such writes */
+    j.stride = (size_t)gather_max + (64 + sizeof *j.bufs - 1) / sizeof *j.bufs;
+    j.bufs = iris_malloc((size_t)threads * j.stride * sizeof *j.bufs);
     j.r2s = iris_malloc(m * sizeof *j.r2s);
     double *rho = iris_malloc(m * sizeof *rho);
     if (!j.bufs || !j.r2s || !rho) {
@@ -296,12 +303,16 @@ bool photon_blocks_shadow(const struct photon_map *m,
             light->photon_refraction == IRIS_ON);
 }
 
-void pmap_white_matrix(double out[3][3])
+/* The matrix, computed once: 12000 spectral evaluations, which every
+** progressive pass's map build repeated on one thread (1.5 M
+** instructions a pass, callgrind) while the other threads waited. */
+static double white_matrix[3][3];
+static pthread_once_t white_once = PTHREAD_ONCE_INIT;
+
+static void white_matrix_init(void)
 {
     enum { STEPS = 4000 };
-    for (int k = 0; k < 3; k++)
-        for (int c = 0; c < 3; c++)
-            out[k][c] = 0.0;
+    double (*out)[3] = white_matrix;
     for (int i = 0; i < STEPS; i++) {
         double lambda = SPEC_LAMBDA_MIN + SPEC_LAMBDA_RANGE * (i + 0.5) / STEPS;
         double wt[3];
@@ -313,6 +324,12 @@ void pmap_white_matrix(double out[3][3])
                 out[k][c] += rho * wt[k] / STEPS;
         }
     }
+}
+
+void pmap_white_matrix(double out[3][3])
+{
+    pthread_once(&white_once, white_matrix_init);
+    memcpy(out, white_matrix, sizeof white_matrix);
 }
 
 void photon_map_destroy(struct photon_map *m)

@@ -262,11 +262,14 @@ static void global_batch(void *ctx, int64_t item, int thread)
     /* textures of one colour everywhere, evaluated once a batch */
     struct ptrace_tex_cache tex;
     memset(&tex, 0, sizeof tex);
-    g->outs[item].tex = g->opts->no_tex_cache ? NULL : &tex;
-    for (int64_t j = lo; j < hi && !g->outs[item].failed && !(stop && *stop);
-         j++)
-        shoot_global(g, j, &g->outs[item]);
-    g->outs[item].tex = NULL;
+    /* the batch's output record on this stack while written: neighbouring
+    ** batches' records share cache lines (false sharing, as shoot.c) */
+    struct ptrace_out out = g->outs[item];
+    out.tex = g->opts->no_tex_cache ? NULL : &tex;
+    for (int64_t j = lo; j < hi && !out.failed && !(stop && *stop); j++)
+        shoot_global(g, j, &out);
+    out.tex = NULL;
+    g->outs[item] = out;
     atomic_fetch_add(&g->tex_cached, tex.hits);
 }
 

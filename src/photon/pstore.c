@@ -252,10 +252,54 @@ static uint64_t quantise(double x, double lo, double step)
     return (uint64_t)llrint(q);
 }
 
-static int cmp_float(const void *a, const void *b)
+/* The unsigned key of float 'f' whose order is the floats' order (-0
+** just below +0): the sign bit set for positives, every bit flipped for
+** negatives. */
+static uint32_t float_key(float f)
 {
-    float x = *(const float *)a, y = *(const float *)b;
-    return (x > y) - (x < y);
+    uint32_t u;
+    memcpy(&u, &f, sizeof u);
+    return u & 0x80000000u ? ~u : u | 0x80000000u;
+}
+
+static float key_float(uint32_t k)
+{
+    uint32_t u = k & 0x80000000u ? k & 0x7fffffffu : ~k;
+    float f;
+    memcpy(&f, &u, sizeof f);
+    return f;
+}
+
+/*
+** Sorts v[0..m) ascending (m <= ROBUST_SAMPLES): a least-significant-
+** digit radix sort, four passes of 8 bits over the float_key()s: 1.0 M
+** instructions for the three axes against qsort()'s 3.7 M with its
+** comparison callback, on one thread while the others wait, at every
+** progressive pass (bench/caustic_ball.pov, callgrind). The same order
+** as qsort's, -0 and +0 aside (the box below cannot tell them apart),
+** and NaNs at the ends instead of anywhere.
+*/
+#define ROBUST_SAMPLES 4096
+static void sort_floats(float *v, size_t m, uint32_t *tmp_a, uint32_t *tmp_b)
+{
+    for (size_t i = 0; i < m; i++)
+        tmp_a[i] = float_key(v[i]);
+    uint32_t *from = tmp_a, *to = tmp_b;
+    for (int shift = 0; shift < 32; shift += 8) {
+        size_t count[257] = { 0 };
+        for (size_t i = 0; i < m; i++)
+            count[((from[i] >> shift) & 255u) + 1]++;
+        for (int d = 0; d < 256; d++)
+            count[d + 1] += count[d];
+        for (size_t i = 0; i < m; i++)
+            to[count[(from[i] >> shift) & 255u]++] = from[i];
+        uint32_t *t = from;
+        from = to;
+        to = t;
+    }
+    /* four passes: the keys are back in tmp_a */
+    for (size_t i = 0; i < m; i++)
+        v[i] = key_float(from[i]);
 }
 
 /*
@@ -285,7 +329,7 @@ static int cmp_float(const void *a, const void *b)
 static void robust_box(const struct pstore_raw *raw, size_t n, double lo[3],
                        double hi[3])
 {
-    enum { SAMPLES = 4096 };
+    enum { SAMPLES = ROBUST_SAMPLES };
     /* trims tried, smallest first, and how far beyond the 25%-75% box the
     ** trimmed box may reach */
     static const double trims[] = { 0.001, 0.005, 0.02, 0.05, 0.10, 0.25 };
@@ -293,6 +337,7 @@ static void robust_box(const struct pstore_raw *raw, size_t n, double lo[3],
     const double spread_max = 1e4;
     size_t m = n < SAMPLES ? n : SAMPLES;
     static _Thread_local float buf[3][SAMPLES];
+    static _Thread_local uint32_t keys[2][SAMPLES];
     size_t cut[N_TRIMS];
     double ext[N_TRIMS];
     for (int t = 0; t < N_TRIMS; t++) {
@@ -304,7 +349,10 @@ static void robust_box(const struct pstore_raw *raw, size_t n, double lo[3],
     for (int a = 0; a < 3; a++) {
         lo[a] = INFINITY;
         hi[a] = -INFINITY;
-        for (size_t i = 0; i < n; i++) {
+    }
+    /* one pass over the photons for the three axes */
+    for (size_t i = 0; i < n; i++)
+        for (int a = 0; a < 3; a++) {
             /* comparisons, not fmin/fmax (library calls; the same
             ** answer, a NaN ignored too) */
             double v = raw[i].p[a];
@@ -313,9 +361,10 @@ static void robust_box(const struct pstore_raw *raw, size_t n, double lo[3],
             if (v > hi[a])
                 hi[a] = v;
         }
+    for (int a = 0; a < 3; a++) {
         for (size_t i = 0; i < m; i++)
             buf[a][i] = raw[i * n / m].p[a];
-        qsort(buf[a], m, sizeof buf[a][0], cmp_float);
+        sort_floats(buf[a], m, keys[0], keys[1]);
         for (int t = 0; t < N_TRIMS; t++)
             ext[t] = fmax(ext[t], (double)buf[a][m - 1 - cut[t]] -
                                       (double)buf[a][cut[t]]);
@@ -356,6 +405,64 @@ static struct pstore_photon pack(const struct pstore *s,
     ph.lambda_q = (uint16_t)lrint(lq);
     ph.dir_q = pstore_encode_dir(v3(r->dir[0], r->dir[1], r->dir[2]));
     return ph;
+}
+
+/*
+** Packing in parallel. In place, record i (16 bytes at 16i) lands on raw
+** record i/2, so the records are packed in waves: [0, PACK_CHUNK) in
+** order on one thread, then [L, 2L) for L = PACK_CHUNK, 2·PACK_CHUNK,
+** 4·PACK_CHUNK, ..., each wave in chunks on all threads. A wave reads raw
+** records [L, 2L) and writes over [L/2, L), which earlier waves have
+** read: nothing a thread reads is written during its wave. The packing
+** is 5.3 M instructions a pass of bench/caustic_ball.pov (40 000
+** photons; callgrind), all of it on one thread before: 1.2% of a pass's
+** time on 2 threads.
+*/
+#define PACK_CHUNK 4096
+_Static_assert(sizeof(struct pstore_raw) == 2 * sizeof(struct pstore_photon),
+               "in place, record i lands on raw record i/2");
+
+struct pack_job {
+    const struct pstore *s;
+    struct pstore_raw *raw;
+    struct pstore_photon *ph;
+    const uint8_t *axes;
+    size_t lo, hi;             /* this wave */
+};
+
+static void pack_range(const struct pack_job *j, size_t lo, size_t hi)
+{
+    for (size_t i = lo; i < hi; i++) {
+        struct pstore_raw r;
+        memcpy(&r, &j->raw[i], sizeof r); /* before ph[i] may cover it */
+        j->ph[i] = pack(j->s, &r, j->axes[i]);
+    }
+}
+
+static void pack_chunk(void *ctx, int64_t item, int thread)
+{
+    (void)thread;
+    const struct pack_job *j = ctx;
+    size_t lo = j->lo + (size_t)item * PACK_CHUNK;
+    pack_range(j, lo, lo + PACK_CHUNK < j->hi ? lo + PACK_CHUNK : j->hi);
+}
+
+static void pack_all(const struct pstore *s, struct pstore_raw *raw,
+                     struct pstore_photon *ph, const uint8_t *axes,
+                     size_t n, int threads)
+{
+    struct pack_job j = { s, raw, ph, axes, 0, n };
+    if (threads <= 1 || n <= 2 * PACK_CHUNK) {
+        pack_range(&j, 0, n);
+        return;
+    }
+    pack_range(&j, 0, PACK_CHUNK);
+    for (size_t lo = PACK_CHUNK; lo < n; lo = j.hi) {
+        j.lo = lo;
+        j.hi = 2 * lo < n ? 2 * lo : n;
+        par_for(threads, (int64_t)((j.hi - lo + PACK_CHUNK - 1) / PACK_CHUNK),
+                pack_chunk, &j);
+    }
 }
 
 /*
@@ -403,11 +510,7 @@ static enum iris_status build(struct pstore *s, struct pstore_raw *raw,
     if (threads <= 1 || n < PAR_MIN_PHOTONS ||
         !build_par(raw, axes, n, mn, mx, threads))
         build_rec(raw, axes, 0, n, mn, mx);
-    for (size_t i = 0; i < n; i++) {
-        struct pstore_raw r;
-        memcpy(&r, &raw[i], sizeof r); /* before ph[i] may cover it */
-        ph[i] = pack(s, &r, axes[i]);
-    }
+    pack_all(s, raw, ph, axes, n, threads);
     iris_free(axes);
     if (in_place && n > 0) {
         /* shrinking: glibc returns a large block's tail without copying */

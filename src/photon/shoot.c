@@ -843,11 +843,17 @@ static void shoot_batch(void *ctx, int64_t item, int thread)
     if (atomic_load(&s->over_budget) ||
         (s->opts->interrupt && *s->opts->interrupt))
         return;
+    /* The batch's output record is written at every photon stored (its
+    ** count); it lives on this thread's stack meanwhile. In s->outs the
+    ** records of neighbouring batches (40 bytes each) share cache lines,
+    ** and two threads on neighbouring batches, the usual case, moved the
+    ** line between the cores at every store (false sharing). */
+    struct ptrace_out out = s->outs[item];
     if (s->wf) {
-        wf_batch(s, lo, hi, thread, &s->outs[item]);
-        int64_t n = atomic_fetch_add(&s->n_stored,
-                                     (int64_t)s->outs[item].n) +
-                    (int64_t)s->outs[item].n;
+        wf_batch(s, lo, hi, thread, &out);
+        s->outs[item] = out;
+        int64_t n = atomic_fetch_add(&s->n_stored, (int64_t)out.n) +
+                    (int64_t)out.n;
         if ((double)n > s->store_cap)
             atomic_store(&s->over_budget, true);
         return;
@@ -858,16 +864,17 @@ static void shoot_batch(void *ctx, int64_t item, int thread)
     /* textures of one colour everywhere, evaluated once a batch */
     struct ptrace_tex_cache tex;
     memset(&tex, 0, sizeof tex);
-    s->outs[item].tex = s->opts->no_tex_cache ? NULL : &tex;
-    for (int64_t j = lo; j < hi && !s->outs[item].failed; j++) {
+    out.tex = s->opts->no_tex_cache ? NULL : &tex;
+    for (int64_t j = lo; j < hi && !out.failed; j++) {
         while (rg < last && j >= rg[1].first)
             rg++;
-        shoot_one(s, rg, j, &s->outs[item]);
+        shoot_one(s, rg, j, &out);
     }
-    s->outs[item].tex = NULL;
+    out.tex = NULL;
+    s->outs[item] = out;
     atomic_fetch_add(&s->tex_cached, tex.hits);
-    int64_t n = atomic_fetch_add(&s->n_stored, (int64_t)s->outs[item].n) +
-                (int64_t)s->outs[item].n;
+    int64_t n = atomic_fetch_add(&s->n_stored, (int64_t)out.n) +
+                (int64_t)out.n;
     if ((double)n > s->store_cap)
         atomic_store(&s->over_budget, true);
 }

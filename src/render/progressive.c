@@ -642,6 +642,7 @@ enum iris_status progressive_run(struct tracer *tr, const struct accel *acc,
             es_sum.shadow_tests += es.shadow_tests;
             es_sum.shadow_hits += es.shadow_hits;
             es_sum.nan_pixels += es.nan_pixels;
+            es_sum.time_render_cpu_s += es.time_render_cpu_s;
             es_sum.threads = es.threads;
             if (st != IRIS_OK) {
                 if (st == IRIS_EINTR && a.passes == 0) /* partial image */
@@ -771,6 +772,7 @@ enum iris_status progressive_run(struct tracer *tr, const struct accel *acc,
         stats->shadow_tests += es_sum.shadow_tests;
         stats->shadow_hits += es_sum.shadow_hits;
         stats->nan_pixels += es_sum.nan_pixels;
+        stats->time_render_cpu_s += es_sum.time_render_cpu_s;
         stats->threads = es_sum.threads ? es_sum.threads : threads;
     }
     iris_free(a.sum);

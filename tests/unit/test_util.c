@@ -6,9 +6,13 @@
 
 #include "testutil.h"
 
+#include <pthread.h>
 #include <stdint.h>
 #include <string.h>
+#include <sys/syscall.h>
+#include <sys/wait.h>
 #include <time.h>
+#include <unistd.h>
 
 #include "math/transform.h"
 #include "util/arena.h"
@@ -171,6 +175,142 @@ static void test_par_for_timed(void **state)
     }
 }
 
+/* ---- the worker pool (thread.c) ---- */
+
+#define POOL_ITEMS 32
+struct tid_ctx {
+    long tid[POOL_ITEMS];
+};
+
+/* Records the kernel's id of the thread running the item, after burning
+** 0.5 ms of that thread's CPU so that a second thread, if there is one,
+** takes items too. */
+static void tid_item(void *ctx, int64_t i, int thread)
+{
+    (void)thread;
+    double t0 = thread_clock_s();
+    while (thread_clock_s() - t0 < 0.5e-3)
+        ;
+    ((struct tid_ctx *)ctx)->tid[i] = (long)syscall(SYS_gettid);
+}
+
+/* par_for() reuses its workers: over 40 calls with 2 threads at most 2
+** distinct threads (the caller and one pooled worker) ran items. A thread
+** created per call gets a new kernel id each time (ids are not reused
+** until they wrap at pid_max), and would show up to 41. */
+static void test_par_pool_reuse(void **state)
+{
+    (void)state;
+    enum { CALLS = 40, MAX_SEEN = 2 * CALLS + 1 };
+    long seen[MAX_SEEN];
+    int n_seen = 0;
+    for (int c = 0; c < CALLS; c++) {
+        struct tid_ctx ctx;
+        memset(&ctx, 0, sizeof ctx);
+        assert_int_equal(par_for(2, POOL_ITEMS, tid_item, &ctx), 0);
+        for (int i = 0; i < POOL_ITEMS; i++) {
+            assert_true(ctx.tid[i] > 0); /* every item ran */
+            int k = 0;
+            while (k < n_seen && seen[k] != ctx.tid[i])
+                k++;
+            if (k == n_seen && n_seen < MAX_SEEN)
+                seen[n_seen++] = ctx.tid[i];
+        }
+    }
+    assert_true(n_seen <= 2);
+}
+
+struct nest_ctx {
+    int64_t out[8][1000];
+};
+
+struct nest_inner {
+    struct nest_ctx *c;
+    int64_t row;
+};
+
+static void nest_inner_item(void *ctx, int64_t i, int thread)
+{
+    (void)thread;
+    struct nest_inner *in = ctx;
+    in->c->out[in->row][i] = in->row * 1000 + i;
+}
+
+/* An item that calls par_for() itself (the pool is busy with the outer
+** call): the inner call runs on threads of its own, every item once. */
+static void nest_outer_item(void *ctx, int64_t row, int thread)
+{
+    (void)thread;
+    struct nest_inner in = { ctx, row };
+    if (par_for(2, 1000, nest_inner_item, &in) != 0)
+        in.c->out[row][0] = -1; /* (no cmocka assert off the main thread) */
+}
+
+static void test_par_nested(void **state)
+{
+    (void)state;
+    static struct nest_ctx ctx;
+    memset(&ctx, 0xff, sizeof ctx);
+    assert_int_equal(par_for(2, 8, nest_outer_item, &ctx), 0);
+    for (int r = 0; r < 8; r++)
+        for (int i = 0; i < 1000; i++)
+            assert_int_equal(ctx.out[r][i], (int64_t)r * 1000 + i);
+}
+
+/* Two threads calling par_for() at once (one gets the pool, the other
+** threads of its own, call by call): both get every item right. */
+static void *concurrent_caller(void *arg)
+{
+    int *bad = arg;
+    for (int c = 0; c < 50; c++) {
+        static _Thread_local struct sum_ctx ctx;
+        memset(&ctx, 0xff, sizeof ctx);
+        if (par_for(2 + c % 2, 1000, square_item, &ctx) != 0)
+            (*bad)++;
+        for (int i = 0; i < 1000; i++)
+            if (ctx.out[i] != (int64_t)i * i)
+                (*bad)++;
+    }
+    return NULL;
+}
+
+static void test_par_concurrent(void **state)
+{
+    (void)state;
+    int bad[2] = { 0, 0 };
+    pthread_t t;
+    assert_int_equal(pthread_create(&t, NULL, concurrent_caller, &bad[1]),
+                     0);
+    concurrent_caller(&bad[0]);
+    pthread_join(t, NULL);
+    assert_int_equal(bad[0], 0);
+    assert_int_equal(bad[1], 0);
+}
+
+/* A child forked after the pool has workers (which the child has not
+** got) still runs par_for() to the end: without the fork handler it
+** would wait for them forever (the alarm then kills it). */
+static void test_par_fork(void **state)
+{
+    (void)state;
+    static struct sum_ctx ctx;
+    assert_int_equal(par_for(2, 1000, square_item, &ctx), 0);
+    pid_t pid = fork();
+    assert_true(pid >= 0);
+    if (pid == 0) {
+        alarm(20);
+        memset(&ctx, 0xff, sizeof ctx);
+        int ok = par_for(2, 1000, square_item, &ctx) == 0;
+        for (int i = 0; i < 1000; i++)
+            ok = ok && ctx.out[i] == (int64_t)i * i;
+        _exit(ok ? 0 : 1);
+    }
+    int status = 0;
+    assert_int_equal(waitpid(pid, &status, 0), pid);
+    assert_true(WIFEXITED(status));
+    assert_int_equal(WEXITSTATUS(status), 0);
+}
+
 /* rotate <0,90,0> takes +x to -z in POV-Ray's left-handed frame (the
 ** documented "rotate y*90 turns x into -z"); a composed transform and its
 ** inverse undo each other; normals stay perpendicular under a
@@ -220,6 +360,10 @@ int main(void)
         cmocka_unit_test(test_rng_lazy),
         cmocka_unit_test(test_par_for),
         cmocka_unit_test(test_par_for_timed),
+        cmocka_unit_test(test_par_pool_reuse),
+        cmocka_unit_test(test_par_nested),
+        cmocka_unit_test(test_par_concurrent),
+        cmocka_unit_test(test_par_fork),
         cmocka_unit_test(test_transform),
     };
     return cmocka_run_group_tests_name("util", tests, NULL, NULL);
