@@ -21,6 +21,9 @@
 #include <stdatomic.h>
 #include <stdbool.h>
 #include <stdint.h>
+#ifdef __SSE2__
+#include <emmintrin.h>
+#endif
 
 #include "material/noise.h"
 
@@ -78,8 +81,24 @@ static const double rtable_values[267] = {
     -0.420127, -0.427878, 0.566186,
 };
 
-/* rtable[2k] = value k, rtable[2k+1] = half of it, as POV-Ray lays it out. */
-static double rtable[267 * 2];
+/* POV-Ray lays the coefficients out as rtable[2k] = value k and
+** rtable[2k+1] = half of it, and a lattice corner with hash b reads
+** mp = &rtable[2b]: the constant and the x, y, z slopes of the x component
+** at mp[1], mp[2], mp[4], mp[6], of the y component at mp[9..14] and of the
+** z component at mp[17..22]. The same twelve numbers are regrouped here,
+** one block per hash value, so that the x and y components of a corner
+** sit side by side (one 16-byte load each for a two-lane product) and the
+** hot paths skip the index arithmetic. The numbers, and the order of the
+** operations on them, are POV-Ray's, so the noise is bit for bit the same. */
+struct corner_block {
+    _Alignas(16) double xy[4][2]; /* {x, y} components: const, slopes x y z */
+    double z[4];                  /* z component: const, slopes x y z */
+};
+static struct corner_block corner_blocks[256];
+/* The byte offset in corner_blocks of the block of hash entry i, whose
+** number is hash_table[i] & 0xFF as POV-Ray masks it (an offset, not an
+** index: this saves the multiplication by the block size per corner). */
+static unsigned short block_of[8192];
 static unsigned short hash_table[8192];
 
 #define GRAD_ENTRIES 2048
@@ -144,7 +163,7 @@ static void build_gradients(void)
     }
 }
 
-static vec3 dnoise(vec3 p);
+static inline vec3 dnoise(vec3 p);
 
 static void build_waves(void)
 {
@@ -155,13 +174,31 @@ static void build_waves(void)
     }
 }
 
-static void build_tables(void)
+static void build_corner_blocks(void)
 {
+    double rtable[267 * 2];
     for (int i = 0; i < 267; i++) {
         rtable[2 * i] = rtable_values[i];
         rtable[2 * i + 1] = rtable_values[i] * 0.5;
     }
+    static const int slot[4] = {1, 2, 4, 6};
+    for (int b = 0; b < 256; b++) {
+        const double *mp = &rtable[2 * b];
+        for (int k = 0; k < 4; k++) {
+            corner_blocks[b].xy[k][0] = mp[slot[k]];
+            corner_blocks[b].xy[k][1] = mp[slot[k] + 8];
+            corner_blocks[b].z[k] = mp[slot[k] + 16];
+        }
+    }
+    for (int i = 0; i < 8192; i++)
+        block_of[i] = (unsigned short)((hash_table[i] & 0xFF) *
+                                       sizeof(struct corner_block));
+}
+
+static void build_tables(void)
+{
     build_hash_table();
+    build_corner_blocks(); /* needs the hash table */
     build_gradients();
 }
 
@@ -182,6 +219,39 @@ void noise_init(void)
         pthread_once(&noise_once, init_once);
 }
 
+/* Two doubles in the lanes of an SSE2 register where there is one: the
+** x and y components of dnoise()'s sum. Each lane does exactly the scalar
+** operations in the scalar order (IEEE double in both), so the lanes give
+** the scalar bits. */
+#ifdef __SSE2__
+typedef __m128d pair;
+static inline pair pair_zero(void) { return _mm_setzero_pd(); }
+static inline pair pair_dup(double a) { return _mm_set1_pd(a); }
+static inline pair pair_load(const double *p) { return _mm_load_pd(p); }
+static inline pair pair_add(pair a, pair b) { return _mm_add_pd(a, b); }
+static inline pair pair_mul(pair a, pair b) { return _mm_mul_pd(a, b); }
+static inline double pair_lo(pair a) { return _mm_cvtsd_f64(a); }
+static inline double pair_hi(pair a)
+{
+    return _mm_cvtsd_f64(_mm_unpackhi_pd(a, a));
+}
+#else
+typedef struct { double lo, hi; } pair;
+static inline pair pair_zero(void) { return (pair){0, 0}; }
+static inline pair pair_dup(double a) { return (pair){a, a}; }
+static inline pair pair_load(const double *p) { return (pair){p[0], p[1]}; }
+static inline pair pair_add(pair a, pair b)
+{
+    return (pair){a.lo + b.lo, a.hi + b.hi};
+}
+static inline pair pair_mul(pair a, pair b)
+{
+    return (pair){a.lo * b.lo, a.hi * b.hi};
+}
+static inline double pair_lo(pair a) { return a.lo; }
+static inline double pair_hi(pair a) { return a.hi; }
+#endif
+
 static double scurve(double a)
 {
     return a * a * (3.0 - 2.0 * a);
@@ -196,21 +266,52 @@ static void lattice(double x, int *index, double *frac)
     *frac = x - cell;
 }
 
+/* What both lattice noises need of a point: the hash indices of its cell,
+** the offsets from the cell's low (f) and high (g) corners, and the
+** s-curve weights (s along, t = 1 - s) with the four xy products. */
+struct cell {
+    int ix, iy, iz;
+    double fx, fy, fz, gx, gy, gz;
+    double sz, tz, txty, sxty, txsy, sxsy;
+};
+
+static inline void cell_setup(vec3 p, struct cell *c)
+{
+    lattice(p.x, &c->ix, &c->fx);
+    lattice(p.y, &c->iy, &c->fy);
+    lattice(p.z, &c->iz, &c->fz);
+    c->gx = c->fx - 1;
+    c->gy = c->fy - 1;
+    c->gz = c->fz - 1;
+    double sx = scurve(c->fx), sy = scurve(c->fy);
+    c->sz = scurve(c->fz);
+    double tx = 1 - sx, ty = 1 - sy;
+    c->tz = 1 - c->sz;
+    c->txty = tx * ty;
+    c->sxty = sx * ty;
+    c->txsy = tx * sy;
+    c->sxsy = sx * sy;
+}
+
 static int hash2d(int a, int b)
 {
     return hash_table[hash_table[a] ^ b];
 }
 
-/* Offset of the coefficients for lattice hash 'h' at z index 'iz'. */
-static const double *coeffs(int h, int iz)
+/* The coefficients for lattice hash 'h' at z index 'iz'. */
+static inline const struct corner_block *coeffs(int h, int iz)
 {
-    return &rtable[(hash_table[h ^ iz] & 0xFF) * 2];
+    return (const struct corner_block *)((const char *)corner_blocks +
+                                         block_of[h ^ iz]);
 }
 
-/* One corner's term: weight times the linear function of the offsets. */
-static double corner(const double *mp, double s, double x, double y, double z)
+/* One corner's term of the scalar noise (the x component's numbers):
+** weight times the linear function of the offsets. */
+static inline double corner(const struct corner_block *b, double s, double x,
+                            double y, double z)
 {
-    return s * (mp[1] + mp[2] * x + mp[4] * y + mp[6] * z);
+    return s * (b->xy[0][0] + b->xy[1][0] * x + b->xy[2][0] * y +
+                b->xy[3][0] * z);
 }
 
 /* Clips 'p' coordinates that would overflow the lattice arithmetic. */
@@ -225,6 +326,34 @@ static inline vec3 safe_point(vec3 p)
 
 static double gradient_noise(vec3 p);
 
+#ifdef __SSE2__
+/* corner() for two corners a (low lane) and b (high lane) that share the
+** y and z offsets; w holds their weights, x their x offsets. Each lane
+** does corner()'s operations in corner()'s order, so gives its bits. */
+static inline __m128d corner_pair(const struct corner_block *a,
+                                  const struct corner_block *b, __m128d w,
+                                  __m128d x, double y, double z)
+{
+    __m128d k0 = _mm_loadh_pd(_mm_load_sd(&a->xy[0][0]), &b->xy[0][0]);
+    __m128d k1 = _mm_loadh_pd(_mm_load_sd(&a->xy[1][0]), &b->xy[1][0]);
+    __m128d k2 = _mm_loadh_pd(_mm_load_sd(&a->xy[2][0]), &b->xy[2][0]);
+    __m128d k3 = _mm_loadh_pd(_mm_load_sd(&a->xy[3][0]), &b->xy[3][0]);
+    __m128d t = _mm_add_pd(k0, _mm_mul_pd(k1, x));
+    t = _mm_add_pd(t, _mm_mul_pd(k2, _mm_set1_pd(y)));
+    t = _mm_add_pd(t, _mm_mul_pd(k3, _mm_set1_pd(z)));
+    return _mm_mul_pd(w, t);
+}
+#endif
+
+/* fmin(fmax(v, 0), 1) without the two library calls (GCC cannot inline
+** them without -ffinite-math-only). Same result for every v the noise can
+** produce: NaN gives 0 like fmax, and -0 cannot occur (x + c == 0 is +0 in
+** round-to-nearest), so the sign of a zero never differs. */
+static inline double clamp01(double v)
+{
+    return v > 0.0 ? (v < 1.0 ? v : 1.0) : 0.0;
+}
+
 double noise_value(vec3 p, int generator)
 {
     noise_init();
@@ -232,20 +361,41 @@ double noise_value(vec3 p, int generator)
     if (generator == 3) {
         /* POV-Ray's bias correction for the gradient noise. */
         double v = 0.5 * (1.59 * gradient_noise(p) + 0.985);
-        return fmin(fmax(v, 0.0), 1.0);
+        return clamp01(v);
     }
-    int ix, iy, iz;
-    double fx, fy, fz;
-    lattice(p.x, &ix, &fx);
-    lattice(p.y, &iy, &fy);
-    lattice(p.z, &iz, &fz);
-    double gx = fx - 1, gy = fy - 1, gz = fz - 1;
-    double sx = scurve(fx), sy = scurve(fy), sz = scurve(fz);
-    double tx = 1 - sx, ty = 1 - sy, tz = 1 - sz;
-    double txty = tx * ty, sxty = sx * ty, txsy = tx * sy, sxsy = sx * sy;
+    struct cell c;
+    cell_setup(p, &c);
+    const int ix = c.ix, iy = c.iy, iz = c.iz;
+    const double fx = c.fx, fy = c.fy, fz = c.fz, gx = c.gx, gy = c.gy,
+                 gz = c.gz;
+    const double sz = c.sz, tz = c.tz, txty = c.txty, sxty = c.sxty,
+                 txsy = c.txsy, sxsy = c.sxsy;
     int h00 = hash2d(ix, iy), h10 = hash2d(ix + 1, iy);
     int h01 = hash2d(ix, iy + 1), h11 = hash2d(ix + 1, iy + 1);
     double sum;
+#ifdef __SSE2__
+    /* Corners two at a time (each pair differs only in x), the terms
+    ** then summed one by one in POV-Ray's order. */
+    __m128d px = _mm_set_pd(gx, fx);
+    __m128d wy0 = _mm_set_pd(sxty, txty), wy1 = _mm_set_pd(sxsy, txsy);
+    __m128d wtz = _mm_set1_pd(tz), wsz = _mm_set1_pd(sz);
+    __m128d t0 = corner_pair(coeffs(h00, iz), coeffs(h10, iz),
+                             _mm_mul_pd(wy0, wtz), px, fy, fz);
+    __m128d t1 = corner_pair(coeffs(h01, iz), coeffs(h11, iz),
+                             _mm_mul_pd(wy1, wtz), px, gy, fz);
+    __m128d t2 = corner_pair(coeffs(h00, iz + 1), coeffs(h10, iz + 1),
+                             _mm_mul_pd(wy0, wsz), px, fy, gz);
+    __m128d t3 = corner_pair(coeffs(h01, iz + 1), coeffs(h11, iz + 1),
+                             _mm_mul_pd(wy1, wsz), px, gy, gz);
+    sum = pair_lo(t0);
+    sum += pair_hi(t0);
+    sum += pair_lo(t1);
+    sum += pair_hi(t1);
+    sum += pair_lo(t2);
+    sum += pair_hi(t2);
+    sum += pair_lo(t3);
+    sum += pair_hi(t3);
+#else
     sum = corner(coeffs(h00, iz), txty * tz, fx, fy, fz);
     sum += corner(coeffs(h10, iz), sxty * tz, gx, fy, fz);
     sum += corner(coeffs(h01, iz), txsy * tz, fx, gy, fz);
@@ -254,57 +404,64 @@ double noise_value(vec3 p, int generator)
     sum += corner(coeffs(h10, iz + 1), sxty * sz, gx, fy, gz);
     sum += corner(coeffs(h01, iz + 1), txsy * sz, fx, gy, gz);
     sum += corner(coeffs(h11, iz + 1), sxsy * sz, gx, gy, gz);
+#endif
     if (generator == 2) {
         /* Stretch the measured range [-1.05242, 0.988997] to [0, 1]. */
         sum = (sum + 1.05242) * 0.48985582;
     } else {
         sum += 0.5;
     }
-    return fmin(fmax(sum, 0.0), 1.0);
+    return clamp01(sum);
 }
 
-/* Adds the three components of one corner (coefficient blocks 8 apart). */
+
+/* Adds the three components of one corner. The offsets come duplicated
+** (px, py, pz) and as scalars for the z component. */
 /* inline: eight calls per dnoise(), the inner loop of turbulence */
-static inline void dcorner(vec3 *r, const double *mp, double s, double x,
+static inline void dcorner(pair *rxy, double *rz, const struct corner_block *b,
+                           double s, pair px, pair py, pair pz, double x,
                            double y, double z)
 {
-    r->x += corner(mp, s, x, y, z);
-    r->y += corner(mp + 8, s, x, y, z);
-    r->z += corner(mp + 16, s, x, y, z);
+    pair t = pair_add(pair_load(b->xy[0]), pair_mul(pair_load(b->xy[1]), px));
+    t = pair_add(t, pair_mul(pair_load(b->xy[2]), py));
+    t = pair_add(t, pair_mul(pair_load(b->xy[3]), pz));
+    *rxy = pair_add(*rxy, pair_mul(pair_dup(s), t));
+    *rz += s * (b->z[0] + b->z[1] * x + b->z[2] * y + b->z[3] * z);
 }
 
 
-vec3 noise_vector(vec3 p)
-{
-    noise_init();
-    return dnoise(p);
-}
-
-/* The vector noise proper; the tables must be built. */
-static vec3 dnoise(vec3 p)
+/* The vector noise proper; the tables must be built. Inline for the
+** octave loop of noise_dturbulence(). */
+static inline vec3 dnoise(vec3 p)
 {
     p = safe_point(p);
-    int ix, iy, iz;
-    double fx, fy, fz;
-    lattice(p.x, &ix, &fx);
-    lattice(p.y, &iy, &fy);
-    lattice(p.z, &iz, &fz);
-    double gx = fx - 1, gy = fy - 1, gz = fz - 1;
-    double sx = scurve(fx), sy = scurve(fy), sz = scurve(fz);
-    double tx = 1 - sx, ty = 1 - sy, tz = 1 - sz;
-    double txty = tx * ty, sxty = sx * ty, txsy = tx * sy, sxsy = sx * sy;
+    struct cell c;
+    cell_setup(p, &c);
+    const int ix = c.ix, iy = c.iy, iz = c.iz;
+    const double fx = c.fx, fy = c.fy, fz = c.fz, gx = c.gx, gy = c.gy,
+                 gz = c.gz;
+    const double sz = c.sz, tz = c.tz, txty = c.txty, sxty = c.sxty,
+                 txsy = c.txsy, sxsy = c.sxsy;
     int h00 = hash2d(ix, iy), h10 = hash2d(ix + 1, iy);
     int h01 = hash2d(ix, iy + 1), h11 = hash2d(ix + 1, iy + 1);
-    vec3 r = v3(0, 0, 0);
-    dcorner(&r, coeffs(h00, iz), txty * tz, fx, fy, fz);
-    dcorner(&r, coeffs(h10, iz), sxty * tz, gx, fy, fz);
-    dcorner(&r, coeffs(h11, iz), sxsy * tz, gx, gy, fz);
-    dcorner(&r, coeffs(h01, iz), txsy * tz, fx, gy, fz);
-    dcorner(&r, coeffs(h01, iz + 1), txsy * sz, fx, gy, gz);
-    dcorner(&r, coeffs(h11, iz + 1), sxsy * sz, gx, gy, gz);
-    dcorner(&r, coeffs(h10, iz + 1), sxty * sz, gx, fy, gz);
-    dcorner(&r, coeffs(h00, iz + 1), txty * sz, fx, fy, gz);
-    return r;
+    pair pfx = pair_dup(fx), pgx = pair_dup(gx), pfy = pair_dup(fy);
+    pair pgy = pair_dup(gy), pfz = pair_dup(fz), pgz = pair_dup(gz);
+    /* Sums start from zero as POV-Ray's do (0 + -0 is +0). */
+    pair rxy = pair_zero();
+    double rz = 0;
+    dcorner(&rxy, &rz, coeffs(h00, iz), txty * tz, pfx, pfy, pfz, fx, fy, fz);
+    dcorner(&rxy, &rz, coeffs(h10, iz), sxty * tz, pgx, pfy, pfz, gx, fy, fz);
+    dcorner(&rxy, &rz, coeffs(h11, iz), sxsy * tz, pgx, pgy, pfz, gx, gy, fz);
+    dcorner(&rxy, &rz, coeffs(h01, iz), txsy * tz, pfx, pgy, pfz, fx, gy, fz);
+    dcorner(&rxy, &rz, coeffs(h01, iz + 1), txsy * sz, pfx, pgy, pgz, fx, gy,
+            gz);
+    dcorner(&rxy, &rz, coeffs(h11, iz + 1), sxsy * sz, pgx, pgy, pgz, gx, gy,
+            gz);
+    dcorner(&rxy, &rz, coeffs(h10, iz + 1), sxty * sz, pgx, pfy, pgz, gx, fy,
+            gz);
+    dcorner(&rxy, &rz, coeffs(h00, iz + 1), txty * sz, pfx, pfy, pgz, fx, fy,
+            gz);
+    return v3(pair_lo(rxy), pair_hi(rxy), rz);
 }
 
 /* Splits one coordinate for the gradient noise. */
@@ -353,11 +510,17 @@ static double gradient_noise(vec3 p)
     return lerp(sz, c, d);
 }
 
+vec3 noise_vector(vec3 p)
+{
+    noise_init();
+    return dnoise(p);
+}
+
 double noise_turbulence(vec3 p, const struct noise_turb *t, int generator)
 {
     /* Generators 2 and 3 are re-centred octave by octave, as POV-Ray does. */
     double value = generator > 1
-        ? fmin(fmax(2.0 * noise_value(p, generator) - 0.5, 0.0), 1.0)
+        ? clamp01(2.0 * noise_value(p, generator) - 0.5)
         : noise_value(p, generator);
     double l = t->lambda, o = t->omega;
     for (int i = 2; i <= t->octaves; i++) {
@@ -373,10 +536,11 @@ double noise_turbulence(vec3 p, const struct noise_turb *t, int generator)
 
 vec3 noise_dturbulence(vec3 p, const struct noise_turb *t)
 {
-    vec3 r = noise_vector(p);
+    noise_init();
+    vec3 r = dnoise(p);
     double l = t->lambda, o = t->omega;
     for (int i = 2; i <= t->octaves; i++) {
-        r = v3_madd(r, noise_vector(v3_scale(p, l)), o);
+        r = v3_madd(r, dnoise(v3_scale(p, l)), o);
         if (i < t->octaves) {
             l *= t->lambda;
             o *= t->omega;

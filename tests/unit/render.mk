@@ -5,6 +5,12 @@ TESTS += tests/unit/test_material
 tests_unit_test_material_SOURCES = tests/unit/test_material.c tests/testutil.h
 tests_unit_test_material_CFLAGS = $(TEST_CFLAGS)
 tests_unit_test_material_LDADD = $(TEST_LDADD)
+check_PROGRAMS += tests/unit/test_noise_exact
+TESTS += tests/unit/test_noise_exact
+tests_unit_test_noise_exact_SOURCES = tests/unit/test_noise_exact.c \
+	tests/testutil.h
+tests_unit_test_noise_exact_CFLAGS = $(TEST_CFLAGS)
+tests_unit_test_noise_exact_LDADD = $(TEST_LDADD)
 check_PROGRAMS += tests/unit/test_df3
 TESTS += tests/unit/test_df3
 tests_unit_test_df3_SOURCES = tests/unit/test_df3.c tests/testutil.h
