@@ -63,6 +63,7 @@
 #include "photon/pmap.h"
 
 #include <math.h>
+#include <pthread.h>
 #include <stdatomic.h>
 #include <stdio.h>
 #include <stdint.h>
@@ -879,15 +880,69 @@ static void shoot_batch(void *ctx, int64_t item, int thread)
         atomic_store(&s->over_budget, true);
 }
 
-/* Frees the wavefront tracer and the lanes (none: nothing). */
+/*
+** A thread's lanes (its wf_state and wf_run, about 1 MB together) kept
+** between passes: a progressive render shoots a map every pass, and fresh
+** lanes each time cost some 290 page faults a pass at 2 threads (the
+** kernel hands out new zero pages on their first touch; bench/scaling.sh
+** at 8 passes: 7,700 -> 5,100 in all), kernel time that made 2 threads
+** use more CPU than 1 (issue 8). A stack
+** of up to WF_KEEP spare pairs, taken by wf_setup and given back by
+** wf_teardown; a shoot running alongside another takes fresh ones when
+** the stack is empty. Nothing in the lanes outlives a run: wf_trace
+** writes every lane it reads (emit() lays out each run; lanes past a
+** run's end are masked off), so reused lanes give the same map.
+*/
+#define WF_KEEP 16
+static pthread_mutex_t wf_keep_mu = PTHREAD_MUTEX_INITIALIZER;
+static struct wf_state *wf_keep_st[WF_KEEP];
+static struct wf_run *wf_keep_run[WF_KEEP];
+static int wf_n_keep;
+
+/* Kept lanes into '*st' and '*run', else new ones (NULL on no memory). */
+static void wf_lanes_take(struct wf_state **st, struct wf_run **run)
+{
+    *st = NULL;
+    *run = NULL;
+    pthread_mutex_lock(&wf_keep_mu);
+    if (wf_n_keep > 0) {
+        wf_n_keep--;
+        *st = wf_keep_st[wf_n_keep];
+        *run = wf_keep_run[wf_n_keep];
+    }
+    pthread_mutex_unlock(&wf_keep_mu);
+    if (!*st) {
+        *st = wf_state_new();
+        *run = iris_malloc(sizeof **run);
+    }
+}
+
+/* Lanes back to the stack, or freed when it is full or one is missing. */
+static void wf_lanes_give(struct wf_state *st, struct wf_run *run)
+{
+    bool kept = false;
+    if (st && run) {
+        pthread_mutex_lock(&wf_keep_mu);
+        if (wf_n_keep < WF_KEEP) {
+            wf_keep_st[wf_n_keep] = st;
+            wf_keep_run[wf_n_keep] = run;
+            wf_n_keep++;
+            kept = true;
+        }
+        pthread_mutex_unlock(&wf_keep_mu);
+    }
+    if (!kept) {
+        wf_state_free(st);
+        iris_free(run);
+    }
+}
+
+/* Frees the wavefront tracer; the lanes back to the stack (none: nothing). */
 static void wf_teardown(struct shoot *s)
 {
-    for (int t = 0; t < s->wf_threads; t++) {
-        if (s->wf_st)
-            wf_state_free(s->wf_st[t]);
-        if (s->wf_run)
-            iris_free(s->wf_run[t]);
-    }
+    for (int t = 0; t < s->wf_threads; t++)
+        wf_lanes_give(s->wf_st ? s->wf_st[t] : NULL,
+                      s->wf_run ? s->wf_run[t] : NULL);
     iris_free(s->wf_st);
     iris_free(s->wf_run);
     wf_destroy(s->wf);
@@ -953,8 +1008,7 @@ static void wf_setup(struct shoot *s)
     s->wf_run = iris_calloc((size_t)nt, sizeof *s->wf_run);
     ok = s->wf_st && s->wf_run;
     for (int t = 0; ok && t < nt; t++) {
-        s->wf_st[t] = wf_state_new();
-        s->wf_run[t] = iris_malloc(sizeof *s->wf_run[t]);
+        wf_lanes_take(&s->wf_st[t], &s->wf_run[t]);
         ok = s->wf_st[t] && s->wf_run[t];
     }
     if (!ok) { /* no memory for the lanes: the scalar tracer */
