@@ -555,6 +555,11 @@ int noise_hash_entry(int i)
     return hash_table[i & 0x1fff];
 }
 
+double noise_coefficient(int i)
+{
+    return i >= 0 && i < 267 ? rtable_values[i] : 0.0;
+}
+
 int noise_hash3d(int a, int b, int c)
 {
     noise_init();

@@ -41,6 +41,11 @@ vec3 noise_dturbulence(vec3 p, const struct noise_turb *t);
 /* Entry 'i' (0..8191) of POV-Ray's noise hash table (AA jitter uses it). */
 int noise_hash_entry(int i);
 
+/* POV-Ray's random noise coefficient 'i' (0..266; RTable's values, before
+** this module regroups them), for tests that rebuild the noise the plain
+** way. 0 outside the range. */
+double noise_coefficient(int i);
+
 /* POV-Ray's Hash3d over the noise hash table, for cells and crackle. */
 int noise_hash3d(int a, int b, int c);
 

@@ -46,13 +46,13 @@ tests_unit_test_psib_LDADD = $(TEST_LDADD)
 check_PROGRAMS += tests/unit/test_pwave
 TESTS += tests/unit/test_pwave
 tests_unit_test_pwave_SOURCES = tests/unit/test_pwave.c \
-	tests/unit/parse_util.h tests/testutil.h
+	tests/unit/parse_util.h tests/unit/scene_world.h tests/testutil.h
 tests_unit_test_pwave_CFLAGS = $(TEST_CFLAGS)
 tests_unit_test_pwave_LDADD = $(TEST_LDADD)
 # the wavefront lanes kept between passes (shoot.c), own program
 check_PROGRAMS += tests/unit/test_wflanes
 TESTS += tests/unit/test_wflanes
 tests_unit_test_wflanes_SOURCES = tests/unit/test_wflanes.c \
-	tests/unit/parse_util.h tests/testutil.h
+	tests/unit/parse_util.h tests/unit/scene_world.h tests/testutil.h
 tests_unit_test_wflanes_CFLAGS = $(TEST_CFLAGS)
 tests_unit_test_wflanes_LDADD = $(TEST_LDADD)

@@ -48,6 +48,7 @@
 #include "accel/accel.h"
 #include "material/material.h"
 #include "parse_util.h"
+#include "scene_world.h"
 #include "photon/pmap.h"
 #include "photon/wavefront.h"
 
@@ -267,30 +268,6 @@ static const char *const HUGE_GROUND =
     "sphere { <0, 2.5, 0>, 1 pigment { color rgbf <1, 1, 1, 1> }\n"
     "  finish { ambient 0 diffuse 0 } interior { ior 1.5 }\n"
     "  photons { target refraction on reflection on collect off } }\n";
-
-struct world {
-    iris_scene *sc;
-    struct accel *a;
-    struct mat_ctx *mc;
-};
-
-static void world_open(struct world *w, const char *sdl)
-{
-    w->sc = pt_scene_with(sdl, NULL);
-    w->a = NULL;
-    char err[256];
-    assert_int_equal(accel_build(w->sc, &w->a, stderr, err, sizeof err),
-                     IRIS_OK);
-    w->mc = NULL;
-    assert_int_equal(mat_ctx_create(w->sc, stderr, &w->mc), IRIS_OK);
-}
-
-static void world_close(struct world *w)
-{
-    mat_ctx_destroy(w->mc);
-    accel_destroy(w->a);
-    iris_scene_destroy(w->sc);
-}
 
 /* The caustic map of 'w', by the wavefront tracer unless 'scalar'. */
 static struct photon_map *build_pass(const struct world *w, bool scalar,

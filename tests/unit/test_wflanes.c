@@ -26,6 +26,7 @@
 #include "accel/accel.h"
 #include "material/material.h"
 #include "parse_util.h"
+#include "scene_world.h"
 #include "photon/pmap.h"
 
 /* bench/caustic_ball.pov, as in test_pwave.c */
@@ -77,30 +78,6 @@ static void *count_realloc(void *p, size_t n)
     if (n >= LANE_MIN)
         __atomic_add_fetch(&n_big, 1, __ATOMIC_RELAXED);
     return realloc(p, n);
-}
-
-struct world {
-    iris_scene *sc;
-    struct accel *a;
-    struct mat_ctx *mc;
-};
-
-static void world_open(struct world *w, const char *sdl)
-{
-    w->sc = pt_scene_with(sdl, NULL);
-    w->a = NULL;
-    char err[256];
-    assert_int_equal(accel_build(w->sc, &w->a, stderr, err, sizeof err),
-                     IRIS_OK);
-    w->mc = NULL;
-    assert_int_equal(mat_ctx_create(w->sc, stderr, &w->mc), IRIS_OK);
-}
-
-static void world_close(struct world *w)
-{
-    mat_ctx_destroy(w->mc);
-    accel_destroy(w->a);
-    iris_scene_destroy(w->sc);
 }
 
 static struct photon_map *shoot(const struct world *w, int threads,
