@@ -192,6 +192,19 @@ struct wf_state {
     int32_t last[WF_LANES], inside[WF_LANES], chroma[WF_LANES];
 };
 
+/* A 32-bit integer hash (the "lowbias32" constants of C. Wellons'
+** hash-prospector, bias ~0.17), one body for a scalar (hash1: the seed
+** mix) and for the kernels' lanes (hash: the counter-based random
+** numbers); 'x' is a uint32_t or a vector of them. */
+#define WF_LOWBIAS32(x)                                                   \
+    do {                                                                  \
+        (x) ^= (x) >> 16;                                                 \
+        (x) *= 0x7feb352dU;                                               \
+        (x) ^= (x) >> 15;                                                 \
+        (x) *= 0x846ca68bU;                                               \
+        (x) ^= (x) >> 16;                                                 \
+    } while (0)
+
 static uint32_t hash1(uint32_t x);
 
 /* The lanes, 8 and 4 wide (wf_kernel.h). */
@@ -206,15 +219,10 @@ static uint32_t hash1(uint32_t x);
 #undef WF_W
 #undef WF_NAME
 
-/* A 32-bit integer hash (the "lowbias32" constants of C. Wellons'
-** hash-prospector): the seed mix of the lanes' random numbers. */
+/* The seed mix of the lanes' random numbers (WF_LOWBIAS32). */
 static uint32_t hash1(uint32_t x)
 {
-    x ^= x >> 16;
-    x *= 0x7feb352dU;
-    x ^= x >> 15;
-    x *= 0x846ca68bU;
-    x ^= x >> 16;
+    WF_LOWBIAS32(x);
     return x;
 }
 

@@ -179,15 +179,11 @@ AI unsigned bits(vi m)
     return b;
 }
 
-/* A 32-bit integer hash (the "lowbias32" constants of C. Wellons'
-** hash-prospector, bias ~0.17): the counter-based random numbers. */
+/* The counter-based random numbers' hash, lane by lane (WF_LOWBIAS32,
+** wavefront.c). */
 AI vu hash(vu x)
 {
-    x ^= x >> 16;
-    x *= 0x7feb352dU;
-    x ^= x >> 15;
-    x *= 0x846ca68bU;
-    x ^= x >> 16;
+    WF_LOWBIAS32(x);
     return x;
 }
 
