@@ -11,13 +11,15 @@
 **        8     4        uint32 version (PHOTON_FILE_VERSION)
 **       12     4        uint32 byte-order mark 0x01020304
 **       16     4        uint32 record size (sizeof(struct pstore_photon))
-**       20     4        uint32 0 (reserved)
+**       20     4        uint32 L, the levels (pstore.h; 0 when n = 0)
 **       24     8        uint64 n, the photons stored
 **       32     8        uint64 photons emitted to build them
-**       40    24        double lo[3], the quantisation box corner
-**       64    24        double step[3], the quantisation steps
-**       88  16·n        the records, in kd-tree order (pstore.h)
-**  88+16·n     8        uint64 FNV-1a hash of every byte before it
+**       40    24        double lo[3], level 0's box corner
+**       64    24        double step[3], level 0's root steps
+**       88  64·L        per level: uint64 begin, uint64 n, double lo[3],
+**                       double step[3] (the cells follow from the records)
+**  88+64·L  16·n        the records, each level's in kd-tree order
+**  ... +16·n    8        uint64 FNV-1a hash of every byte before it
 **
 ** Why each check: the magic and version catch a foreign or older file;
 ** the record size a build whose pstore_photon changed; the exact file
@@ -45,9 +47,11 @@
 #include "util/mem.h"
 #include "util/thread.h"
 
-#define PHOTON_FILE_VERSION 1u
+/* 2: positions over the kd cells of pstore.h (1: over one box) */
+#define PHOTON_FILE_VERSION 2u
 #define PHOTON_FILE_BOM 0x01020304u
 #define PHOTON_FILE_HEADER 88
+#define PHOTON_FILE_LEVEL 64
 static const char MAGIC[8] = { 'I', 'R', 'I', 'S', 'P', 'H', 'O', 'T' };
 
 /* The kd axis lives in bits 60..61 of 'pos' (pstore.h); 62..63 are 0. */
@@ -106,6 +110,39 @@ static void header_unpack(const unsigned char b[88], struct header *h)
     memcpy(h->step, b + 64, 24);
 }
 
+/* A level's 64 bytes (the records' range and its box). */
+static void level_pack(const struct pstore_level *l,
+                       unsigned char b[PHOTON_FILE_LEVEL])
+{
+    uint64_t begin = l->begin, n = l->n;
+    memcpy(b, &begin, 8);
+    memcpy(b + 8, &n, 8);
+    memcpy(b + 16, l->lo, 24);
+    memcpy(b + 40, l->step, 24);
+}
+
+/* Unpacks a level; returns false if it does not fit the store of 'n'
+** records after the levels before it ('*next', the first record not yet
+** covered) or its box is not finite. */
+static bool level_unpack(const unsigned char b[PHOTON_FILE_LEVEL],
+                         struct pstore_level *l, uint64_t n, uint64_t *next)
+{
+    uint64_t begin, cnt;
+    memcpy(&begin, b, 8);
+    memcpy(&cnt, b + 8, 8);
+    memcpy(l->lo, b + 16, 24);
+    memcpy(l->step, b + 40, 24);
+    if (begin != *next || cnt == 0 || cnt > n - begin)
+        return false;
+    for (int a = 0; a < 3; a++)
+        if (!isfinite(l->lo[a]) || !isfinite(l->step[a]) || l->step[a] < 0)
+            return false;
+    l->begin = (size_t)begin;
+    l->n = (size_t)cnt;
+    *next = begin + cnt;
+    return true;
+}
+
 enum iris_status photon_file_save(const struct photon_map *m, long long shot,
                                   const char *path, char *err, size_t errlen)
 {
@@ -116,17 +153,23 @@ enum iris_status photon_file_save(const struct photon_map *m, long long shot,
     h.record = (uint32_t)sizeof(struct pstore_photon);
     h.shot = shot > 0 ? (uint64_t)shot : 0;
     const struct pstore_photon *ph = NULL;
+    unsigned char lv[PSTORE_LEVELS][PHOTON_FILE_LEVEL];
     if (m && m->store.n > 0) {
         h.n = (uint64_t)m->store.n;
         ph = m->store.ph;
         memcpy(h.lo, m->store.lo, sizeof h.lo);
         memcpy(h.step, m->store.step, sizeof h.step);
+        h.reserved = (uint32_t)m->store.n_levels;
+        for (int l = 0; l < m->store.n_levels; l++)
+            level_pack(&m->store.level[l], lv[l]);
     }
     unsigned char b[PHOTON_FILE_HEADER];
     header_pack(&h, b);
     struct fnv f;
     fnv_init(&f);
     fnv_add(&f, b, sizeof b);
+    if (h.reserved)
+        fnv_add(&f, lv, h.reserved * (size_t)PHOTON_FILE_LEVEL);
     if (ph)
         fnv_add(&f, ph, (size_t)h.n * sizeof *ph);
     /* written whole or not at all: a temporary file, then renamed */
@@ -140,6 +183,8 @@ enum iris_status photon_file_save(const struct photon_map *m, long long shot,
     FILE *fp = fopen(tmp, "wb");
     int e = fp ? 0 : errno;
     bool ok = fp && fwrite(b, sizeof b, 1, fp) == 1 &&
+              (!h.reserved ||
+               fwrite(lv, PHOTON_FILE_LEVEL, h.reserved, fp) == h.reserved) &&
               (!ph || fwrite(ph, sizeof *ph, (size_t)h.n, fp) == h.n) &&
               fwrite(&f.h, sizeof f.h, 1, fp) == 1;
     if (fp && !ok)
@@ -192,17 +237,35 @@ static enum iris_status read_store(const char *path, struct pstore *s,
         if (h.bom != PHOTON_FILE_BOM)
             why = "written on a machine of another byte order";
         else if (h.version != PHOTON_FILE_VERSION)
-            why = "another version of the format (this iris reads 1)";
+            why = "another version of the format (this iris reads 2)";
         else if (h.record != sizeof(struct pstore_photon))
             why = "another photon record size (this iris uses 16 bytes)";
-        else if (h.n > (uint64_t)(size - PHOTON_FILE_HEADER - 8) / h.record ||
-                 (long long)(PHOTON_FILE_HEADER + 8 + h.n * h.record) != size)
-            why = size < (long long)(PHOTON_FILE_HEADER + 8 + h.n * h.record)
-                      ? "truncated (fewer photons than its header says)"
-                      : "longer than its header says";
+        else if (h.reserved > PSTORE_LEVELS || (h.reserved == 0) != (h.n == 0))
+            why = "damaged header (its number of levels)";
+        else {
+            long long fixed = PHOTON_FILE_HEADER + 8 +
+                              (long long)h.reserved * PHOTON_FILE_LEVEL;
+            if (size < fixed ||
+                h.n > (uint64_t)(size - fixed) / h.record ||
+                (long long)(fixed + h.n * h.record) != size)
+                why = size < (long long)(fixed + h.n * h.record)
+                          ? "truncated (fewer photons than its header says)"
+                          : "longer than its header says";
+        }
         for (int a = 0; a < 3 && !why; a++)
             if (!isfinite(h.lo[a]) || !isfinite(h.step[a]) || h.step[a] < 0)
                 why = "damaged header (a non-finite box)";
+    }
+    unsigned char lv[PSTORE_LEVELS][PHOTON_FILE_LEVEL];
+    if (!why && h.reserved > 0) {
+        if (fread(lv, PHOTON_FILE_LEVEL, h.reserved, fp) != h.reserved)
+            why = "truncated (a read failed)";
+        uint64_t next = 0;
+        for (uint32_t l = 0; l < h.reserved && !why; l++)
+            if (!level_unpack(lv[l], &s->level[l], h.n, &next))
+                why = "damaged header (a level's range or box)";
+        if (!why && next != h.n)
+            why = "damaged header (the levels do not cover the photons)";
     }
     if (!why && h.n > 0) {
         s->ph = iris_malloc((size_t)h.n * sizeof *s->ph);
@@ -223,6 +286,8 @@ static enum iris_status read_store(const char *path, struct pstore *s,
         struct fnv f;
         fnv_init(&f);
         fnv_add(&f, b, sizeof b);
+        if (h.reserved > 0)
+            fnv_add(&f, lv, h.reserved * (size_t)PHOTON_FILE_LEVEL);
         if (h.n > 0)
             fnv_add(&f, s->ph, (size_t)h.n * sizeof *s->ph);
         if (f.h != hash)
@@ -238,8 +303,15 @@ static enum iris_status read_store(const char *path, struct pstore *s,
         return IRIS_EIO;
     }
     s->n = (size_t)h.n;
+    s->n_levels = (int)h.reserved;
     memcpy(s->lo, h.lo, sizeof s->lo);
     memcpy(s->step, h.step, sizeof s->step);
+    if (pstore_index_cells(s) != IRIS_OK) {
+        pstore_fini(s);
+        snprintf(err, errlen, "%s: out of memory for %llu photons", path,
+                 (unsigned long long)h.n);
+        return IRIS_ENOMEM;
+    }
     *shot = h.shot;
     return IRIS_OK;
 }
@@ -291,7 +363,7 @@ enum iris_status photon_file_load(const iris_scene *scene,
     }
     st.shot = (int64_t)shot;
     st.stored = (int64_t)m->store.n;
-    st.bytes += (int64_t)(m->store.n * sizeof(struct pstore_photon));
+    st.bytes += (int64_t)pstore_bytes(&m->store);
     st.gather_radius = m->radius;
     st.seconds_shoot = t1 - t0; /* the read */
     if (stats)

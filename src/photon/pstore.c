@@ -303,38 +303,34 @@ static void sort_floats(float *v, size_t m, uint32_t *tmp_a, uint32_t *tmp_b)
 }
 
 /*
-** The quantisation box. 20 bits over the box of ALL photons fail when a
-** few photons fly far: a photon reflected almost horizontally onto an
+** A level's box (pstore.h). 20 bits over the box of ALL photons fail when
+** a few photons fly far: a photon reflected almost horizontally onto an
 ** infinite floor lands kilometres away, and the box of a 2-unit caustic
-** then has 5 cm steps, wider than the gather radius (the estimate shows
-** the grid's rows). The box is therefore the core of the photons - the
-** quantiles (below) of each axis over up to 4096 evenly spaced
-** photons - widened on every side by 4 times the core's largest extent E,
-** and the photons outside it are dropped: they lie far from where the
-** photons are, where their density is negligible. A step is then at most
-** 9E/2^20, 1e-5 of the core.
+** then has centimetre steps, wider than the photons' spacing. The box is
+** therefore the core of the photons - the quantiles (below) of each axis
+** over up to 4096 evenly spaced photons - widened on every side by the
+** core's largest extent E; the photons outside it make the next level.
 ** Which quantiles. The strays of a hidden object can be many: a 1e6
 ** sphere around a caustic scene (thin.pov with SKY=1 in tests/stability)
-** catches 1.1-4% of the stored photons; inside the core, they made the
-** steps 2-9 units wide and the whole caustic merged into a few grid
-** points (PSNR 12-16 dB against the scene without the sphere). But a
-** genuine sparse part must stay: a focus holding 85% of the photons and a
-** floor lit by the other 15% over 1000 times its size. Strays are far
-** beyond the scene, genuine parts are not: the smallest trim among 0.1%,
-** 0.5%, 2%, 5%, 10% and 25% whose box is at most 1e4 times as wide as the
-** middle half's is taken (its steps are then at most ~1e-3 of the middle
-** half's extent). A small map trims at least MIN_TRIM samples on each
-** side (5% of them below 160).
+** catches 1.1-4% of the stored photons. A sparse part (a floor lit by 15%
+** of the photons over 1000 times the focus's size) is as well served by a
+** level of its own. So the smallest trim among 0.1%, 0.5%, 2%, 5%, 10%
+** and 25% whose box is at most SPREAD_MAX times as wide as the middle
+** half's is taken: a level's root steps are then at most ~3·SPREAD_MAX /
+** 2^20 of its middle half's extent. A small map trims at least MIN_TRIM
+** samples on each side (5% of them below 160).
 */
+#define SPREAD_MAX 64.0
+
 static void robust_box(const struct pstore_raw *raw, size_t n, double lo[3],
-                       double hi[3])
+                       double hi[3], bool whole)
 {
     enum { SAMPLES = ROBUST_SAMPLES };
     /* trims tried, smallest first, and how far beyond the 25%-75% box the
     ** trimmed box may reach */
     static const double trims[] = { 0.001, 0.005, 0.02, 0.05, 0.10, 0.25 };
     enum { N_TRIMS = sizeof trims / sizeof trims[0] };
-    const double spread_max = 1e4;
+    const double spread_max = SPREAD_MAX;
     size_t m = n < SAMPLES ? n : SAMPLES;
     static _Thread_local float buf[3][SAMPLES];
     static _Thread_local uint32_t keys[2][SAMPLES];
@@ -361,6 +357,8 @@ static void robust_box(const struct pstore_raw *raw, size_t n, double lo[3],
             if (v > hi[a])
                 hi[a] = v;
         }
+    if (whole) /* the last level: the box of all */
+        return;
     for (int a = 0; a < 3; a++) {
         for (size_t i = 0; i < m; i++)
             buf[a][i] = raw[i * n / m].p[a];
@@ -376,8 +374,8 @@ static void robust_box(const struct pstore_raw *raw, size_t n, double lo[3],
                 break;
     double e = ext[pick] > 0.0 ? ext[pick] : 1.0;
     for (int a = 0; a < 3; a++) {
-        lo[a] = fmax(lo[a], (double)buf[a][cut[pick]] - 4.0 * e);
-        hi[a] = fmin(hi[a], (double)buf[a][m - 1 - cut[pick]] + 4.0 * e);
+        lo[a] = fmax(lo[a], (double)buf[a][cut[pick]] - e);
+        hi[a] = fmin(hi[a], (double)buf[a][m - 1 - cut[pick]] + e);
     }
 }
 
@@ -387,14 +385,143 @@ enum iris_status pstore_build(struct pstore *s, struct pstore_raw *raw,
     return pstore_build_mt(s, raw, n, 1);
 }
 
-/* The packed record of raw photon 'r' whose kd split axis is 'axis'. */
-static struct pstore_photon pack(const struct pstore *s,
+/* ---- levels and cells (pstore.h) ---- */
+
+/* Cells of at least this many photons; at most this deep (511 cells,
+** 24 kB a level: by 8 levels the kd cuts have bounded every side of the
+** cells where photons crowd, so deeper cells would add little). */
+#define CELL_MIN 1024
+#define CELL_DEPTH_MAX 8
+
+static int cell_depth(size_t n)
+{
+    int d = 0;
+    while (d < CELL_DEPTH_MAX && (n >> (d + 1)) >= CELL_MIN)
+        d++;
+    return d;
+}
+
+/* The level of record 'i'. */
+static inline const struct pstore_level *level_of(const struct pstore *s,
+                                                  size_t i)
+{
+    int l = 0;
+    while (l + 1 < s->n_levels && i >= s->level[l + 1].begin)
+        l++;
+    return &s->level[l];
+}
+
+/* The heap number of the cell record 'i' (counted from the level's first)
+** is quantised over: its own node if it is a median of the top
+** lv->depth levels, else its depth-'depth' ancestor. */
+static size_t cell_of(const struct pstore_level *lv, size_t i)
+{
+    size_t node = 1, lo = 0, hi = lv->n;
+    for (int d = 0; d < lv->depth; d++) {
+        size_t mid = lo + (hi - lo) / 2;
+        if (i == mid)
+            return node;
+        if (i < mid) {
+            hi = mid;
+            node = 2 * node;
+        } else {
+            lo = mid + 1;
+            node = 2 * node + 1;
+        }
+    }
+    return node;
+}
+
+/*
+** Fills the cells of node 'node' (depth d, the level's records [lo, hi))
+** and below, from the cell [mn, mx]. The median's quantised coordinate
+** comes from 'raw' while building (the records are packed after) or from
+** the records 'ph' of a loaded map: the same number either way, so a
+** loaded map's cells are the built map's. raw, axes and ph start at the
+** level's first record.
+*/
+static void fill_cells(struct pstore_level *lv, const struct pstore_raw *raw,
+                       const uint8_t *axes, const struct pstore_photon *ph,
+                       size_t node, int d, size_t lo, size_t hi,
+                       const double mn[3], const double mx[3])
+{
+    struct pstore_cell *c = &lv->cells[node];
+    for (int a = 0; a < 3; a++) {
+        c->lo[a] = mn[a];
+        c->step[a] = (mx[a] - mn[a]) / QMAX;
+    }
+    if (d == lv->depth)
+        return;
+    double lmx[3] = { mx[0], mx[1], mx[2] };
+    double rmn[3] = { mn[0], mn[1], mn[2] };
+    size_t mid = lo + (hi - lo) / 2;
+    if (hi > lo) {
+        unsigned axis = raw ? axes[mid]
+                            : (unsigned)((ph[mid].pos >> AXIS_SHIFT) & 3);
+        uint64_t q = raw ? quantise(raw[mid].p[axis], c->lo[axis],
+                                    c->step[axis])
+                         : (ph[mid].pos >> (axis * QBITS)) & QMAX;
+        double cut = c->lo[axis] + (double)q * c->step[axis];
+        /* one step of slack: the stored cut is the true one rounded */
+        lmx[axis] = fmin(mx[axis], cut + c->step[axis]);
+        rmn[axis] = fmax(mn[axis], cut - c->step[axis]);
+    } else {
+        mid = lo; /* empty: both children empty */
+    }
+    fill_cells(lv, raw, axes, ph, 2 * node, d + 1, lo, mid, mn, lmx);
+    fill_cells(lv, raw, axes, ph, 2 * node + 1, d + 1,
+               hi > lo ? mid + 1 : lo, hi, rmn, mx);
+}
+
+/* Sets lv->depth and lv->cells (lv->begin, n, lo and step set). */
+static enum iris_status make_cells(struct pstore_level *lv,
+                                   const struct pstore_raw *raw,
+                                   const uint8_t *axes,
+                                   const struct pstore_photon *ph)
+{
+    iris_free(lv->cells);
+    lv->depth = cell_depth(lv->n);
+    lv->cells = iris_malloc(((size_t)2 << lv->depth) * sizeof *lv->cells);
+    if (!lv->cells)
+        return IRIS_ENOMEM;
+    double mn[3], mx[3];
+    for (int a = 0; a < 3; a++) {
+        mn[a] = lv->lo[a];
+        mx[a] = lv->lo[a] + lv->step[a] * QMAX;
+    }
+    memset(&lv->cells[0], 0, sizeof lv->cells[0]);
+    fill_cells(lv, raw, axes, ph, 1, 0, 0, lv->n, mn, mx);
+    return IRIS_OK;
+}
+
+enum iris_status pstore_index_cells(struct pstore *s)
+{
+    for (int l = 0; l < s->n_levels; l++) {
+        struct pstore_level *lv = &s->level[l];
+        if (make_cells(lv, NULL, NULL, s->ph + lv->begin) != IRIS_OK)
+            return IRIS_ENOMEM;
+    }
+    return IRIS_OK;
+}
+
+size_t pstore_bytes(const struct pstore *s)
+{
+    size_t b = s->n * sizeof *s->ph;
+    for (int l = 0; l < s->n_levels; l++)
+        if (s->level[l].cells)
+            b += ((size_t)2 << s->level[l].depth) * sizeof(struct pstore_cell);
+    return b;
+}
+
+/* The packed record of raw photon 'r' whose kd split axis is 'axis',
+** quantised over cell 'c'. */
+static struct pstore_photon pack(const struct pstore_cell *c,
                                  const struct pstore_raw *r, unsigned axis)
 {
     struct pstore_photon ph;
-    ph.pos = quantise(r->p[0], s->lo[0], s->step[0]) |
-             quantise(r->p[1], s->lo[1], s->step[1]) << QBITS |
-             quantise(r->p[2], s->lo[2], s->step[2]) << (2 * QBITS) |
+    ph.pos = quantise(r->p[0], c->lo[0], c->step[0]) |
+             quantise(r->p[1], c->lo[1], c->step[1]) << QBITS |
+             quantise(r->p[2], c->lo[2], c->step[2]) << (2 * QBITS) |
              (uint64_t)axis << AXIS_SHIFT;
     /* 65535 is reserved for white photons (raw lambda < 0) */
     double lq = (r->lambda - SPEC_LAMBDA_MIN) / SPEC_LAMBDA_RANGE * 65534.0;
@@ -435,7 +562,9 @@ static void pack_range(const struct pack_job *j, size_t lo, size_t hi)
     for (size_t i = lo; i < hi; i++) {
         struct pstore_raw r;
         memcpy(&r, &j->raw[i], sizeof r); /* before ph[i] may cover it */
-        j->ph[i] = pack(j->s, &r, j->axes[i]);
+        const struct pstore_level *lv = level_of(j->s, i);
+        j->ph[i] = pack(&lv->cells[cell_of(lv, i - lv->begin)], &r,
+                        j->axes[i]);
     }
 }
 
@@ -491,25 +620,58 @@ static enum iris_status build(struct pstore *s, struct pstore_raw *raw,
         iris_free(in_place ? (void *)raw : (void *)ph);
         return IRIS_ENOMEM;
     }
-    double mn[3], mx[3];
-    robust_box(raw, n, mn, mx);
+    /* non-finite positions cannot be placed: left out */
     size_t kept = 0;
-    for (size_t i = 0; i < n; i++) {
-        bool in = true;
-        for (int a = 0; a < 3; a++)
-            in = in && raw[i].p[a] >= mn[a] && raw[i].p[a] <= mx[a];
-        if (in)
+    for (size_t i = 0; i < n; i++)
+        if (isfinite(raw[i].p[0]) && isfinite(raw[i].p[1]) &&
+            isfinite(raw[i].p[2]))
             raw[kept++] = raw[i];
-    }
     s->n_dropped = n - kept;
     n = kept;
-    for (int a = 0; a < 3; a++) {
-        s->lo[a] = mn[a];
-        s->step[a] = (mx[a] - mn[a]) / QMAX;
+    s->n = n;
+    /* the levels: each the photons inside the box of the bulk of those
+    ** left, the last all that remain */
+    for (size_t begin = 0; begin < n; s->n_levels++) {
+        struct pstore_raw *r = raw + begin;
+        size_t m = n - begin, k = 0;
+        double mn[3], mx[3];
+        robust_box(r, m, mn, mx, s->n_levels == PSTORE_LEVELS - 1);
+        /* those inside first (a deterministic partition) */
+        for (size_t i = 0, j = m; i < j;) {
+            bool in = true;
+            for (int a = 0; a < 3; a++)
+                in = in && r[i].p[a] >= mn[a] && r[i].p[a] <= mx[a];
+            if (in)
+                i++, k++;
+            else
+                swap_raw(r, i, --j);
+        }
+        if (k == 0) { /* cannot happen (the box holds its quantiles) */
+            robust_box(r, m, mn, mx, true);
+            k = m;
+        }
+        struct pstore_level *lv = &s->level[s->n_levels];
+        lv->begin = begin;
+        lv->n = k;
+        for (int a = 0; a < 3; a++) {
+            lv->lo[a] = mn[a];
+            lv->step[a] = (mx[a] - mn[a]) / QMAX;
+        }
+        if (threads <= 1 || k < PAR_MIN_PHOTONS ||
+            !build_par(r, axes + begin, k, mn, mx, threads))
+            build_rec(r, axes + begin, 0, k, mn, mx);
+        if (make_cells(lv, r, axes + begin, NULL) != IRIS_OK) {
+            iris_free(axes);
+            iris_free(in_place ? (void *)raw : (void *)ph);
+            pstore_fini(s);
+            return IRIS_ENOMEM;
+        }
+        begin += k;
     }
-    if (threads <= 1 || n < PAR_MIN_PHOTONS ||
-        !build_par(raw, axes, n, mn, mx, threads))
-        build_rec(raw, axes, 0, n, mn, mx);
+    if (s->n_levels > 0) {
+        memcpy(s->lo, s->level[0].lo, sizeof s->lo);
+        memcpy(s->step, s->level[0].step, sizeof s->step);
+    }
     pack_all(s, raw, ph, axes, n, threads);
     iris_free(axes);
     if (in_place && n > 0) {
@@ -542,18 +704,22 @@ enum iris_status pstore_build_in_place(struct pstore *s,
 void pstore_fini(struct pstore *s)
 {
     iris_free(s->ph);
+    for (int l = 0; l < PSTORE_LEVELS; l++)
+        iris_free(s->level[l].cells);
     memset(s, 0, sizeof *s);
 }
 
-static inline double coord(const struct pstore *s, uint64_t pos, int a)
+static inline double coord(const struct pstore_cell *c, uint64_t pos, int a)
 {
-    return s->lo[a] + (double)((pos >> (a * QBITS)) & QMAX) * s->step[a];
+    return c->lo[a] + (double)((pos >> (a * QBITS)) & QMAX) * c->step[a];
 }
 
 vec3 pstore_position(const struct pstore *s, size_t i)
 {
     uint64_t p = s->ph[i].pos;
-    return v3(coord(s, p, 0), coord(s, p, 1), coord(s, p, 2));
+    const struct pstore_level *lv = level_of(s, i);
+    const struct pstore_cell *c = &lv->cells[cell_of(lv, i - lv->begin)];
+    return v3(coord(c, p, 0), coord(c, p, 1), coord(c, p, 2));
 }
 
 double pstore_lambda(const struct pstore *s, size_t i)
@@ -637,31 +803,48 @@ static inline double pos_d2(uint64_t pos, const double q[3],
 #define KNN_PREFETCH(p) ((void)(p))
 #endif
 
-/* The search (see above); returns the number found in 'h'. */
-static int knn_search(const struct pstore *s, const double q[3], int k,
-                      double max_d2, struct pstore_found *h)
+/* The search (see above); returns the number found in 'h'. The query
+** is taken relative to the corner of the cell of the node being visited
+** (pstore.h): the cell changes only in the top s->depth levels. */
+static double knn_search(const struct pstore *s,
+                         const struct pstore_level *lv, const double q[3],
+                         int k, double max_d2, struct pstore_found *h,
+                         int *n_io)
 {
-    const struct pstore_photon *ph = s->ph;
-    const double qq[3] = { q[0], q[1], q[2] };
-    const double step[3] = { s->step[0], s->step[1], s->step[2] };
-    struct { size_t lo, hi; double plane_d2; } stack[KNN_STACK];
-    int sp = 0, n = 0;
+    /* the level's records, indices reported from the store's first */
+    const struct pstore_photon *ph = s->ph + lv->begin;
+    const uint32_t base = (uint32_t)lv->begin;
+    const struct pstore_cell *cells = lv->cells;
+    /* nodes below this heap number have children with cells */
+    const size_t inner = (size_t)1 << lv->depth;
+    struct {
+        size_t lo, hi, node, cell;
+        double plane_d2;
+    } stack[KNN_STACK];
+    int sp = 0, n = *n_io;
     stack[sp].lo = 0;
-    stack[sp].hi = s->n;
+    stack[sp].hi = lv->n;
+    stack[sp].node = 1;
+    stack[sp].cell = 1;
     stack[sp++].plane_d2 = 0.0;
     while (sp > 0) {
         sp--;
         size_t lo = stack[sp].lo, hi = stack[sp].hi;
+        size_t node = stack[sp].node, cell = stack[sp].cell;
         if (!(stack[sp].plane_d2 < max_d2))
             continue;
+        const struct pstore_cell *c = &cells[cell];
+        double qq[3] = { q[0] - c->lo[0], q[1] - c->lo[1], q[2] - c->lo[2] };
+        double step[3] = { c->step[0], c->step[1], c->step[2] };
         while (lo < hi) {
             double d[3];
             if (hi - lo <= KNN_LEAF) {
+                /* no cell boundary in here: cells hold >= CELL_MIN */
                 for (size_t i = lo; i < hi; i++) {
                     double d2 = pos_d2(ph[i].pos, qq, step, d);
                     if (d2 < max_d2)
-                        max_d2 = heap_add(h, &n, k, max_d2, (uint32_t)i,
-                                          d2);
+                        max_d2 = heap_add(h, &n, k, max_d2,
+                                          base + (uint32_t)i, d2);
                 }
                 break;
             }
@@ -669,8 +852,14 @@ static int knn_search(const struct pstore *s, const double q[3], int k,
             uint64_t pos = ph[mid].pos;
             double d2 = pos_d2(pos, qq, step, d);
             if (d2 < max_d2)
-                max_d2 = heap_add(h, &n, k, max_d2, (uint32_t)mid, d2);
+                max_d2 = heap_add(h, &n, k, max_d2, base + (uint32_t)mid,
+                                  d2);
             double da = d[(pos >> AXIS_SHIFT) & 3];
+            /* the children's heap numbers while they have cells, else 0 */
+            size_t nl = node && node < inner ? 2 * node : 0;
+            size_t nr = nl ? nl + 1 : 0;
+            size_t near_node = da < 0.0 ? nl : nr;
+            size_t far_node = da < 0.0 ? nr : nl;
             /* near side now, the far side later (if sp allows: a
             ** deeper tree than KNN_STACK cannot be built). The far
             ** side's median is fetched into the cache meanwhile: it is
@@ -682,15 +871,28 @@ static int knn_search(const struct pstore *s, const double q[3], int k,
                 KNN_PREFETCH(&ph[flo + (fhi - flo) / 2]);
                 stack[sp].plane_d2 = da * da;
                 stack[sp].lo = flo;
-                stack[sp++].hi = fhi;
+                stack[sp].hi = fhi;
+                stack[sp].node = far_node;
+                stack[sp++].cell = far_node ? far_node : cell;
             }
             if (da < 0.0)
                 hi = mid;
             else
                 lo = mid + 1;
+            node = near_node;
+            if (node) {
+                /* a child with its own cell: the query relative to it */
+                cell = node;
+                c = &cells[cell];
+                for (int a = 0; a < 3; a++) {
+                    qq[a] = q[a] - c->lo[a];
+                    step[a] = c->step[a];
+                }
+            }
         }
     }
-    return n;
+    *n_io = n;
+    return max_d2;
 }
 
 int pstore_knn(const struct pstore *s, vec3 q, int k, double max_d2,
@@ -701,8 +903,12 @@ int pstore_knn(const struct pstore *s, vec3 q, int k, double max_d2,
         return 0;
     if (k > PSTORE_MAX_K)
         k = PSTORE_MAX_K;
-    const double qr[3] = { q.x - s->lo[0], q.y - s->lo[1], q.z - s->lo[2] };
-    int n = knn_search(s, qr, k, max_d2, out);
+    const double qa[3] = { q.x, q.y, q.z };
+    int n = 0;
+    /* one heap over the levels: each later level's search is bounded by
+    ** the k-th distance found so far */
+    for (int l = 0; l < s->n_levels; l++)
+        max_d2 = knn_search(s, &s->level[l], qa, k, max_d2, out, &n);
     /* the heap's root is its farthest photon */
     *r2 = n > 0 ? out[0].d2 : 0.0;
     return n;

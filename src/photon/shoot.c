@@ -1261,7 +1261,7 @@ static enum iris_status build_caustic(const iris_scene *scene,
         return rc;
     pmap_caustic_setup(m, ps, opts);
     st.stored = (int64_t)m->store.n;
-    st.bytes = (int64_t)(m->store.n * sizeof(struct pstore_photon));
+    st.bytes = (int64_t)pstore_bytes(&m->store);
     st.gather_radius = m->radius;
     st.seconds_shoot = t1 - t0;
     st.seconds_build = par_now() - t1;
