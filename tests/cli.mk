@@ -17,3 +17,6 @@ EXTRA_DIST += tests/cli/misuse.sh
 # the render window +SR +ER +SC +EC, fractions included, against POV-Ray
 TESTS += tests/cli/window.sh
 EXTRA_DIST += tests/cli/window.sh
+# the shipped scenes (scenes/) render in iris and in POV-Ray
+TESTS += tests/cli/shipped_scenes.sh
+EXTRA_DIST += tests/cli/shipped_scenes.sh
