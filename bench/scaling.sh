@@ -8,7 +8,10 @@
 # CPU-second against 1 thread (the figure to compare on a loaded
 # machine); then one 2-rank run's
 # per-rank times (IRIS_RANK_TIMES: work, agreements, snapshots, the
-# final reduction). Then the communication: MPI ranks exchange nothing
+# final reduction). The 2-thread run is also timed with
+# IRIS_NO_PREFETCH=1 (each pass's map built after the previous eye pass
+# instead of during it: src/render/progressive.c, PREFETCH), to show what
+# that gains. Then the communication: MPI ranks exchange nothing
 # while rendering; at the end (and at each write point) rank 0 reduces the
 # double sum buffer, width·height·4 channels·8 bytes. From the measured
 # time per pass and the measured fixed cost of a run, the script estimates
@@ -76,6 +79,9 @@ while [ $i -lt "$rounds" ]; do
     once t1 "$IRIS" $args --threads 1 -o "$BENCH_TMP/a.png"
     # shellcheck disable=SC2086
     once t2 "$IRIS" $args --threads 2 -o "$BENCH_TMP/b.png"
+    # shellcheck disable=SC2086
+    once t2n env IRIS_NO_PREFETCH=1 "$IRIS" $args --threads 2 \
+        -o "$BENCH_TMP/b2.png"
     if [ -n "$MPIRUN" ]; then
         # shellcheck disable=SC2086
         once r1 $mpirun -n 1 "$IRIS" $args --threads 1 -o "$BENCH_TMP/c.png"
@@ -98,6 +104,8 @@ echo "| run | wall s | speed-up | CPU s (all processes) | work per CPU-s |"
 echo "| --- | ---: | ---: | ---: | ---: |"
 echo "| 1 process, 1 thread | $t1 | 1.000 | $cpu1 | 1.000 |"
 echo "| 1 process, 2 threads | $t2 | $(ratio "$t1" "$t2") | $(med t2 3) | $(ratio "$cpu1" "$(med t2 3)") |"
+t2n=$(med t2n 2)
+echo "| 1 process, 2 threads, IRIS_NO_PREFETCH=1 | $t2n | $(ratio "$t1" "$t2n") | $(med t2n 3) | $(ratio "$cpu1" "$(med t2n 3)") |"
 r1=-; r2=-
 if [ -n "$MPIRUN" ]; then
     r1=$(med r1 2); r2=$(med r2 2)

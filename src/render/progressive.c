@@ -21,7 +21,9 @@
 **      pass, pixel);
 **   3. the pass image added into a double-precision sum buffer.
 ** The map of pass i is freed before pass i+1 is built, so memory is one
-** map plus two images whatever the pass count.
+** map plus two images whatever the pass count, except for small maps on
+** two or more threads, where pass i+1's map is built during pass i's eye
+** pass (PREFETCH below): then two small maps.
 **
 ** Determinism: the maps and the eye pass do not depend on the thread
 ** count, and each pixel's sum adds the passes in order, so the image does
@@ -71,6 +73,7 @@
 #include "render/progressive.h"
 
 #include <math.h>
+#include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -237,16 +240,16 @@ static uint64_t pass_seed(uint64_t seed, int pass)
 ** /dev/null (main.c), so there the log goes to memory and its first line
 ** into 'err', which rank 0 prints (mpi_passes_first_error).
 */
-static enum iris_status build_map(struct tracer *tr, const struct accel *acc,
-                                  const struct mat_ctx *mat, int threads,
-                                  uint64_t seed, int pass,
-                                  struct photon_map **map,
-                                  struct photon_stats *ps, char *err,
-                                  size_t errlen)
+static enum iris_status build_map_into(const iris_scene *scene,
+                                       const struct accel *acc,
+                                       const struct mat_ctx *mat,
+                                       int threads, volatile int *interrupt,
+                                       uint64_t seed, int pass,
+                                       struct photon_map **map,
+                                       struct photon_stats *ps, char *err,
+                                       size_t errlen)
 {
-    photon_map_destroy(*map);
     *map = NULL;
-    tr->photon_map = NULL;
     struct photon_options po;
     memset(&po, 0, sizeof po);
     po.threads = threads;
@@ -254,15 +257,14 @@ static enum iris_status build_map(struct tracer *tr, const struct accel *acc,
     po.pass = pass;
     po.radius_scale = progressive_radius_scale(pass);
     po.mat = mat;
-    po.interrupt = tr->interrupt;
+    po.interrupt = interrupt;
     memset(ps, 0, sizeof *ps);
     char *logbuf = NULL;
     size_t loglen = 0;
     FILE *log = mpi_passes_rank() != 0 ? open_memstream(&logbuf, &loglen)
                                        : NULL;
     po.log = log;
-    enum iris_status st = photon_map_build(tr->scene, acc, &po, map, ps);
-    tr->photon_map = *map;
+    enum iris_status st = photon_map_build(scene, acc, &po, map, ps);
     if (log) {
         fclose(log); /* logbuf holds the text now */
         /* the first error line, without its newline */
@@ -275,6 +277,124 @@ static enum iris_status build_map(struct tracer *tr, const struct accel *acc,
         free(logbuf);
     }
     return st;
+}
+
+static enum iris_status build_map(struct tracer *tr, const struct accel *acc,
+                                  const struct mat_ctx *mat, int threads,
+                                  uint64_t seed, int pass,
+                                  struct photon_map **map,
+                                  struct photon_stats *ps, char *err,
+                                  size_t errlen)
+{
+    photon_map_destroy(*map);
+    *map = NULL;
+    tr->photon_map = NULL;
+    enum iris_status st = build_map_into(tr->scene, acc, mat, threads,
+                                         tr->interrupt, seed, pass, map, ps,
+                                         err, errlen);
+    tr->photon_map = *map;
+    return st;
+}
+
+/*
+** PREFETCH: the next pass's map built during this pass's eye pass, on a
+** thread of its own with one thread (the map does not depend on the
+** thread count, nor on anything the eye pass does: its random streams
+** are keyed by seed and pass). Why: on two threads the photon phase of a
+** pass scaled 1.65-1.69x against the eye pass's 1.92-1.99x (session 9,
+** bench/scaling.sh): its serial steps (the quantisation box, the
+** concatenation, the kd-tree's first median, the setup), its short
+** parallel loops and their wake-ups. Built beside the eye pass, whose
+** tiles the two pool threads take as they come, it costs the pass only
+** its CPU time shared over the cores, and no serial step of its own.
+** Only where the next pass is certain (a fixed --passes, no time limit;
+** under MPI within this rank's block, or the next block with one rank)
+** and for maps of at most PREFETCH_MAX_PHOTONS stored photons: two maps
+** are alive meanwhile, and a large map's build is long and parallel
+** anyway. IRIS_NO_PREFETCH=1 in the environment turns it off (A/B
+** timing). A prefetch whose pass is not the one the loop then runs (an
+** interrupt, a failure) is joined and discarded.
+** It pays only while the map is ready when the eye pass ends: a map that
+** costs more than the eye pass (many photons, a small image) would be
+** built on one thread while the other waits. So when the loop has waited
+** for the map more than PREFETCH_SLOW times the time of the eye pass it
+** was built beside, two passes in a row, the run goes back to building
+** each map on all the threads after the eye pass.
+*/
+#define PREFETCH_MAX_PHOTONS 1000000
+#define PREFETCH_SLOW 0.05
+
+struct prefetch {
+    pthread_t tid;
+    bool running;              /* started and not yet joined */
+    int pass;
+    const iris_scene *scene;
+    const struct accel *acc;
+    const struct mat_ctx *mat;
+    volatile int *interrupt;
+    uint64_t seed;
+    struct photon_map *map;    /* the result, after the join */
+    struct photon_stats ps;
+    enum iris_status st;
+    char err[512];
+};
+
+static void *prefetch_main(void *arg)
+{
+    struct prefetch *pf = arg;
+    pf->st = build_map_into(pf->scene, pf->acc, pf->mat, 1, pf->interrupt,
+                            pf->seed, pf->pass, &pf->map, &pf->ps, pf->err,
+                            sizeof pf->err);
+    return NULL;
+}
+
+/* Starts building pass 'pass''s map (nothing when a thread cannot be
+** had: the loop then builds it itself). */
+static void prefetch_start(struct prefetch *pf, const struct tracer *tr,
+                           const struct accel *acc,
+                           const struct mat_ctx *mat, uint64_t seed,
+                           int pass)
+{
+    pf->pass = pass;
+    pf->scene = tr->scene;
+    pf->acc = acc;
+    pf->mat = mat;
+    pf->interrupt = tr->interrupt;
+    pf->seed = seed;
+    pf->map = NULL;
+    pf->st = IRIS_OK;
+    pf->err[0] = '\0';
+    pf->running = pthread_create(&pf->tid, NULL, prefetch_main, pf) == 0;
+}
+
+/* Joins the prefetch; true when it built pass 'pass''s map (its status,
+** map and stats are then the caller's), else its map is freed. */
+static bool prefetch_take(struct prefetch *pf, int pass)
+{
+    if (!pf->running)
+        return false;
+    pthread_join(pf->tid, NULL);
+    pf->running = false;
+    if (pf->pass == pass)
+        return true;
+    photon_map_destroy(pf->map);
+    pf->map = NULL;
+    return false;
+}
+
+/* Whether to build pass 'q''s map during this pass's eye pass. */
+static bool prefetch_wanted(const iris_render_options *opts, int threads,
+                            int q, uint64_t stored)
+{
+    static int off = -1; /* IRIS_NO_PREFETCH, read once */
+    if (off < 0) {
+        const char *e = getenv("IRIS_NO_PREFETCH");
+        off = e && *e && strcmp(e, "0") != 0;
+    }
+    return !off && threads >= 2 && q > 0 && opts->passes > 0 &&
+           q < opts->passes && opts->time_limit <= 0.0 &&
+           stored <= PREFETCH_MAX_PHOTONS &&
+           !(opts->interrupt && *opts->interrupt);
 }
 
 /*
@@ -422,17 +542,20 @@ struct rank_times {
     double snapshot_s;         /* rank 0's snapshots, the others' share */
     double reduce_s;           /* the final reduction, waiting included */
     int agreements;            /* how many */
+    int prefetched;            /* maps built during an eye pass (PREFETCH) */
 };
 
 /*
 ** With opts->rank_times set (the iris command: IRIS_RANK_TIMES in the
 ** environment), rank 0 prints every rank's times there: "iris: rank R: P
 ** passes, work W s, N agreements A s, snapshots S s, final reduce F s,
-** total T s, cpu C s". A rank that waits long at the final reduction
-** finished early: the load was uneven. C is the process's CPU time since
-** it started (MPI_Init, parse and build included; waits sleep, so they
-** add little): on a loaded machine, where wall times mislead, the
-** largest C is the run's critical path (bench/scaling.sh).
+** prefetched M maps, total T s, cpu C s" (one line without MPI; M: the
+** maps built during the previous eye pass, PREFETCH). A rank that waits
+** long at the final reduction finished early: the load was uneven. C is
+** the process's CPU time since it started (MPI_Init, parse and build
+** included; waits sleep, so they add little): on a loaded machine,
+** where wall times mislead, the largest C is the run's critical path
+** (bench/scaling.sh).
 */
 static double cpu_seconds(void)
 {
@@ -451,17 +574,18 @@ static void report_rank_times(FILE *to, const struct rank_times *rt,
     int n = mpi_passes_size();
     if (n > MAX_RANKS)
         return;
-    enum { K = 8 };
+    enum { K = 9 };
     double mine[K] = { passes, rt->work_s, rt->agreements, rt->agree_s,
-                       rt->snapshot_s, rt->reduce_s, total_s, cpu_seconds() };
+                       rt->snapshot_s, rt->reduce_s, rt->prefetched,
+                       total_s, cpu_seconds() };
     double all[K * MAX_RANKS];
     mpi_passes_gather(mine, K, all);
     for (int r = 0; mpi_passes_rank() == 0 && r < n; r++) {
         const double *v = all + K * r;
         fprintf(to, "iris: rank %d: %.0f passes, work %.3f s, %.0f "
                 "agreements %.3f s, snapshots %.3f s, final reduce %.3f s, "
-                "total %.3f s, cpu %.3f s\n", r, v[0], v[1], v[2], v[3],
-                v[4], v[5], v[6], v[7]);
+                "prefetched %.0f maps, total %.3f s, cpu %.3f s\n", r, v[0],
+                v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8]);
     }
 }
 
@@ -533,7 +657,7 @@ enum iris_status progressive_run(struct tracer *tr, const struct accel *acc,
     if (rank == 0 && nranks > 1 && opts->on_pass)
         snap = iris_malloc(accum_len(&a) * sizeof *snap);
     double last_snap = par_now(), snap_cost = 0.0;
-    struct rank_times rt = { 0, 0, 0, 0, 0 };
+    struct rank_times rt = { 0, 0, 0, 0, 0, 0 };
     /* MPI: the first block starts without an agreement. Whether it runs
     ** depends only on --passes and 'first', which every rank knows; a
     ** failure or an interrupt in it stops all at the next agreement. So
@@ -555,6 +679,11 @@ enum iris_status progressive_run(struct tracer *tr, const struct accel *acc,
     /* MPI: every rank's microseconds per pass (the same on all ranks) */
     int *each = nranks > 1 && nranks <= SHARE_MAX_RANKS ? each_buf : NULL;
     double last_agree = par_now();
+    struct prefetch pf;
+    memset(&pf, 0, sizeof pf);
+    int pf_slow = 0;           /* prefetched passes in a row that waited */
+    bool pf_off = false;       /* too slow: not any more this run */
+    double eye_s = 0.0;        /* the last eye pass's seconds */
     for (int next = first;; ) {
         if (agree_now) {
             /* The block of passes from 'next' up to the next agreement,
@@ -608,8 +737,24 @@ enum iris_status progressive_run(struct tracer *tr, const struct accel *acc,
             bool whole = !photons || p > 0 || *map == NULL;
             if (photons && (p > 0 || *map == NULL)) {
                 struct photon_stats ps;
-                st = build_map(tr, acc, mat, threads, opts->seed, p, map,
-                               &ps, err, errlen);
+                if (prefetch_take(&pf, p)) { /* built meanwhile */
+                    /* waited longer than its eye pass can hide? */
+                    pf_slow = par_now() - tp > PREFETCH_SLOW * eye_s
+                                  ? pf_slow + 1 : 0;
+                    pf_off = pf_off || pf_slow >= 2;
+                    rt.prefetched++;
+                    photon_map_destroy(*map);
+                    *map = pf.map;
+                    tr->photon_map = pf.map;
+                    pf.map = NULL;
+                    ps = pf.ps;
+                    st = pf.st;
+                    if (st != IRIS_OK && err && errlen)
+                        snprintf(err, errlen, "%s", pf.err);
+                } else {
+                    st = build_map(tr, acc, mat, threads, opts->seed, p,
+                                   map, &ps, err, errlen);
+                }
                 if (st != IRIS_OK) {
                     failed = true; /* the next agreement stops all */
                     continue;
@@ -620,6 +765,14 @@ enum iris_status progressive_run(struct tracer *tr, const struct accel *acc,
                     bytes = (uint64_t)ps.bytes;
                 *photon_s += par_now() - tp;
             }
+            /* the next pass of this rank: the block's next, or with one
+            ** rank the next block's (one pass a block) */
+            int q = j + 1 < n_mine ? lo + (j + 1) * stride
+                    : nranks == 1  ? next
+                                   : -1;
+            if (photons && !pf_off &&
+                prefetch_wanted(opts, threads, q, stored))
+                prefetch_start(&pf, tr, acc, mat, opts->seed, q);
             iris_render_options po = *opts;
             po.progress = NULL;
             po.plan_out = NULL;
@@ -632,7 +785,9 @@ enum iris_status progressive_run(struct tracer *tr, const struct accel *acc,
             tr->seed = po.seed;
             iris_render_stats es;
             memset(&es, 0, sizeof es);
+            double te = par_now();
             st = eyepass_run(tr, &po, threads, &img, &es);
+            eye_s = par_now() - te;
             es_sum.rays_traced += es.rays_traced;
             es_sum.rays += es.rays;
             es_sum.rays_camera += es.rays_camera;
@@ -695,6 +850,7 @@ enum iris_status progressive_run(struct tracer *tr, const struct accel *acc,
             }
         }
     }
+    prefetch_take(&pf, -1); /* a pass the loop did not run */
     tr->seed = seed0;
     iris_free(snap);
     /* MPI: a rank failed (codes > 1; 1 is an interrupt). Every rank knows
@@ -744,6 +900,9 @@ enum iris_status progressive_run(struct tracer *tr, const struct accel *acc,
                 opts->on_pass(opts->on_pass_user, out, &info);
             }
         }
+    } else {
+        report_rank_times(opts->rank_times, &rt, a.passes,
+                          par_now() - t_start);
     }
     if (st == IRIS_OK && opts->interrupt && *opts->interrupt)
         st = IRIS_EINTR;

@@ -5,7 +5,7 @@
 # --resume, --reference, --error-log, SIGINT. Exact comparisons use
 # imgdiff (largest absolute difference of linear values, 0 = identical).
 . "$top_srcdir/tests/tap.sh"
-tap_plan 19
+tap_plan 22
 scene="$top_srcdir/tests/progressive/ball.pov"
 imgdiff="$top_builddir/tests/progressive/imgdiff"
 tmp=$(mktemp -d)
@@ -30,6 +30,35 @@ tap_is "same image for 1 and 2 threads" \
     "$("$imgdiff" "$tmp/p4t1.exr" "$tmp/p4t2.exr")" "0"
 tap_is "... and for the default thread count" \
     "$("$imgdiff" "$tmp/p4.exr" "$tmp/p4t2.exr")" "0"
+
+# On 2 threads the next pass's map is built during the eye pass
+# (progressive.c PREFETCH): passes 1, 2 and 3 of 4 (pass 0's map is
+# render.c's, built before any eye pass).
+# The same image as without it, bit for bit: a map of the wrong pass or
+# seed, or one freed while in use, would change it. 1000 photons and 48x48
+# pixels: the map costs ~1/10 of the eye pass, so even a loaded machine
+# does not make the loop wait for it (which would stop the prefetching,
+# below).
+pf() { env IRIS_RANK_TIMES=1 IRIS_NO_PREFETCH="$1" "$IRIS" -q "$scene" \
+    +W48 +H48 Declare=Photons=1000 --passes 4 --threads 2 -o "$2"; }
+pf 0 "$tmp/pf.exr" 2>"$tmp/pf.txt"
+pf 1 "$tmp/npf.exr" 2>"$tmp/npf.txt"
+tap_is "2 threads: maps built during the eye pass, the same image" \
+    "$("$imgdiff" "$tmp/pf.exr" "$tmp/npf.exr")" "0"
+tap_is "... 3 maps prefetched, none with IRIS_NO_PREFETCH=1" \
+    "$(sed -n 's/.*prefetched \([0-9]*\) maps.*/\1/p' "$tmp/pf.txt" \
+        "$tmp/npf.txt" | tr '\n' ' ')" "3 0 "
+# A map that costs far more than the eye pass (50000 photons, 2x2
+# pixels: ~1000 times) is not worth building beside it: after two passes
+# that waited for it, the rest are built after the eye pass. Passes 1 and
+# 2 are prefetched before any wait is seen; pass 1's wait may be hidden
+# by pass 0's eye pass (the first, with the run's first-time costs), then
+# pass 3's too: 2 or 3 of 8, not 7.
+env IRIS_RANK_TIMES=1 "$IRIS" -q "$scene" +W2 +H2 Declare=Photons=50000 \
+    --passes 8 --threads 2 -o "$tmp/pfs.exr" 2>"$tmp/pfs.txt"
+n=$(sed -n 's/.*prefetched \([0-9]*\) maps.*/\1/p' "$tmp/pfs.txt")
+tap_ok "a map slower than the eye pass: $n of 8 maps prefetched (2-3)" \
+    test "${n:-0}" -ge 2 -a "${n:-0}" -le 3
 
 # Checkpoint + resume = an uninterrupted run with the same total passes
 r -o "$tmp/c2.exr" --passes 2 --checkpoint "$tmp/run.ckpt"
