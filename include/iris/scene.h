@@ -218,6 +218,11 @@ typedef struct iris_normal {
     int n_entries;             /* normal_map or slope_map */
     iris_map_entry *entries;
     bool is_slope_map;
+    /* 'no_bump_scale': the normal is not normalised on its way to and
+    ** from pattern space (POV-Ray's DONT_SCALE_BUMPS_FLAG), so the
+    ** pattern's scale changes the bumps' strength; normal_map entries
+    ** inherit it */
+    bool no_bump_scale;
     iris_image_ref *bump_map;
 } iris_normal;
 
@@ -476,7 +481,10 @@ struct iris_object {
         struct { iris_fn *fx, *fy, *fz; iris_vec2 uv_lo, uv_hi;
                  iris_vec3 lo, hi;
                  double accuracy, max_gradient; /* 0 = POV-Ray's
-                                                   0.001 and 1 */ } parametric;
+                                                   0.001 and 1 */
+                 /* 'precompute D x,y,z': depth 1..20 (0 = none) and the
+                 ** functions named, bit 0 x, 1 y, 2 z */
+                 int precompute_depth, precompute_axes; } parametric;
         struct { int spline; int n_spheres; iris_vec3 *centres;
                  double *radii; } sphere_sweep;
         struct { double r1, r2; } ovus;

@@ -97,7 +97,16 @@
 ** primitive's box in turn instead of asking Embree: Embree's per-query
 ** set-up and user-geometry dispatch cost more than a few box tests, and
 ** most parity and test scenes have a handful of objects. The boxes and
-** the exact tests are the same, so the hits are too.
+** the exact tests are the same, so the hits are too. Where the crossover
+** lies depends on what is measured: in eye-pass instructions (callgrind,
+** one thread, 160 x 120, +A0.3 +AM1 +R3) Embree was already cheaper from
+** 5 primitives on (34 0.987x, 33 0.947x, 217 0.88x, 175 0.86x, 194
+** 0.95x), but Embree's SIMD instructions take longer each: in trace CPU
+** time (time_render_cpu_s, 640 x 480, two threads, medians of 7
+** alternating runs, session 10) it was 1.07x on 34, 1.04x on 33, 1.08x
+** on 194 and 1.02x on 82, 0.96-0.97x only on 175 and 217. So 8 stays;
+** from 9 on the linear search costs 1.05-1.5x Embree's instructions
+** (130, 94, 166, 176, 196).
 */
 #define LINEAR_MAX 8
 
@@ -310,6 +319,64 @@ static void narrow_intersection(const struct anode *n, struct bbox *S,
     struct bbox b = { .lo = lo, .hi = hi };
     *V = b;
     *S = box_meet(*S, b);
+}
+
+/*
+** A quadric clipped by planes or boxes (a paraboloid mirror cut at its
+** rim by clipped_by { plane }): its surface lies on the boundary of its
+** inside, so the box of its inside narrowed by the clips (csgbox.c, as
+** POV-Ray narrows a clipped quadric's box in Quadric::Compute_BBox)
+** bounds the clipped surface too. Without it the leaf had no box, and a
+** photon target without a box got no photons at all (shoot.c asks for
+** its bounding sphere), where POV-Ray shoots them. Only 'S' (the
+** surface's box) is narrowed; an inside that stays unbounded (the other
+** sign of the same paraboloid) leaves it as it was.
+*/
+static void clipped_quadric_box(const struct anode *n, bool ninv,
+                                struct bbox *S)
+{
+    if (n->kind != AN_SHAPE || n->obj->kind != IRIS_OBJ_QUADRIC || ninv ||
+        box_finite(*S) || S->empty)
+        return;
+    vec3 lo = S->inf ? v3(-INFINITY, -INFINITY, -INFINITY) : S->lo;
+    vec3 hi = S->inf ? v3(INFINITY, INFINITY, INFINITY) : S->hi;
+    for (int round = 0; round < 3; round++) {
+        if (!csgbox_narrow(n->obj, &lo, &hi))
+            return; /* nothing of the quadric inside the clips: keep S */
+        for (int i = 0; i < n->n_clips; i++) {
+            const struct anode *c = n->clips[i];
+            if (c->kind == AN_SHAPE && !c->inverted &&
+                !csgbox_narrow(c->obj, &lo, &hi))
+                return;
+        }
+    }
+    struct bbox b = { .lo = lo, .hi = hi };
+    if (box_finite(b))
+        *S = box_meet(*S, b);
+}
+
+/*
+** A quadric without a box of its own but with a bounded_by (a paraboloid
+** or cylinder bounded by a box instead of clipped, as shapes_old.inc's
+** users write them): POV-Ray's parser gives it its bound's box (the
+** smaller one; parse.cpp Parse_Object_Mods) and skips a ray that misses
+** that box, but keeps every crossing of a ray that meets it, also those
+** outside it (geometry/bound.c, geom_bound_admits, does the same). So
+** that box, not narrowed by the quadric (a narrower one would reject
+** rays that meet the bound and see the surface beyond it), is the box
+** the leaf's rays are tested in: the same rays as before, and a photon
+** target gets a bounding sphere, hence photons (it had none: 0 photons,
+** where POV-Ray shoots at the bound).
+*/
+static void bounded_quadric_box(const struct anode *n, struct bbox *S)
+{
+    if (n->kind != AN_SHAPE || n->obj->kind != IRIS_OBJ_QUADRIC ||
+        box_finite(*S) || S->empty || !n->prof || !n->prof->bound.ready ||
+        !n->prof->bound.box_cuts)
+        return;
+    struct bbox b = { .lo = n->prof->bound.lo, .hi = n->prof->bound.hi };
+    if (box_finite(b))
+        *S = box_meet(*S, b);
 }
 
 /* ---------------------------------------------------------------- */
@@ -580,7 +647,9 @@ static struct anode *build(struct accel *a, FILE *log, const iris_object *o,
             S = box_meet(S, cv);
             V = box_meet(V, cv);
         }
+        clipped_quadric_box(n, ninv, &S);
     }
+    bounded_quadric_box(n, &S);
 
     /* Capped: it only chooses between two ways to the same answer */
     long cost = n->kind == AN_CSG ? 0 : 1;
@@ -704,7 +773,16 @@ static bool push_ptr(struct anode ***arr, int *n, int *cap, struct anode *x)
 static void plane_prepare(struct anode *n)
 {
     n->plane_fast = n->kind == AN_SHAPE && n->n_clips == 0 && !n->bounded &&
-                    n->obj->kind == IRIS_OBJ_PLANE && n->plane_wn_ok;
+                    n->obj->kind == IRIS_OBJ_PLANE && n->plane_wn_ok &&
+                    !n->obj->bounded_by; /* its box cuts it: geom.c */
+}
+
+/* Marks 'n' and every node under it as part of placed node 'prim'. */
+static void mark_prim(struct anode *n, const struct anode *prim)
+{
+    n->prim = prim;
+    for (int i = 0; i < n->n_kids; i++)
+        mark_prim(n->kids[i], prim);
 }
 
 /* Places a top-level node: splits plain unions, routes the rest. */
@@ -721,6 +799,7 @@ static bool place(struct accel *a, struct anode *n)
         a->n_attached++;
         return amesh_attach(n, a->dev, a->scene);
     }
+    mark_prim(n, n);
     if (n->bounded)
         return push_ptr(&a->user, &a->n_user, &a->cap_user, n);
     plane_prepare(n);
@@ -1090,8 +1169,11 @@ static inline bool plane_nearest(const struct anode *n, vec3 o, vec3 d,
     return true;
 }
 
-bool accel_intersect(const struct accel *a, const ray *r, double tmin,
-                     double tmax, unsigned skip, struct hit *h)
+/* accel_intersect() and accel_intersect_prim(): 'with_prim' a constant,
+** so that the query every other ray makes pays nothing for the prim. */
+static inline __attribute__((always_inline)) bool
+intersect_body(const struct accel *a, const ray *r, double tmin, double tmax,
+               unsigned skip, struct hit *h, bool with_prim)
 {
     if (!a || !r || !finite_v2(r->o, r->d) || !(tmax > tmin) || isnan(tmin))
         return false;
@@ -1179,6 +1261,8 @@ bool accel_intersect(const struct accel *a, const ray *r, double tmin,
     }
     h->interior = leaf->obj->interior;
     h->eps = hit_epsilon(a, leaf, h->p);
+    if (with_prim)
+        h->prim = leaf->prim;
     /* Only t and p are checked here. The normals were checked where the
     ** crossing was made: every ahit's n and sn is a world normal divided
     ** by its length once that length is finite and > 0 (node.c
@@ -1192,6 +1276,56 @@ bool accel_intersect(const struct accel *a, const ray *r, double tmin,
         return false;
     if (!isfinite(h->uv.u) || !isfinite(h->uv.v))
         h->uv.u = h->uv.v = 0;
+    return true;
+}
+
+bool accel_intersect(const struct accel *a, const ray *r, double tmin,
+                     double tmax, unsigned skip, struct hit *h)
+{
+    return intersect_body(a, r, tmin, tmax, skip, h, false);
+}
+
+bool accel_intersect_prim(const void *accel, const ray *r, double tmin,
+                          double tmax, unsigned skip, struct hit *h)
+{
+    return intersect_body(accel, r, tmin, tmax, skip, h, true);
+}
+
+bool accel_prim_cache_pays(const struct accel *a)
+{
+    return a && !a->linear && a->n_attached == 0;
+}
+
+bool accel_prim_hit(const void *accel, const void *prim, const ray *r,
+                    double tmin, double tmax, unsigned skip, double *t)
+{
+    const struct accel *a = accel;
+    const struct anode *n = prim;
+    /* accel_intersect()'s entry test */
+    if (!a || !n || !r || !finite_v2(r->o, r->d) || !(tmax > tmin) ||
+        isnan(tmin))
+        return false;
+    struct ahit best;
+    bool hit;
+    if (!n->bounded) {
+        /* as accel_intersect()'s loop over a->inf */
+        hit = n->plane_fast
+                  ? plane_nearest(n, r->o, r->d, tmin, tmax, skip, &best)
+                  : node_nearest(n, r->o, r->d, tmin, tmax, skip, &best);
+    } else {
+        /* a user primitive: the linear query's box test (Embree's padded
+        ** float box culls no less), then the same exact test */
+        vec3 inv = v3(1 / r->d.x, 1 / r->d.y, 1 / r->d.z);
+        hit = box_may_hit(n->lo, n->hi, r->o, inv, tmin, tmax) &&
+              node_nearest_in_box(n, r->o, r->d, tmin, tmax, skip, &best);
+    }
+    if (!hit)
+        return false;
+    /* accel_intersect()'s test of the hit kept */
+    vec3 p = v3_madd(r->o, r->d, best.t);
+    if (!(best.t * 0.0 + (p.x * 0.0 + p.y * 0.0 + p.z * 0.0) == 0.0))
+        return false;
+    *t = best.t;
     return true;
 }
 

@@ -291,9 +291,10 @@ static bool shape_nearest(const struct anode *n, vec3 o, vec3 d,
         lo = anode_inv_point(&obj->transform, o);
         ld = anode_inv_dir(&obj->transform, d);
     }
-    if (obj->kind == IRIS_OBJ_SPHERE)
+    /* bounded_by goes through geom_intersect (its box cuts the shape) */
+    if (obj->kind == IRIS_OBJ_SPHERE && !obj->bounded_by)
         return sphere_nearest(n, lo, ld, tmin, tmax, best);
-    if (obj->kind == IRIS_OBJ_PLANE)
+    if (obj->kind == IRIS_OBJ_PLANE && !obj->bounded_by)
         return plane_nearest(n, lo, ld, tmin, tmax, best);
     struct isect_list l;
     isect_list_init(&l);

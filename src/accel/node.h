@@ -56,6 +56,11 @@ struct anode {
                                       node is not the object's own inside */
     const iris_object *obj;        /* the scene object this node is */
     const iris_object *top;        /* its top-level scene object */
+    const struct anode *prim;      /* the node accel.c placed (a user
+                                      primitive or an unbounded node)
+                                      that this node is in, for
+                                      accel_prim_hit(); NULL under a mesh
+                                      given to Embree's scene itself */
     unsigned skip;                 /* ACCEL_SKIP_* bits, ancestors' included */
     int n_kids;
     struct anode **kids;

@@ -137,7 +137,7 @@ void geom_intersect(const iris_object *o, const struct geom_profile *prof,
         geom_sphere_sweep_hits(o, ro, rd, t0, t1, out);
         break;
     case IRIS_OBJ_PARAMETRIC:
-        geom_parametric_hits(o, ro, rd, t0, t1, out);
+        geom_parametric_hits(o, prof, ro, rd, t0, t1, out);
         break;
     case IRIS_OBJ_LEMON: geom_lemon_hits(o, ro, rd, t0, t1, out); break;
     case IRIS_OBJ_LATHE:
@@ -192,12 +192,19 @@ bool geom_inside(const iris_object *o, const struct geom_profile *prof,
         return q * q + p.y * p.y < r * r;
     }
     case IRIS_OBJ_QUADRIC:
+        /* POV-Ray's Quadric::Inside: the surface itself is inside */
+        return geom_poly_eval(o, p) <= 0;
     case IRIS_OBJ_POLY:
-        return geom_poly_eval(o, p) < 0;
+        /* POV-Ray's Poly::Inside counts values below INSIDE_TOLERANCE
+        ** (1e-4) as inside, in the user's own coefficients: a poly
+        ** written with small coefficients has a much larger inside in
+        ** CSG than its surface encloses */
+        return geom_poly_eval(o, p) < 1e-4;
     case IRIS_OBJ_SUPERELLIPSOID:
         return geom_superellipsoid_eval(o, p) < 0;
     case IRIS_OBJ_BLOB:
-        return geom_blob_density(o, p) > o->u.blob.threshold;
+        /* POV-Ray's Blob::Inside: above the threshold less 1e-6 */
+        return geom_blob_density(o, p) > o->u.blob.threshold - 1e-6;
     case IRIS_OBJ_ISOSURFACE:
         return geom_isosurface_inside(o, p);
     case IRIS_OBJ_JULIA_FRACTAL:
@@ -249,8 +256,10 @@ bool geom_bounds(const iris_object *o, const struct geom_profile *prof,
         *hi = v3_max(o->u.box.lo, o->u.box.hi);
         return true;
     case IRIS_OBJ_CYLINDER:
+        /* a negative radius is its size (POV-Ray squares it) */
         cone_bounds(o->u.cylinder.base, o->u.cylinder.cap,
-                    o->u.cylinder.radius, o->u.cylinder.radius, lo, hi);
+                    fabs(o->u.cylinder.radius), fabs(o->u.cylinder.radius),
+                    lo, hi);
         return true;
     case IRIS_OBJ_CONE:
         cone_bounds(o->u.cone.base, o->u.cone.cap, fabs(o->u.cone.base_radius),
@@ -352,7 +361,7 @@ const char *geom_validate(const iris_object *o)
             return "box corner is not finite";
         return NULL;
     case IRIS_OBJ_CYLINDER:
-        if (!(o->u.cylinder.radius > 0) ||
+        if (!(fabs(o->u.cylinder.radius) > 0) ||
             !(v3_len(v3_sub(o->u.cylinder.cap, o->u.cylinder.base)) > 0))
             return "cylinder has zero radius or length";
         return NULL;

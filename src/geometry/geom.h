@@ -120,6 +120,15 @@ struct geom_profile {
         bool box_cuts;         /* the ray must meet lo..hi */
         vec3 lo, hi;           /* the bound's world box */
     } bound;
+    /*
+    ** A parametric's 'precompute' (parametric.c): the bounds of function
+    ** k on the cells of its subdivision tree numbered as POV-Ray numbers
+    ** them (1 the whole uv rectangle, 2n and 2n + 1 the halves of n),
+    ** par_lo[k][n] .. par_hi[k][n] for n < 1 << par_depth; NULL for a
+    ** function not precomputed.
+    */
+    double *par_lo[3], *par_hi[3];
+    int par_depth;
 };
 
 /*
@@ -284,7 +293,11 @@ void geom_sphere_sweep_hits(const iris_object *o, vec3 ro, vec3 rd,
 bool geom_sphere_sweep_inside(const iris_object *o, vec3 p);
 bool geom_sphere_sweep_bounds(const iris_object *o, vec3 *lo, vec3 *hi);
 const char *geom_sphere_sweep_check(const iris_object *o);
-void geom_parametric_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
+bool geom_parametric_precompute(const iris_object *o,
+                                struct geom_profile *p);
+void geom_parametric_hits(const iris_object *o,
+                          const struct geom_profile *prof, vec3 ro, vec3 rd,
+                          double t0,
                           double t1, struct isect_list *out);
 void geom_parametric_bounds(const iris_object *o, vec3 *lo, vec3 *hi);
 const char *geom_parametric_check(const iris_object *o);

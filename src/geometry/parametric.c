@@ -20,15 +20,24 @@
 ** are bounded as f - accuracy (its "threshold" argument, so the surface
 ** found is shifted by -accuracy on every axis), the normal is the cross
 ** product of forward differences of step 'accuracy' at the cell's low uv
-** corner, and uv is the raw (u, v). 'precompute' only caches the same
-** bounds in POV-Ray, so it is not needed here. With too small a
-** max_gradient the bounds are wrong and parts of the surface are missed,
-** in POV-Ray and here alike.
+** corner, and uv is the raw (u, v). With too small a max_gradient the
+** bounds are wrong and parts of the surface are missed, in POV-Ray and
+** here alike.
+**
+** 'precompute D x,y,z' is not only a cache: POV-Ray computes the bounds
+** of the named functions on the cells of the first D levels of the same
+** subdivision, from the corners at level D - 1 only, and gives each
+** coarser cell the union of its two halves' bounds. Those are tighter
+** than a coarse cell's own estimate and, with too small a max_gradient,
+** find parts of the surface the plain search misses; the search uses
+** them for every cell of those levels (geom_parametric_precompute, kept
+** in the object's geom_profile).
 */
 #include "config.h"
 
 #include "geometry/geom.h"
 #include "iris/fn.h"
+#include "util/mem.h"
 
 #include <math.h>
 
@@ -87,6 +96,78 @@ static void cell_bounds(const struct par *p, const double c[4], double u0,
     span(u1 - u0, l0, l1, p->grad, lo, &junk);
 }
 
+/* POV-Ray's cap on a cell's number (Max_intNumber): deeper cells are
+** never in a precomputed table (depth <= 20) */
+#define PAR_SECTOR_MAX 10000000L
+
+/* The corner values of function 'f' on a cell, in cell_bounds' order. */
+static void corners(const iris_fn *f, double u0, double u1, double v0,
+                    double v1, double c[4])
+{
+    c[0] = eval(f, u0, v0);
+    c[1] = eval(f, u0, v1);
+    c[2] = eval(f, u1, v0);
+    c[3] = eval(f, u1, v1);
+}
+
+/* POV-Ray's Precomp_Par_Int: cell 'n' of the tree over [u0,u1]x[v0,v1],
+** halving the longer side (v only when strictly longer), the leaves
+** (n >= 'last') bounded from their corners. */
+static void precomp(const iris_object *o, struct geom_profile *g,
+                    const struct par *p, long n, long last, double u0,
+                    double u1, double v0, double v1)
+{
+    if (n >= last) {
+        for (int k = 0; k < 3; k++) {
+            if (!g->par_lo[k])
+                continue;
+            double c[4];
+            corners(p->f[k], u0, u1, v0, v1, c);
+            cell_bounds(p, c, u0, u1, v0, v1, &g->par_lo[k][n],
+                        &g->par_hi[k][n]);
+        }
+        return;
+    }
+    if (u1 - u0 < v1 - v0) {
+        double m = (v0 + v1) / 2;
+        precomp(o, g, p, 2 * n, last, u0, u1, v0, m);
+        precomp(o, g, p, 2 * n + 1, last, u0, u1, m, v1);
+    } else {
+        double m = (u0 + u1) / 2;
+        precomp(o, g, p, 2 * n, last, u0, m, v0, v1);
+        precomp(o, g, p, 2 * n + 1, last, m, u1, v0, v1);
+    }
+    for (int k = 0; k < 3; k++) {
+        if (!g->par_lo[k])
+            continue;
+        g->par_lo[k][n] = fmin(g->par_lo[k][2 * n], g->par_lo[k][2 * n + 1]);
+        g->par_hi[k][n] = fmax(g->par_hi[k][2 * n], g->par_hi[k][2 * n + 1]);
+    }
+}
+
+bool geom_parametric_precompute(const iris_object *o,
+                                struct geom_profile *g)
+{
+    int depth = o->u.parametric.precompute_depth;
+    if (depth < 1 || depth > 20)
+        return true; /* none (the parser refuses such a depth) */
+    struct par p = par_of(o);
+    long nmb = 1L << depth;
+    for (int k = 0; k < 3; k++) {
+        if (!(o->u.parametric.precompute_axes & (1 << k)))
+            continue;
+        g->par_lo[k] = iris_malloc((size_t)nmb * sizeof(double));
+        g->par_hi[k] = iris_malloc((size_t)nmb * sizeof(double));
+        if (!g->par_lo[k] || !g->par_hi[k])
+            return false;
+    }
+    g->par_depth = depth;
+    iris_vec2 a = o->u.parametric.uv_lo, b = o->u.parametric.uv_hi;
+    precomp(o, g, &p, 1, 1L << (depth - 1), fmin(a.u, b.u), fmax(a.u, b.u),
+            fmin(a.v, b.v), fmax(a.v, b.v));
+    return true;
+}
+
 static void container(const iris_object *o, vec3 *lo, vec3 *hi)
 {
     vec3 a = o->u.parametric.lo, b = o->u.parametric.hi;
@@ -100,10 +181,13 @@ static void container(const iris_object *o, vec3 *lo, vec3 *hi)
     *hi = v3_max(a, b);
 }
 
-void geom_parametric_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
-                          double t1, struct isect_list *out)
+void geom_parametric_hits(const iris_object *o,
+                          const struct geom_profile *prof, vec3 ro, vec3 rd,
+                          double t0, double t1, struct isect_list *out)
 {
     struct par p = par_of(o);
+    /* cells numbered below 'ntab' take precomputed bounds */
+    long ntab = prof && prof->par_depth > 0 ? 1L << prof->par_depth : 0;
     vec3 blo, bhi;
     container(o, &blo, &bhi);
     /* The container along the ray, from the origin on (POV-Ray's box
@@ -120,6 +204,7 @@ void geom_parametric_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
     ** new points, not eight) */
     double ulo[PAR_STACK], uhi[PAR_STACK], vlo[PAR_STACK], vhi[PAR_STACK];
     double cv[PAR_STACK][3][4];
+    long sec[PAR_STACK]; /* POV-Ray's SectorNum: the cell's number */
     iris_vec2 a = o->u.parametric.uv_lo, b = o->u.parametric.uv_hi;
     ulo[0] = fmin(a.u, b.u);
     uhi[0] = fmax(a.u, b.u);
@@ -131,6 +216,7 @@ void geom_parametric_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
         cv[0][k][2] = eval(p.f[k], uhi[0], vlo[0]);
         cv[0][k][3] = eval(p.f[k], uhi[0], vhi[0]);
     }
+    sec[0] = 1;
     double best = INFINITY, bu = 0, bv = 0;
     double P[3] = { ro.x, ro.y, ro.z }, D[3] = { rd.x, rd.y, rd.z };
     int i = 0;
@@ -147,7 +233,12 @@ void geom_parametric_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
         bool par[3], drop = false;
         for (int k = 0; k < 3 && !drop; k++) {
             double lo, hi;
-            cell_bounds(&p, cv[i][k], u0, u1, v0, v1, &lo, &hi);
+            if (sec[i] < ntab && prof->par_lo[k]) {
+                lo = prof->par_lo[k][sec[i]];
+                hi = prof->par_hi[k][sec[i]];
+            } else {
+                cell_bounds(&p, cv[i][k], u0, u1, v0, v1, &lo, &hi);
+            }
             /* POV-Ray's close(D, 0): an axis the ray is parallel to */
             par[k] = fabs(D[k]) < 1e-10;
             if (par[k]) {
@@ -181,8 +272,11 @@ void geom_parametric_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
             i--;
             continue;
         }
-        /* Split: slot i keeps the upper half, slot i + 1 the lower, which
-        ** is therefore searched first */
+        /* Split: slot i keeps the upper half (cell 2n + 1), slot i + 1
+        ** the lower (2n), which is therefore searched first */
+        sec[i] = sec[i] * 2 >= PAR_SECTOR_MAX ? PAR_SECTOR_MAX : sec[i] * 2;
+        sec[i + 1] = sec[i];
+        sec[i]++;
         ulo[i + 1] = u0;
         uhi[i + 1] = u1;
         vlo[i + 1] = v0;

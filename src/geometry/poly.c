@@ -165,10 +165,16 @@ void geom_poly_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
     vec3 d = v3_scale(rd, 1.0 / dl);
     double s = -v3_dot(ro, d);
     vec3 p = v3_madd(ro, d, s);
+    /* POV-Ray's Poly::All_Intersections drops roots closer than its
+    ** DEPTH_TOLERANCE, 1e-4 along the unit object-space direction: a
+    ** shadow ray leaving the surface then cannot find it again at a
+    ** root the solver puts a hair away (the speckles of shapesq.inc's
+    ** Sinsurf). quadric{} has its own test (1e-6), kept as t0. */
+    double t_lo = o->kind == IRIS_OBJ_POLY ? fmax(t0 * dl, 1e-4) : t0 * dl;
 
     if (n == 2) {
         double u[2];
-        int m = quadric_roots(c, p, d, t0 * dl - s, t1 * dl - s, u);
+        int m = quadric_roots(c, p, d, t_lo - s, t1 * dl - s, u);
         for (int i = 0; i < m; i++) {
             vec3 q = v3_madd(p, d, u[i]);
             isect_push(out, (s + u[i]) / dl, poly_grad(o, q), 0, 0);
@@ -208,7 +214,7 @@ void geom_poly_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
             }
         }
 
-    double lo = t0 * dl - s, hi = t1 * dl - s;
+    double lo = t_lo - s, hi = t1 * dl - s;
     double u[MAXO];
     int m = roots_in_interval(poly, n, lo, hi, u);
     for (int i = 0; i < m; i++) {

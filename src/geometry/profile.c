@@ -78,6 +78,10 @@ void geom_profile_free(struct geom_profile *p)
     iris_free(p->run_lo);
     iris_free(p->run_hi);
     iris_free(p->group_closed);
+    for (int k = 0; k < 3; k++) {
+        iris_free(p->par_lo[k]);
+        iris_free(p->par_hi[k]);
+    }
     iris_free(p);
 }
 
@@ -647,6 +651,20 @@ static struct geom_profile *prepare_outline(const iris_object *o,
         break;
     case IRIS_OBJ_TEXT:
         return geom_text_profile(o, why);
+    case IRIS_OBJ_PARAMETRIC:
+        /* no outline: the bounds of its 'precompute' */
+        if (o->u.parametric.precompute_depth <= 0 ||
+            !o->u.parametric.precompute_axes)
+            return NULL;
+        if ((*why = geom_parametric_check(o)) != NULL)
+            return NULL;
+        p = iris_calloc(1, sizeof *p);
+        if (!p || !geom_parametric_precompute(o, p)) {
+            geom_profile_free(p);
+            *why = "out of memory";
+            return NULL;
+        }
+        return p;
     default:
         return NULL;
     }

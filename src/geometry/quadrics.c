@@ -167,11 +167,38 @@ void geom_box_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
     }
 }
 
-/* The cone (or cylinder) frame: base 'a', unit axis 'w', length 'len'. */
+/* The cone (or cylinder) frame: base 'a', unit axis 'w', length 'len';
+** the radii ra (base), rb (cap) are signed, 'empty' when there is none. */
 struct cone_frame {
     vec3 a, u, v, w;
     double len, ra, rb;
+    bool empty;
 };
+
+/*
+** A cone's radii as POV-Ray's Cone::Compute_Cone_Data takes them: the
+** radius runs linearly from base to cap with its sign, and the surface
+** is x² + y² = r(z)², so radii of opposite signs make a double cone
+** meeting at the point where r(z) = 0 ('cone { 0, -0.5, y, 1 }' is
+** an hourglass). The larger radius ends the cone in POV-Ray's frame;
+** when it is negative that frame turns the cone into a cylinder of its
+** size, and when it is 0 (the other negative) into nothing.
+*/
+static void cone_radii(const iris_object *o, struct cone_frame *f)
+{
+    double ra = o->u.cone.base_radius, rb = o->u.cone.cap_radius;
+    double hi = fmax(ra, rb);
+    f->empty = false;
+    if (fabs(ra - rb) < 1e-10) {
+        ra = rb = fabs(rb);          /* POV-Ray: "really a cylinder" */
+    } else if (hi < 0) {
+        ra = rb = -hi;
+    } else if (hi == 0) {
+        f->empty = true;
+    }
+    f->ra = ra;
+    f->rb = rb;
+}
 
 static void cone_frame(const iris_object *o, struct cone_frame *f)
 {
@@ -180,11 +207,11 @@ static void cone_frame(const iris_object *o, struct cone_frame *f)
         f->a = o->u.cylinder.base;
         b = o->u.cylinder.cap;
         f->ra = f->rb = o->u.cylinder.radius;
+        f->empty = false;
     } else {
         f->a = o->u.cone.base;
         b = o->u.cone.cap;
-        f->ra = fabs(o->u.cone.base_radius);
-        f->rb = fabs(o->u.cone.cap_radius);
+        cone_radii(o, f);
     }
     vec3 ax = v3_sub(b, f->a);
     f->len = v3_len(ax);
@@ -197,6 +224,8 @@ void geom_cone_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
 {
     struct cone_frame f;
     cone_frame(o, &f);
+    if (f.empty)
+        return;
     vec3 q = v3_sub(ro, f.a);
     double ox = v3_dot(q, f.u), oy = v3_dot(q, f.v), oz = v3_dot(q, f.w);
     double dx = v3_dot(rd, f.u), dy = v3_dot(rd, f.v), dz = v3_dot(rd, f.w);
@@ -212,7 +241,8 @@ void geom_cone_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
     for (int i = 0; i < n; i++) {
         double t = r[i], z = oz + t * dz;
         double rz = f.ra + k * z;
-        if (!(t > t0 && t < t1) || z < 0 || z > f.len || rz < 0)
+        /* both nappes: rz < 0 is the far side of a double cone */
+        if (!(t > t0 && t < t1) || z < 0 || z > f.len)
             continue;
         double x = ox + t * dx, y = oy + t * dy;
         vec3 nn = v3_add(v3_add(v3_scale(f.u, x), v3_scale(f.v, y)),
@@ -224,7 +254,7 @@ void geom_cone_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
     if (o->open || dz == 0)
         return;
     for (int end = 0; end < 2; end++) {
-        double zc = end ? f.len : 0, rc = end ? f.rb : f.ra;
+        double zc = end ? f.len : 0, rc = fabs(end ? f.rb : f.ra);
         double t = (zc - oz) / dz;
         if (!(t > t0 && t < t1) || rc <= 0)
             continue;
@@ -234,17 +264,45 @@ void geom_cone_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
     }
 }
 
+/*
+** Inside test with POV-Ray's tolerance (Cone::Inside). POV-Ray tests in
+** the shape's unit frame: a cylinder runs from z = 0 to 1 with radius 1;
+** a cone has its apex at the origin and its wider end at z = 1 with
+** radius 1 (the narrower at z = dist, the ratio of the radii, negative
+** for a double cone), and it is inside where w² <= z². A closed shape is
+** shrunk by EPSILON (1e-10) in those units, an open one grown by it: so
+** a point on a closed cylinder's cap is outside it, whatever the last
+** bit of its computed coordinates. shapes3.inc's Round_Conic_Prism merges
+** a cylinder whose cap lies in a box's face: POV-Ray keeps the box's
+** face (outside the cylinder by the margin) and drops the cap (inside
+** the closed box); an exact test dropped both where rounding put the
+** point inside the cylinder, and left a hole in the end face.
+*/
 bool geom_cone_inside(const iris_object *o, vec3 p)
 {
+    const double eps = 1e-10;  /* POV-Ray's EPSILON */
     struct cone_frame f;
     cone_frame(o, &f);
+    if (f.empty)
+        return false;
+    double off = o->open ? eps : -eps;
     vec3 q = v3_sub(p, f.a);
     double z = v3_dot(q, f.w);
-    if (!(z > 0 && z < f.len))
-        return false;
     double x = v3_dot(q, f.u), y = v3_dot(q, f.v);
-    double rz = f.ra + (f.rb - f.ra) * z / f.len;
-    return x * x + y * y < rz * rz;
+    if (f.ra == f.rb) {                         /* a cylinder */
+        double zn = z / f.len, r = fabs(f.ra);
+        double w2 = (x * x + y * y) / (r * r);
+        return !(w2 > 1 + off || zn < -off || zn > 1 + off);
+    }
+    /* The wider end (larger signed radius) at zw, the other at zs */
+    bool cap_wide = f.rb > f.ra;
+    double rw = cap_wide ? f.rb : f.ra, rs = cap_wide ? f.ra : f.rb;
+    double s = cap_wide ? z : f.len - z;        /* from the narrow end */
+    double tlen = f.len * rw / (rw - rs);       /* apex to wide end */
+    double dist = rs / rw;
+    double zn = dist + s / tlen;                /* apex 0, wide end 1 */
+    double w2 = (x * x + y * y) / (rw * rw);
+    return !(w2 > zn * zn + off || zn < dist - off || zn > 1 + off);
 }
 
 void geom_disc_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,

@@ -4,7 +4,8 @@
 **
 ** The normal is taken into pattern space (the transpose of the pattern's
 ** local-to-world matrix), normalised, displaced there, and taken back with
-** the inverse transpose, so bumps keep their look under any scale. The
+** the inverse transpose, so bumps keep their look under any scale (not
+** so with no_bump_scale, which leaves out the normalising). The
 ** dedicated normal patterns (bumps, dents, wrinkles, ripples, waves,
 ** quilted) add their own displacement vectors; every other pattern is
 ** differentiated numerically on POV-Ray's tetrahedron of four sample
@@ -47,28 +48,33 @@ static vec3 normal_to_world(const iris_transform *t, vec3 n)
 }
 
 /* Warp_Normal: the normal through every transform on the way to pattern
-** space, in the order pat_space() applies them. */
-static vec3 warp_normal(const iris_pattern *pat, vec3 n)
+** space, in the order pat_space() applies them. Normalised before and
+** after unless 'no_bump_scale' (keep): then a pattern scaled by s sees
+** a normal of length ~s and the same displacement, so its bumps grow
+** 1/s times stronger, as in POV-Ray. */
+static vec3 warp_normal(const iris_pattern *pat, vec3 n, bool keep)
 {
-    n = v3_norm(n);
+    if (!keep)
+        n = v3_norm(n);
     if (pat->has_transform)
         n = normal_to_pattern(&pat->transform, n);
     for (int i = pat->n_warps - 1; i >= 0; i--)
         if (pat->warps[i].kind == IRIS_WARP_TRANSFORM)
             n = normal_to_pattern(&pat->warps[i].transform, n);
-    return v3_norm(n);
+    return keep ? n : v3_norm(n);
 }
 
 /* UnWarp_Normal: back to world space, in the reverse order. */
-static vec3 unwarp_normal(const iris_pattern *pat, vec3 n)
+static vec3 unwarp_normal(const iris_pattern *pat, vec3 n, bool keep)
 {
-    n = v3_norm(n);
+    if (!keep)
+        n = v3_norm(n);
     for (int i = 0; i < pat->n_warps; i++)
         if (pat->warps[i].kind == IRIS_WARP_TRANSFORM)
             n = normal_to_world(&pat->warps[i].transform, n);
     if (pat->has_transform)
         n = normal_to_world(&pat->transform, n);
-    return v3_norm(n);
+    return keep ? n : v3_norm(n);
 }
 
 static vec3 waves_normal(const struct mat_ctx *ctx, const iris_normal *nrm,
@@ -216,12 +222,15 @@ static bool is_normal_map(const iris_normal *nrm)
     return nrm->n_entries > 0 && !nrm->is_slope_map;
 }
 
-vec3 mat_perturb_normal(const struct mat_ctx *ctx, const iris_normal *nrm,
-                        const struct mat_point *pt, vec3 n)
+/* Perturb_Normal; 'keep' is no_bump_scale, set on the normal or handed
+** down from a normal_map holding it (POV-Ray's NormalBlendMap::Post). */
+static vec3 perturb(const struct mat_ctx *ctx, const iris_normal *nrm,
+                    const struct mat_point *pt, vec3 n, bool keep)
 {
     if (!nrm || nrm->pattern.kind == IRIS_PAT_NONE)
         return n;
     const iris_pattern *pat = &nrm->pattern;
+    keep = keep || nrm->no_bump_scale;
     if (is_normal_map(nrm) && pat->kind != IRIS_PAT_AVERAGE) {
         /* normal_map: blend the perturbed normals of the two entries */
         double v = pat_value(ctx, pat, pt->p, pt);
@@ -239,10 +248,10 @@ vec3 mat_perturb_normal(const struct mat_ctx *ctx, const iris_normal *nrm,
         /* the entries see the map pattern's warps (pat_warp_world) */
         struct mat_point wpt = *pt;
         wpt.p = pat_warp_world(ctx, pat, pat_input(pat, pt->p, pt));
-        vec3 nc = mat_perturb_normal(ctx, nrm->entries[c].normal, &wpt, n);
+        vec3 nc = perturb(ctx, nrm->entries[c].normal, &wpt, n, keep);
         if (p == c)
             return v3_norm(nc);
-        vec3 np = mat_perturb_normal(ctx, nrm->entries[p].normal, &wpt, n);
+        vec3 np = perturb(ctx, nrm->entries[p].normal, &wpt, n, keep);
         double t = (v - nrm->entries[p].value) /
                    (nrm->entries[c].value - nrm->entries[p].value);
         return v3_norm(v3_add(v3_scale(np, 1 - t), v3_scale(nc, t)));
@@ -254,13 +263,13 @@ vec3 mat_perturb_normal(const struct mat_ctx *ctx, const iris_normal *nrm,
         wpt.p = pat_warp_world(ctx, pat, pat_input(pat, pt->p, pt));
         for (int i = 0; i < nrm->n_entries; i++) {
             double w = nrm->entries[i].value != 0 ? nrm->entries[i].value : 1;
-            sum = v3_madd(sum, mat_perturb_normal(ctx, nrm->entries[i].normal,
-                                                  &wpt, n), w);
+            sum = v3_madd(sum, perturb(ctx, nrm->entries[i].normal, &wpt,
+                                       n, keep), w);
             total += w;
         }
         return total > 0 ? v3_norm(sum) : n;
     }
-    vec3 np = warp_normal(pat, n);
+    vec3 np = warp_normal(pat, n, keep);
     vec3 q = pat_space(ctx, pat, pat_input(pat, pt->p, pt));
     switch (pat->kind) {
     case IRIS_PAT_IMAGE_MAP:
@@ -299,8 +308,17 @@ vec3 mat_perturb_normal(const struct mat_ctx *ctx, const iris_normal *nrm,
         np = pattern_normal(ctx, nrm, q, np, pt);
         break;
     }
-    vec3 r = unwarp_normal(pat, np);
+    vec3 r = unwarp_normal(pat, np, keep);
     if (!(isfinite(r.x) && isfinite(r.y) && isfinite(r.z)) || v3_len2(r) == 0)
         return n;
     return r;
+}
+
+vec3 mat_perturb_normal(const struct mat_ctx *ctx, const iris_normal *nrm,
+                        const struct mat_point *pt, vec3 n)
+{
+    vec3 r = perturb(ctx, nrm, pt, n, false);
+    /* POV-Ray's Trace normalises a layer's normal after a no_bump_scale
+    ** normal; the others come back normalised already */
+    return nrm && nrm->no_bump_scale ? v3_norm(r) : r;
 }

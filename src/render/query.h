@@ -24,6 +24,17 @@ struct rquery {
     ** none (unbounded, or not known). May be NULL. */
     bool (*inside_bounds)(const void *impl, const iris_object *obj,
                           vec3 *lo, vec3 *hi);
+    /* The test of one primitive, a hit's 'prim' (accel_prim_hit): true
+    ** when it has a crossing in (tmin, tmax), its t in '*t'; 'intersect'
+    ** with the same arguments then hits something at or before *t. May
+    ** be NULL (no shadow cache: trace.c point_shadow), and then so is
+    ** intersect_prim. */
+    bool (*prim_hit)(const void *impl, const void *prim, const ray *r,
+                     double tmin, double tmax, unsigned skip, double *t);
+    /* 'intersect' that also sets the hit's 'prim' (accel_intersect_prim);
+    ** set together with prim_hit */
+    bool (*intersect_prim)(const void *impl, const ray *r, double tmin,
+                           double tmax, unsigned skip, struct hit *h);
 };
 
 #endif

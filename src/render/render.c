@@ -264,7 +264,7 @@ static enum iris_status through_build(const iris_scene *scene,
         th->q[th->n] = (struct rquery){ th->acc[th->n], accel_isect,
                                         accel_in,
                                         accel_epsilon(th->acc[th->n]),
-                                        accel_inside_bounds };
+                                        accel_inside_bounds, NULL, NULL };
         tr->lights[i].through = &th->q[th->n];
         th->n++;
     }
@@ -339,7 +339,11 @@ enum iris_status iris_render(const iris_scene *scene,
     mat_ctx_set_quick_colour(mat, (trace_quality_flags(plan.quality) &
                                    TQ_QUICK_COLOUR) != 0);
     struct rquery q = { acc, accel_isect, accel_in, accel_epsilon(acc),
-                        accel_inside_bounds };
+                        accel_inside_bounds, NULL, NULL };
+    if (accel_prim_cache_pays(acc)) {
+        q.prim_hit = accel_prim_hit;
+        q.intersect_prim = accel_intersect_prim;
+    }
     struct tracer tr;
     struct through th;
     memset(&th, 0, sizeof th);

@@ -77,6 +77,12 @@ struct tracer {
     int spectral_min;          /* floor of dispersion samples */
     int max_area_grid;         /* largest size1*size2 of any area light */
     double max_distance;       /* hits farther than this are ignored */
+    /* Every surface a shadow ray can meet is opaque (trace.c
+    ** shadow_opaque_scene) and q.prim_hit exists: a shadow ray is black
+    ** as soon as anything lies in its way, so each context keeps, per
+    ** light, the primitive that last blocked one and tests it first
+    ** (POV-Ray's per-light shadow cache, point_shadow) */
+    bool shadow_cache;
     /* POV-Ray shades in the scene's working gamma space (assumed_gamma,
     ** semantics §3.9); the eye pass turns results into linear light with
     ** v^working_gamma, or, for a pre-3.7 scene without assumed_gamma
@@ -172,6 +178,10 @@ struct trace_ctx {
     uint64_t rays;
     struct trace_counts n;     /* POV-Ray's statistics of these rays */
     bool stopped;              /* the interrupt was seen: no more rays */
+    const void **shadow_prim;  /* per light (t->lights), the primitive
+                                  that last blocked a shadow ray from a
+                                  surface, or NULL; allocated only when
+                                  t->shadow_cache */
     double (*grid)[3];         /* area-light samples, max_area_grid */
     bool *grid_set;
     int gi_depth;              /* > 0 inside a radiosity gather ray */

@@ -397,3 +397,90 @@ function metallic_factor(M, p, a,   x, Fm) {
     if (Fm > 1) Fm = 1
     return 1 + M * (1 - Fm) * (p - 1)
 }
+
+# A ray (PX, PY, DX, DY) carrying power wt meets the floor y = yf if it
+# goes down: binned by |x| (the ray lies in a meridian plane of an
+# axisymmetric scene, so |x| is its distance from the axis) into BIN[]
+# (bins w wide, nb of them).
+function ball_land(wt, yf, w, nb,   x, j) {
+    if (DY >= 0) return
+    x = PX + (yf - PY) * DX / DY; if (x < 0) x = -x
+    j = int(x / w); if (j < nb) BIN[j] += wt
+}
+
+# Every ray of a parallel beam coming down the y axis onto a sphere of
+# radius 1 (centre 0) and relative index n, followed through each branch
+# with its unpolarised Fresnel weight: the outer reflection (total for
+# n < 1 beyond the critical impact parameter b = n), the refraction in,
+# and at each of up to K internal reflections the part that leaves
+# (inside a sphere every crossing meets the surface at the same angle,
+# so the internal reflectance is the same at each). Each branch that
+# leaves downwards lands on the floor y = yf; BIN[j] ends as the mean
+# irradiance over the annulus j w <= rho < (j + 1) w, the beam's being
+# 1. nz zones of b, each of area 2 pi b db.
+function ball_bins(n, yf, w, nb, K, nz,   z, b, db, wt, R0, Ri, ci, k, px, py, dx, dy, j) {
+    for (j = 0; j < nb; j++) BIN[j] = 0
+    db = 1 / nz
+    for (z = 0; z < nz; z++) {
+        b = (z + 0.5) * db; wt = 2 * b * db
+        PX = b; PY = 10; DX = 0; DY = -1; to_circle(0, 1, 0)
+        R0 = fresnel(atan2(b, sqrt(1 - b * b)), 1, n)
+        px = PX; py = PY
+        # the mirror image of (0, -1) in the normal (px, py)
+        DX = 2 * py * px; DY = -1 + 2 * py * py
+        ball_land(wt * R0, yf, w, nb)
+        if (R0 >= 1) continue
+        PX = px; PY = py; DX = 0; DY = -1
+        refract2(1 / n, PX, PY)
+        wt *= 1 - R0
+        for (k = 0; k <= K; k++) {
+            to_circle(0, 1, 1)
+            ci = DX * PX + DY * PY   # cosine to the outward normal
+            Ri = fresnel(atan2(sqrt(1 - ci * ci), ci), n, 1)
+            px = PX; py = PY; dx = DX; dy = DY
+            refract2(n, -PX, -PY); ball_land(wt * (1 - Ri), yf, w, nb)
+            PX = px; PY = py; DX = dx - 2 * ci * px; DY = dy - 2 * ci * py
+            wt *= Ri
+        }
+    }
+    for (j = 0; j < nb; j++) BIN[j] /= (2 * j + 1) * w * w
+}
+
+# The floor inside a mirror ring (tests/optics/scenes/cup.pov: inner
+# radius 1, rim at height H, floor y = 0) under a parallel light at
+# elevation alt degrees coming from -x (D = 0) or a point light at
+# (-D, D tan alt, 0). The wall is sampled on a grid of nphi x nh points
+# (phi in [-1.25, 1.25] rad from the far wall's x = 1, h in [0, H]), each
+# carrying the light's |d.n| per area (over dist^2 for the point light)
+# if the incoming ray clears the near rim (its height where it entered
+# the cylinder r = 1, traced back, is at least H); the mirror image of
+# the ray in the wall's normal goes to the floor. CUP[row] sums what
+# lands in the strip |z| < 0.01, rows 0.01 wide from x = 1 (the image's
+# rows); rays that would meet the wall again are dropped.
+function cup_profile(alt, D, H, nphi, nh,   a, i, k, phi, h, cx, cz, lx, ly, dx, dy, dz, l, dn, t, rx, rz, fx, fz, w, row) {
+    a = alt * atan2(1, 1) / 45
+    for (row = 0; row < 200; row++) CUP[row] = 0
+    lx = -D; ly = D * sin(a) / cos(a)
+    for (i = 0; i < nphi; i++) {
+        phi = (-1 + (2 * i + 1) / nphi) * 1.25
+        cx = cos(phi); cz = sin(phi)
+        for (k = 0; k < nh; k++) {
+            h = (k + 0.5) * H / nh
+            if (D == 0) { dx = cos(a); dy = -sin(a); dz = 0; w = 1 }
+            else {
+                dx = cx - lx; dy = h - ly; dz = cz
+                l = sqrt(dx * dx + dy * dy + dz * dz)
+                dx /= l; dy /= l; dz /= l; w = 1 / (l * l)
+            }
+            dn = -(dx * cx + dz * cz)   # d . the inward normal (-cx, 0, -cz)
+            if (dn >= 0) continue
+            # back along -d to the other crossing of the cylinder r = 1
+            t = 2 * (cx * dx + cz * dz) / (dx * dx + dz * dz)
+            if (h - t * dy < H) continue
+            rx = dx + 2 * dn * cx; rz = dz + 2 * dn * cz
+            t = h / -dy; fx = cx + rx * t; fz = cz + rz * t
+            if (fx * fx + fz * fz > 1 || fz < -0.01 || fz > 0.01) continue
+            CUP[int((1 - fx) / 0.01)] += -dn * w
+        }
+    }
+}

@@ -8,7 +8,7 @@
 # checks, their predictions, tolerances and measured values are listed in
 # docs/optics.md.
 . "$top_srcdir/tests/tap.sh"
-tap_plan 80
+tap_plan 101
 scenes="$top_srcdir/tests/optics/scenes"
 lib="$top_srcdir/tests/optics/optics.awk"
 probe="$top_builddir/tests/optics/imgprobe"
@@ -1200,5 +1200,255 @@ tap_result $ok "camera rays through an N-BK7 lens: the rim's luminance profile w
 set -- $rgb
 tap_ok "camera rays through a lens: red seen farthest out, blue nearest (h R $1 > G $2 > B $3)" \
     awk -v r="$1" -v g="$2" -v b="$3" 'BEGIN { exit !(r > g && g > b && b > 0) }'
+
+
+# ---------------------------------------------------------------------
+# 24. The coffee cup (scenes/cup.pov): a mirror ring (inner radius 1,
+# rim 0.5 high) on the floor, lit over its rim from -x at 20 degrees of
+# elevation by a parallel light, then by a point light at horizontal
+# distance 3 (height 3 tan 20). The wall is vertical, so seen from above
+# every reflected ray is the 2D reflection in a circle and the floor
+# shows the circle's caustic: for parallel light the nephroid, whose
+# cusp lies on the axis R/2 = 0.5 from the centre; for the point light
+# the cusp is the paraxial image of the mirror equation, 1/u + 1/v = 2/R
+# with u = 3 + 1: v = 0.5714, x = 0.4286. The prediction (optics.awk,
+# cup_profile) samples the far wall on a grid, keeps the rays that clear
+# the near rim, reflects each in the wall's normal and bins where it
+# lands in the image's strip |z| < 0.01 (pixel columns 99-100), rows of
+# 0.01 from x = 1: its peak row, the cusp as a 0.01-row profile shows
+# it. First the prediction's own check: its peak lies inside the cusp
+# of the mirror equation (towards the far wall, where the caustic's
+# branches fold together), by 1 to 4 rows. Then the image's peak row
+# within 2 rows of the prediction's (seeds 0-3: the prediction's row or
+# one more, for both lights): the gather's radius (~0.012 here) blurs
+# the cusp by about a row; the parallel and point lights' cusps are 7
+# rows apart, and a reflection in a wrong normal moves it by tens.
+cup_peak() { "$probe" rows "$1" 99 100 | \
+    awk '$1 >= 20 && $1 < 100 { v = $2 + $3 + $4; if (v > m) { m = v; p = $1 } }
+         END { print p }'; }
+"$IRIS" -q "$scenes/cup.pov" +W200 +H200 -o "$tmp/cup0.exr"
+"$IRIS" -q "$scenes/cup.pov" Declare=DIST=3 +W200 +H200 -o "$tmp/cup3.exr"
+set -- $(calc 'for (D = 0; D <= 3; D += 3) {
+        cup_profile(20, D, 0.5, 3000, 300); m = 0
+        for (r = 20; r < 100; r++) if (CUP[r] > m) { m = CUP[r]; pk = r }
+        # v: the distance of the cusp from the far wall, 1/u + 1/v = 2/R
+        v = D ? 1 / (2 - 1 / (D + 1)) : 0.5
+        printf "%d %.2f ", pk, v / 0.01 }
+    print ""') $(cup_peak "$tmp/cup0.exr") $(cup_peak "$tmp/cup3.exr")
+tap_ok "coffee cup prediction: peaks at rows $1 and $3 lie 1-4 rows inside the mirror equation's cusps (rows $2, $4)" \
+    awk -v a="$1" -v b="$2" -v c="$3" -v d="$4" \
+    'BEGIN { exit !(b - a >= 1 && b - a <= 4 && d - c >= 1 && d - c <= 4) }'
+tap_ok "coffee cup, parallel light: the nephroid's cusp at row $5, predicted $1 (R/2: row 50)" \
+    within "$5" "$1" 2
+tap_ok "coffee cup, point light at 3: the cusp at row $6, predicted $3 (mirror equation: row $4)" \
+    within "$6" "$3" 2
+
+# ---------------------------------------------------------------------
+# 25. Nested interiors, spheres (scenes/nested_ball.pov): a sphere of
+# radius 1 over a floor 0.1 below it, in parallel light from above; the
+# floor inside the medium. What bends the light at the sphere is the
+# relative index. The prediction (optics.awk, ball_bins): every ray of
+# the beam traced through the sphere with Snell's law at the relative
+# index, each branch weighted by unpolarised Fresnel: the outer
+# reflection, the refraction in, and the part that leaves at each of up
+# to 10 internal reflections; binned by where it lands; times the
+# block's top face, (1 - R(0)) at normal incidence (1 - 0.02040 water,
+# 1 - 0.04 glass). Read over the disc rho < 0.1 and the annulus
+# 0.2 <= rho < 0.6 (the image's radial profile, 0.01 a ring).
+# (a) A glass ball (1.5) in water (1.333): n = 1.1253, focus 4.5 radii
+# out; the disc (the annulus holds the fold of the weak lens's caustic
+# at 0.53, which the gather blurs outwards) at 1.7135, the ball in air
+# would give 40 there (check 10). Seeds 0-2: 1.6997..1.7091 (~2000
+# photons in the disc); tolerance 2%.
+# (b) An air bubble (1) in glass (1.5): n = 2/3, a diverging lens that
+# totally reflects the beam beyond b = 2/3. The internal reflections,
+# strong near the critical angle, cross the axis near the floor: the
+# disc gets 0.3573 of the beam, 0.2082 without them (K = 0), the annulus
+# 0.1981 (0.1803). Times 0.96: disc 0.3430, annulus 0.1902. The light
+# the bubble sends sideways comes back off the block's side faces 3
+# away (TIR and Fresnel) onto the floor: +2.4..+3.2% in the annulus
+# over seeds 0-2 (+1% with the sides 10 away); the disc, with ~450
+# photons of several branches, -2.8..+5.7%. Tolerances 5% and 8%.
+# (c) The same relative index as a sphere of ior 2/3 in air (no block):
+# disc 0.3524..0.3587, annulus 0.1970..0.1987 over seeds 0-2;
+# tolerances 5% and 1.5%.
+ball_rings() { "$probe" radial "$1" 60 >"$tmp/rings"
+    awk -f "$lib" -f /dev/stdin "$tmp/rings" <<'EOF_RING'
+{ Y = rgb_xy($2, $3, $4); w = 2 * $1 + 1
+  if ($1 < 10) { d += Y * w; dw += w }; if ($1 >= 20) { a += Y * w; aw += w } }
+END { printf "%.5f %.5f\n", d / dw, a / aw }
+EOF_RING
+}
+"$IRIS" -q "$scenes/nested_ball.pov" +W120 +H120 -o "$tmp/nb1.exr"
+"$IRIS" -q "$scenes/nested_ball.pov" Declare=BALL=1 Declare=MED=1.5 \
+    +W120 +H120 -o "$tmp/nb2.exr"
+"$IRIS" -q "$scenes/nested_ball.pov" Declare=BALL=0.666667 Declare=MED=1 \
+    +W120 +H120 -o "$tmp/nb3.exr"
+set -- $(ball_rings "$tmp/nb1.exr") $(ball_rings "$tmp/nb2.exr") \
+    $(ball_rings "$tmp/nb3.exr") $(calc 'nb = 60
+    ball_bins(1.5 / 1.333, -1.1, 0.01, nb, 10, 50000); d = 0
+    for (j = 0; j < 10; j++) d += BIN[j] * (2 * j + 1)
+    printf "%.5f ", d / 100 * (1 - ((1.333 - 1) / 2.333) ^ 2)
+    ball_bins(1 / 1.5, -1.1, 0.01, nb, 10, 50000); d = 0; a = 0
+    for (j = 0; j < 10; j++) d += BIN[j] * (2 * j + 1)
+    for (j = 20; j < nb; j++) a += BIN[j] * (2 * j + 1)
+    printf "%.5f %.5f\n", d / 100, a / 3200')
+tap_ok "glass ball in water: irradiance $1 inside rho 0.1, traced at n = 1.5/1.333 $7" \
+    within "$1" "$7" "$(calc "print $7 * 0.02")"
+tap_ok "air bubble in glass: irradiance $4 over 0.2..0.6, traced at n = 1/1.5 $(calc "print $9 * 0.96")" \
+    within "$4" "$(calc "print $9 * 0.96")" "$(calc "print $9 * 0.96 * 0.05")"
+tap_ok "air bubble in glass: the axial spike of the internal reflections, $3 inside rho 0.1, traced $(calc "print $8 * 0.96")" \
+    within "$3" "$(calc "print $8 * 0.96")" "$(calc "print $8 * 0.96 * 0.08")"
+tap_ok "sphere of ior 2/3 in air: irradiance $6 over 0.2..0.6, traced $9" \
+    within "$6" "$9" "$(calc "print $9 * 0.015")"
+tap_ok "sphere of ior 2/3 in air: $5 inside rho 0.1, traced $8 (0.2082 without internal reflections)" \
+    within "$5" "$8" "$(calc "print $8 * 0.05")"
+
+# ---------------------------------------------------------------------
+# 26. Photon keywords (scenes/photon_flags.pov): a parallel white light
+# from above, a floor lit by photons under a slab of index 1 (x < 0) and
+# directly beside it. Read: the floor under the plate's middle (rows
+# 30-69, x in -1.39..-0.61) and beside the slab (rows 110-189); the
+# photon counts from --stats. Expectations: (1) an opaque no_shadow
+# plate over the slab changes nothing (photons skip no_shadow objects,
+# as POV-Ray's do): within 1% of the plain scene (photon noise: each
+# window has ~8000 photons on the spacing's lattice; the plain floor is
+# 1.0004, POV-Ray's 1.0020); (2) the plate without no_shadow: nothing
+# under its middle but the blur of the gather across its edges, below
+# 0.02 (measured 0.0071; POV-Ray 0.0042); (3) a clear grey plate
+# (filter 0.6) with 'photons { pass_through }': the photons go straight
+# on, filtered at both of its faces, 0.6^2 = 0.36 (POV-Ray: 0.394 for
+# its colour <1, 0.5, 0.2> squared; the grey plate keeps Burns' curves
+# out of it), 1%; (4) 'target 0.5': half the spacing, four times the
+# photons (POV-Ray: 252497 against 62903 emitted, 4.014), within 2%,
+# the floor still 1 within 1%; (5) 'count 20000' emits what POV-Ray 3.7
+# emits for it (its estimate, semantics §2.4): 26881, within 1%;
+# (6) 'max_trace_level 1' with a slab of 1.5 and (7) a floor with
+# 'collect off': no photon stored, and the floor under the slab keeps
+# the direct light, 1 (POV-Ray's image: 1.0000 both).
+flags_win() { "$probe" mean "$1" 0 "$2" 19 "$3" >"$tmp/win"
+    awk -f "$lib" -f /dev/stdin "$tmp/win" <<'EOF_WIN'
+{ printf "%.5f\n", rgb_xy($1, $2, $3) }
+EOF_WIN
+}
+stat_of() { tr ',' '\n' <"$1" | awk -F: -v k="\"$2\"" '$1 ~ k { gsub(/[ }]/, "", $2); print $2 }'; }
+for f in 0 1 2 3 4 5 6 7; do
+    "$IRIS" -q "$scenes/photon_flags.pov" Declare=FLAG=$f +W20 +H200 \
+        -o "$tmp/flag$f.exr" --stats="$tmp/flag$f.json"
+    eval "u$f=\$(flags_win \"\$tmp/flag$f.exr\" 30 69)"
+    eval "b$f=\$(flags_win \"\$tmp/flag$f.exr\" 110 189)"
+    eval "e$f=\$(stat_of \"\$tmp/flag$f.json\" photons_emitted)"
+    eval "s$f=\$(stat_of \"\$tmp/flag$f.json\" photons_stored)"
+done
+tap_comment "photon keywords: plain floor under the slab $u0, beside it $b0"
+tap_ok "no_shadow plate: photons skip it, the floor under it $u1 (plain $u0)" \
+    within "$u1" "$u0" 0.01
+tap_ok "opaque plate: its shadow under the slab $u2 (< 0.02)" \
+    awk -v v="$u2" 'BEGIN { exit !(v >= 0 && v < 0.02) }'
+tap_ok "pass_through plate of filter 0.6: the photons through both faces $u3 (0.36)" \
+    within "$u3" 0.36 0.0036
+tap_ok "target 0.5: $e4 photons emitted, $(calc "printf \"%.4f\", $e4 / $e0") times the $e0 of the plain spacing (4), the floor $u4" \
+    awk -v r="$(calc "print $e4 / $e0")" -v u="$u4" \
+    'BEGIN { exit !(r > 3.92 && r < 4.08 && u > 0.99 && u < 1.01) }'
+tap_ok "count 20000: $e5 photons emitted (POV-Ray 3.7: 26881)" \
+    within "$e5" 26881 269
+tap_ok "photon max_trace_level 1 and collect off: $s6 and $s7 stored, the floor $u6 and $u7 (direct light, 1)" \
+    awk -v a="$s6" -v b="$s7" -v c="$u6" -v d="$u7" \
+    'BEGIN { exit !(a == 0 && b == 0 && c > 0.999 && c < 1.001 && d > 0.999 && d < 1.001) }'
+
+# ---------------------------------------------------------------------
+# 27. A parabolic mirror (scenes/parabola.pov): a trough y = A x^2, a
+# quadric cut by clipped_by planes at its rim and ends, as users write
+# one, in parallel light from above. Every reflected ray passes through
+# the focal line y = 1/(4A): the screen x = 0, which contains the line,
+# is lit only along it. The rows' luminance centroid (0.002 a row, the
+# view centred on 1/(4A)) within a quarter row (0.0005) of the focus,
+# for A = 0.5 and 1 (f = 0.5, 0.25): the photons land on the line
+# itself, so the gather's blur is symmetric about it (measured: 0 rows
+# off); a focus at the sphere's R/2 instead of the parabola's would miss
+# by rows, and before session 10 the clipped quadric had no box, so it
+# got no photons at all (an empty screen fails: no centroid). Then the
+# trough for A = 0.5 bounded_by a box instead of clipped (BOUND=1), as
+# shapes_old.inc's users bound a quadric: the same focus (POV-Ray stores
+# 160174 photons for it against 160010 clipped); before session 10 such
+# a quadric had no box either and got no photons.
+for AB in 0.5:0 1:0 0.5:1; do
+    A=${AB%:*} B=${AB#*:}
+    "$IRIS" -q "$scenes/parabola.pov" Declare=A=$A Declare=BOUND=$B \
+        +W40 +H200 -o "$tmp/para.exr"
+    set -- $("$probe" rows "$tmp/para.exr" 0 39 | awk -v A=$A '
+        { s = $2 + $3 + $4; S += s * $1; W += s }
+        END { f = 1 / (4 * A); if (W > 0) printf "%.5f %.5f\n", f + 0.2 - (S / W + 0.5) * 0.002, f
+              else print "none", f }')
+    tap_ok "parabolic mirror A = $A$([ "$B" = 1 ] && echo ", bounded_by"): the light meets at y = $1, the focus 1/(4A) = $2" \
+        within "$1" "$2" 0.0005
+done
+
+# ---------------------------------------------------------------------
+# 28. A spotlight's photons stay inside its cone (scenes/photon_lights.pov,
+# LIGHT=5: radius 10, falloff 20, tightness 0, 3 above the floor,
+# pointing down; check 13's layout): the cone meets the floor at
+# |x| = 3 tan 20 = 1.092. Under the slab (photons): beyond x = -1.14
+# (0.05 outside the cone: the gather's reach, ~0.03 here) nothing, below
+# 0.002 (measured 4e-5; 0.0009 at 0.003 outside the edge); inside, in the
+# bins of check 13 over -1.0 <= x < -0.4 (the smoothstep between the
+# radius at |x| = 0.53 and the falloff), POV-Ray's s(t) cos within 1.5%
+# (check 13's tolerance); and the direct half beyond the cone exactly 0.
+"$IRIS" -q "$scenes/photon_lights.pov" Declare=LIGHT=5 +W4 +H200 \
+    -o "$tmp/spot.exr"
+"$probe" rows "$tmp/spot.exr" 1 2 >"$tmp/spot.rows"
+set -- $(awk -f "$lib" -f /dev/stdin "$tmp/spot.rows" <<'EOF_SPOT'
+function pred(x,   z, d2, k, cr, cf, t) {
+    z = 0.025; d2 = 9 + x * x + z * z; k = 3 / sqrt(d2)
+    cr = cos(10 * atan2(1, 1) / 45); cf = cos(20 * atan2(1, 1) / 45)
+    if (k >= cr) return k
+    t = (k - cf) / (cr - cf)
+    return t <= 0 ? 0 : k * (3 * t * t - 2 * t * t * t)
+}
+{
+    x = -2 + ($1 + 0.5) * 0.02; Y = rgb_xy($2, $3, $4) / 2
+    if (x < -1.14 && Y > out) out = Y
+    if (x > 1.14 && Y > dout) dout = Y
+    if (x >= -1.0 && x < -0.4) { b = int((x + 1.0) / 0.2); SY[b] += Y; SP[b] += pred(x) }
+}
+END {
+    for (b = 0; b < 3; b++) { e = SY[b] / SP[b] - 1; if (e < 0) e = -e; if (e > w) w = e }
+    printf "%.5f %.4f %.5f\n", out, w, dout
+}
+EOF_SPOT
+)
+tap_ok "spotlight photons: $1 outside the cone (< 0.002), the edge's bins within $2 of the smoothstep (1.5%), direct $3 outside" \
+    awk -v o="$1" -v w="$2" -v d="$3" \
+    'BEGIN { exit !(o >= 0 && o < 0.002 && w <= 0.015 && d == 0) }'
+
+# ---------------------------------------------------------------------
+# 29. split_union for photon targets (scenes/split_union.pov): two glass
+# balls of radius 0.5 two apart in one target union. POV-Ray links a
+# union with split_union on (its default) to the scene as its children,
+# so each ball is a light x target pair with its own bounding sphere
+# (radius 0.866); split_union off shoots at the union's (1.658). With
+# 'autostop 1' both shoot every ring, so the emitted counts are POV-Ray
+# 3.7's own: 46992 split and 86934 off at spacing 0.01, and 20047 and
+# 20319 for 'count 20000' (its count -> spacing estimate sums the
+# pairs' spheres), within 0.2% (less than one ring: the layout is
+# deterministic; iris gives them exactly). Before session 10 iris aimed
+# at the union's sphere in both modes (86934 and 20319 split), which
+# fails. And the count's finer spacing when split: the stored photons,
+# split over off, 1.834 in POV-Ray (13119 / 7155), within 3% (each
+# ~3000-5500 photons on a jittered lattice: ~2% at 2 sigma of Poisson
+# noise, which overstates a lattice's); aiming at the union gives 1.
+for f in 1.0 0.0 1.20000 0.20000; do
+    "$IRIS" -q "$scenes/split_union.pov" Declare=SPLIT=${f%%.*} \
+        Declare=COUNT=${f#*.} +W4 +H4 -o "$tmp/su.exr" --stats="$tmp/su.json"
+    k=${f%%.*}_${f#*.}
+    eval "se$k=\$(stat_of \"\$tmp/su.json\" photons_emitted)"
+    eval "ss$k=\$(stat_of \"\$tmp/su.json\" photons_stored)"
+done
+tap_ok "split_union at spacing 0.01: $se1_0 photons emitted split, $se0_0 off (POV-Ray 3.7: 46992, 86934)" \
+    eval 'within "$se1_0" 46992 94 && within "$se0_0" 86934 174'
+tap_ok "split_union with count 20000: $se1_20000 emitted split, $se0_20000 off (POV-Ray 3.7: 20047, 20319)" \
+    eval 'within "$se1_20000" 20047 40 && within "$se0_20000" 20319 41'
+tap_ok "split_union with count 20000: stored split over off $(calc "printf \"%.4f\", $ss1_20000 / $ss0_20000") (POV-Ray 1.834)" \
+    within "$(calc "print $ss1_20000 / $ss0_20000")" 1.834 0.055
 
 exit $((tap_failed > 0))

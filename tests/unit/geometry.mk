@@ -45,3 +45,9 @@ tests_unit_test_geom_runs_SOURCES = tests/unit/test_geom_runs.c \
 	tests/testutil.h
 tests_unit_test_geom_runs_CFLAGS = $(TEST_CFLAGS)
 tests_unit_test_geom_runs_LDADD = $(TEST_LDADD)
+check_PROGRAMS += tests/unit/test_accel_prim
+TESTS += tests/unit/test_accel_prim
+tests_unit_test_accel_prim_SOURCES = tests/unit/test_accel_prim.c \
+	tests/testutil.h tests/scene_builder.h
+tests_unit_test_accel_prim_CFLAGS = $(TEST_CFLAGS)
+tests_unit_test_accel_prim_LDADD = $(TEST_LDADD)

@@ -100,6 +100,8 @@ void dbl_query(const struct dbl_scene *d, struct rquery *q)
     q->inside = dbl_inside;
     q->eps = 1e-6;
     q->inside_bounds = NULL;
+    q->prim_hit = NULL;
+    q->intersect_prim = NULL;
 }
 
 void dbl_shoot(const struct tracer *t, struct trace_ctx *c, vec3 o, vec3 d,

@@ -356,6 +356,48 @@ static void test_cone(void **state)
     assert_dir(h[0].n, v3(0, -1, 0), 1e-12);
 }
 
+/* POV-Ray's Cone::Inside works in the shape's unit frame (a cylinder from
+** z = 0 to 1 of radius 1; a cone with its apex at 0 and its wider end at
+** z = 1 of radius 1) and shrinks a closed shape by EPSILON = 1e-10 there,
+** grows an open one by it. Points 1e-12 from a cap or side are on the
+** far side of that margin, where an exact test answers the opposite;
+** those 1e-9 inside are inside either way. */
+static void test_cone_inside_margin(void **state)
+{
+    (void)state;
+    iris_object c = mk(IRIS_OBJ_CYLINDER);
+    c.u.cylinder.base = v3(0, 0, 0);
+    c.u.cylinder.cap = v3(0, 2, 0);
+    c.u.cylinder.radius = 0.5;
+    assert_false(geom_inside(&c, NULL, v3(0, 2 - 1e-12, 0)));
+    assert_false(geom_inside(&c, NULL, v3(0, 1e-12, 0)));
+    assert_false(geom_inside(&c, NULL, v3(0.5 - 1e-12, 1, 0)));
+    assert_true(geom_inside(&c, NULL, v3(0, 2 - 1e-9, 0)));
+    assert_true(geom_inside(&c, NULL, v3(0.5 - 1e-9, 1, 0)));
+    c.open = true;
+    assert_true(geom_inside(&c, NULL, v3(0, 2 + 1e-12, 0)));
+    assert_false(geom_inside(&c, NULL, v3(0, 2 + 1e-9, 0)));
+
+    /* r = 1 at y = 0 to 0.5 at y = 2: apex at y = 4, dist = 0.5 */
+    iris_object k = mk(IRIS_OBJ_CONE);
+    k.u.cone.base = v3(0, 0, 0);
+    k.u.cone.cap = v3(0, 2, 0);
+    k.u.cone.base_radius = 1;
+    k.u.cone.cap_radius = 0.5;
+    assert_false(geom_inside(&k, NULL, v3(0, 1e-12, 0)));
+    assert_false(geom_inside(&k, NULL, v3(0, 2 - 1e-12, 0)));
+    assert_false(geom_inside(&k, NULL, v3(0.75 - 1e-12, 1, 0)));
+    assert_true(geom_inside(&k, NULL, v3(0.74, 1, 0)));
+    assert_true(geom_inside(&k, NULL, v3(0, 1e-9, 0)));
+    /* A double cone, r = -0.5 at y = 0 to 1 at y = 2 (zero at y = 2/3):
+    ** |r(0.3)| = 0.275, |r(0.6)| = 0.05 */
+    k.u.cone.base_radius = -0.5;
+    k.u.cone.cap_radius = 1;
+    assert_true(geom_inside(&k, NULL, v3(0.2, 0.3, 0)));
+    assert_false(geom_inside(&k, NULL, v3(0.2, 0.6, 0)));
+    assert_true(geom_inside(&k, NULL, v3(0.2, 1.5, 0)));
+}
+
 /* Torus R=2, r=0.5 about y: a ray along x meets radii 2.5, 1.5, 1.5, 2.5.
 ** Edge-on it is a thin quartic case; 1e-9 is far above double rounding of
 ** the refined roots. */
@@ -1150,6 +1192,7 @@ int main(void)
         cmocka_unit_test(test_box),
         cmocka_unit_test(test_cylinder),
         cmocka_unit_test(test_cone),
+        cmocka_unit_test(test_cone_inside_margin),
         cmocka_unit_test(test_torus),
         cmocka_unit_test(test_poly),
         cmocka_unit_test(test_blob),

@@ -11,7 +11,9 @@
 // fade_power 2; 2 spotlight (radius 20, falloff 40, tightness 5,
 // pointing down); 3 cylinder light (radius 1, falloff 1.6, tightness 2,
 // pointing down); 4 area light 1 x 1, 5 x 5, its photons shot from every
-// element ('photons { area_light }').
+// element ('photons { area_light }'); 5 a narrow spotlight (radius 10,
+// falloff 20, tightness 0, pointing down: its cone meets the floor at
+// |x| = 3 tan 20 = 1.092, inside the view).
 #version 3.7;
 #ifndef (LIGHT) #declare LIGHT = 1; #end
 global_settings {
@@ -31,6 +33,8 @@ light_source { <0, 3, 0> color rgb 1
     #case (3) cylinder point_at <0, 0, 0> radius 1 falloff 1.6 tightness 2
       #break
     #case (4) area_light <1, 0, 0>, <0, 0, 1>, 5, 5 #break
+    #case (5) spotlight point_at <0, 0, 0> radius 10 falloff 20 tightness 0
+      #break
   #end
   photons { refraction on reflection on #if (LIGHT = 4) area_light #end }
 }
