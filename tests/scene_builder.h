@@ -49,6 +49,27 @@ static inline iris_object *sphere(iris_scene *sc, vec3 c, double r)
     return o;
 }
 
+static inline iris_object *box_object(iris_scene *sc, vec3 lo, vec3 hi)
+{
+    iris_object *o = obj(sc, IRIS_OBJ_BOX);
+    o->u.box.lo = lo;
+    o->u.box.hi = hi;
+    return o;
+}
+
+/* A CSG object of kind 'k' (union, intersection, ...) of 'a' and 'b'. */
+static inline iris_object *csg_pair(iris_scene *sc, enum iris_object_kind k,
+                                    iris_object *a, iris_object *b)
+{
+    iris_object *o = obj(sc, k);
+    o->texture = NULL;
+    o->u.csg.n_children = 2;
+    o->u.csg.children = arena_array(sc->arena, 2, sizeof(iris_object *));
+    o->u.csg.children[0] = a;
+    o->u.csg.children[1] = b;
+    return o;
+}
+
 /* Appends transform 'x' after the object's own (POV-Ray order). */
 static inline void apply(iris_object *o, const xform *x)
 {

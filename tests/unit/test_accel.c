@@ -29,26 +29,6 @@ static void scene_free(iris_scene *sc)
     arena_destroy(sc->arena);
 }
 
-static iris_object *box(iris_scene *sc, vec3 lo, vec3 hi)
-{
-    iris_object *o = obj(sc, IRIS_OBJ_BOX);
-    o->u.box.lo = lo;
-    o->u.box.hi = hi;
-    return o;
-}
-
-static iris_object *csg(iris_scene *sc, enum iris_object_kind k,
-                        iris_object *a, iris_object *b)
-{
-    iris_object *o = obj(sc, k);
-    o->texture = NULL;
-    o->u.csg.n_children = 2;
-    o->u.csg.children = arena_array(sc->arena, 2, sizeof(iris_object *));
-    o->u.csg.children[0] = a;
-    o->u.csg.children[1] = b;
-    return o;
-}
-
 static bool shoot(const struct accel *a, vec3 o, vec3 d, struct hit *h)
 {
     ray r = { o, v3_norm(d) };
@@ -153,7 +133,7 @@ static void test_difference(void **state)
     iris_object *big = sphere(sc, v3(0, 0, 0), 2);
     iris_object *bite = sphere(sc, v3(0, 0, -2), 1);
     bite->texture = &tex_b;
-    iris_object *d = add(sc, csg(sc, IRIS_OBJ_DIFFERENCE, big, bite));
+    iris_object *d = add(sc, csg_pair(sc, IRIS_OBJ_DIFFERENCE, big, bite));
     struct accel *a = build(sc);
     struct hit h;
     assert_true(shoot(a, v3(0, 0, -5), v3(0, 0, 1), &h));
@@ -186,9 +166,9 @@ static void test_intersection(void **state)
 {
     (void)state;
     iris_scene *sc = scene_new();
-    iris_object *b = box(sc, v3(-1, -1, -1), v3(1, 1, 1));
+    iris_object *b = box_object(sc, v3(-1, -1, -1), v3(1, 1, 1));
     iris_object *s = sphere(sc, v3(0, 0, 0), 1.2);
-    iris_object *i = add(sc, csg(sc, IRIS_OBJ_INTERSECTION, b, s));
+    iris_object *i = add(sc, csg_pair(sc, IRIS_OBJ_INTERSECTION, b, s));
     struct accel *a = build(sc);
     struct hit h;
     assert_true(shoot(a, v3(0, 0, -5), v3(0, 0, 1), &h));
@@ -215,7 +195,7 @@ static void test_merge(void **state)
     (void)state;
     for (int merge = 0; merge < 2; merge++) {
         iris_scene *sc = scene_new();
-        add(sc, csg(sc, merge ? IRIS_OBJ_MERGE : IRIS_OBJ_UNION,
+        add(sc, csg_pair(sc, merge ? IRIS_OBJ_MERGE : IRIS_OBJ_UNION,
                     sphere(sc, v3(-0.5, 0, 0), 1),
                     sphere(sc, v3(0.5, 0, 0), 1)));
         struct accel *a = build(sc);
@@ -247,7 +227,7 @@ static void test_inverse(void **state)
     scene_free(sc);
 
     sc = scene_new();
-    iris_object *u = add(sc, csg(sc, IRIS_OBJ_UNION,
+    iris_object *u = add(sc, csg_pair(sc, IRIS_OBJ_UNION,
                                  sphere(sc, v3(-0.5, 0, 0), 1),
                                  sphere(sc, v3(0.5, 0, 0), 1)));
     u->inverse = true;
@@ -414,7 +394,7 @@ static void test_skip(void **state)
     iris_object *front = add(sc, sphere(sc, v3(0, 0, 0), 1));
     front->no_shadow = true;
     iris_object *back = add(sc, sphere(sc, v3(0, 0, 5), 1));
-    iris_object *u = add(sc, csg(sc, IRIS_OBJ_MERGE,
+    iris_object *u = add(sc, csg_pair(sc, IRIS_OBJ_MERGE,
                                  sphere(sc, v3(5, 0, 0), 1),
                                  sphere(sc, v3(5, 0, 5), 1)));
     u->no_image = true;
@@ -443,7 +423,7 @@ static iris_scene *mixed_scene(double s)
     iris_object *o[8];
     int n = 0;
     o[n++] = add(sc, sphere(sc, v3(-2, 0, 0), 1));
-    o[n++] = add(sc, box(sc, v3(1, -1, -1), v3(2.5, 0.5, 1)));
+    o[n++] = add(sc, box_object(sc, v3(1, -1, -1), v3(2.5, 0.5, 1)));
     iris_object *t = add(sc, obj(sc, IRIS_OBJ_TORUS));
     t->u.torus.major = 1;
     t->u.torus.minor = 0.3;
@@ -453,8 +433,8 @@ static iris_scene *mixed_scene(double s)
     xf_translate(&x, v3(0, 1.5, 0));
     apply(t, &x);
     o[n++] = t;
-    o[n++] = add(sc, csg(sc, IRIS_OBJ_DIFFERENCE, sphere(sc, v3(0, -1.5, 0), 1),
-                         box(sc, v3(-2, -1.5, -2), v3(0, 0, 0))));
+    o[n++] = add(sc, csg_pair(sc, IRIS_OBJ_DIFFERENCE, sphere(sc, v3(0, -1.5, 0), 1),
+                         box_object(sc, v3(-2, -1.5, -2), v3(0, 0, 0))));
     iris_object *tri = add(sc, obj(sc, IRIS_OBJ_TRIANGLE));
     tri->u.triangle.p[0] = v3(-3, -3, 2);
     tri->u.triangle.p[1] = v3(3, -3, 2);
@@ -785,7 +765,7 @@ static void test_mesh_csg(void **state)
     m->u.mesh.tri_vertices = ci;
     m->u.mesh.inside_vector = v3(0.3, 0.2, 1);
     iris_object *s = sphere(sc, v3(0, 0, 0), 0.6);
-    add(sc, csg(sc, IRIS_OBJ_INTERSECTION, m, s));
+    add(sc, csg_pair(sc, IRIS_OBJ_INTERSECTION, m, s));
     struct accel *a = build(sc);
     struct hit h;
     /* Along z at x=y=0.2: enters the cube at z=0 (inside the sphere) */
@@ -811,7 +791,7 @@ static void test_bad_input(void **state)
     add(sc, sphere(sc, v3(0, 0, 0), NAN));
     add(sc, sphere(sc, v3(0, 0, 0), -1));
     add(sc, sphere(sc, v3(INFINITY, 0, 0), 1));
-    add(sc, box(sc, v3(NAN, 0, 0), v3(1, 1, 1)));
+    add(sc, box_object(sc, v3(NAN, 0, 0), v3(1, 1, 1)));
     iris_object *o = add(sc, obj(sc, IRIS_OBJ_CYLINDER));
     o->u.cylinder.radius = 1; /* zero length */
     o = add(sc, obj(sc, IRIS_OBJ_TORUS)); /* zero radii */
@@ -853,8 +833,8 @@ static void test_bad_input(void **state)
     o = add(sc, obj(sc, IRIS_OBJ_HEIGHT_FIELD));
     o = add(sc, obj(sc, IRIS_OBJ_DIFFERENCE));
     o->u.csg.n_children = 2; /* children NULL */
-    o = add(sc, csg(sc, IRIS_OBJ_INTERSECTION, NULL, NULL));
-    iris_object *cyc = add(sc, csg(sc, IRIS_OBJ_MERGE, NULL, NULL));
+    o = add(sc, csg_pair(sc, IRIS_OBJ_INTERSECTION, NULL, NULL));
+    iris_object *cyc = add(sc, csg_pair(sc, IRIS_OBJ_MERGE, NULL, NULL));
     cyc->u.csg.children[0] = cyc; /* contains itself */
     cyc->u.csg.children[1] = sphere(sc, v3(5, 5, 5), 1);
     iris_object *good = add(sc, sphere(sc, v3(0, 0, 3), 1));

@@ -25,26 +25,6 @@
 
 #include "scene_builder.h"
 
-static iris_object *box(iris_scene *sc, vec3 lo, vec3 hi)
-{
-    iris_object *o = obj(sc, IRIS_OBJ_BOX);
-    o->u.box.lo = lo;
-    o->u.box.hi = hi;
-    return o;
-}
-
-static iris_object *csg(iris_scene *sc, enum iris_object_kind k,
-                        iris_object *a, iris_object *b)
-{
-    iris_object *o = obj(sc, k);
-    o->texture = NULL;
-    o->u.csg.n_children = 2;
-    o->u.csg.children = arena_array(sc->arena, 2, sizeof(iris_object *));
-    o->u.csg.children[0] = a;
-    o->u.csg.children[1] = b;
-    return o;
-}
-
 /* 'n_spheres' spheres on a grid, a box with a sphere cut out, an
 ** intersection, a sphere clipped by a box, a no_shadow sphere and a
 ** floor plane, in the box -4..4. */
@@ -54,14 +34,14 @@ static iris_scene *make_scene(int n_spheres, iris_object **noshadow)
     for (int i = 0; i < n_spheres; i++)
         add(sc, sphere(sc, v3(-3 + 2 * (i % 4), 0.5 * (i / 4), 2 - (i % 3)),
                        0.45));
-    add(sc, csg(sc, IRIS_OBJ_DIFFERENCE, box(sc, v3(-1, 0, -1), v3(1, 2, 1)),
+    add(sc, csg_pair(sc, IRIS_OBJ_DIFFERENCE, box_object(sc, v3(-1, 0, -1), v3(1, 2, 1)),
                 sphere(sc, v3(0, 2, 0), 1.2)));
-    add(sc, csg(sc, IRIS_OBJ_INTERSECTION, sphere(sc, v3(2, 1, -2), 1),
+    add(sc, csg_pair(sc, IRIS_OBJ_INTERSECTION, sphere(sc, v3(2, 1, -2), 1),
                 sphere(sc, v3(2.8, 1, -2), 1)));
     iris_object *cl = add(sc, sphere(sc, v3(-2, 1, -2), 1));
     cl->n_clipped_by = 1;
     cl->clipped_by = arena_array(sc->arena, 1, sizeof(iris_object *));
-    cl->clipped_by[0] = box(sc, v3(-3, 0, -3), v3(-2, 3, -1));
+    cl->clipped_by[0] = box_object(sc, v3(-3, 0, -3), v3(-2, 3, -1));
     *noshadow = add(sc, sphere(sc, v3(0, 3, -3), 0.7));
     (*noshadow)->no_shadow = true;
     iris_object *pl = add(sc, obj(sc, IRIS_OBJ_PLANE));
