@@ -488,6 +488,21 @@ static bool object_bounds(const iris_object *o, vec3 *lo, vec3 *hi)
         }
         return true;
     }
+    case IRIS_OBJ_BICUBIC_PATCH: {
+        /* BicubicPatch::Compute_BBox: the box of its 16 control points,
+        ** which a transform moves (the hull, not the surface: a bump
+        ** whose inner points are at z = 1 is boxed to z = 1) */
+        *lo = v3(1e300, 1e300, 1e300);
+        *hi = v3(-1e300, -1e300, -1e300);
+        for (int i = 0; i < 16; i++) {
+            vec3 p = o->u.bicubic.points[i];
+            if (o->has_transform)
+                p = xf_point(&o->transform, p);
+            *lo = v3_min(*lo, p);
+            *hi = v3_max(*hi, p);
+        }
+        return true;
+    }
     case IRIS_OBJ_PRISM:
         if (!prism_box(o, &a, &b))
             goto unknown;

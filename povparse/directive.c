@@ -34,24 +34,33 @@ static void ident(pp_state *ps, const char *what)
     }
 }
 
-/* A float among a directive's own parameters (pp.h's header_frames). */
-static double header_float(pp_state *ps)
+/* 'read' (a float reader) among a directive's own parameters (pp.h's
+** header_frames). */
+static double in_header(pp_state *ps, double (*read)(pp_state *))
 {
     int frames = ps->header_frames, conds = ps->header_conds;
     ps->header_frames = ps->n_frames;
     ps->header_conds = ps->n_conds;
-    double v = pp_float(ps);
+    double v = read(ps);
     ps->header_frames = frames;
     ps->header_conds = conds;
     return v;
 }
 
+/* A float among a directive's own parameters. */
+static double header_float(pp_state *ps)
+{
+    return in_header(ps, pp_float);
+}
+
 /* Parses '(' float ')' as the condition of #if/#while/#switch. */
 static double cond_value(pp_state *ps)
 {
-    /* POV-Ray reads a float here: '#if (A < B)' compares inside the
-    ** parentheses, and a '<' after them starts a vector */
-    return header_float(ps);
+    /* POV-Ray's Parse_Cond_Param reads '(' float ')' and no more: '#if
+    ** (A < B)' compares inside the parentheses, a '<' after them starts
+    ** a vector, and in 'x #if (C) * 2 #end' the '* 2' is the #if's body,
+    ** not part of its condition */
+    return in_header(ps, pp_paren_float);
 }
 
 /* The condition of #if, #elseif or #while: true when further than
@@ -429,6 +438,18 @@ void pp_call_macro(pp_state *ps, const pp_macro *m, const pp_token *call)
     int n = 0;
     if (!pp_accept(ps, T_RPAREN)) {
         for (;;) {
+            if (n == m->n_params && n > 0 && ps->tok.kind == T_COMMA) {
+                /* POV-Ray's Invoke_Macro reads an optional comma after
+                ** every argument, the last too: 'M(1, 2,)' (shapes3.inc's
+                ** Rounded_Tube template, meshmaker's SweepSpline) */
+                ps->no_expand++;
+                pp_next(ps);
+                ps->no_expand--;
+                if (ps->tok.kind == T_RPAREN)
+                    break;
+                pp_error(ps, &ps->tok, "too many parameters in the call of "
+                         "macro '%s' (it takes %d)", m->name, m->n_params);
+            }
             if (n >= m->n_params && n > 0 && ps->tok.kind != T_COMMA) {
                 /* the last argument ended before an operator it does not
                 ** take: 'M(1 < 2)' (POV-Ray: "Expected ')'") */
@@ -586,9 +607,12 @@ static void do_for(pp_state *ps, const pp_token *at)
     pp_expect(ps, T_RPAREN, "')'");
     if (step == 0)
         pp_error(ps, at, "#for step must not be 0");
-    pp_sym *s = sym_lookup(ps, pp_tok_text(ps, &name), name.len);
-    if (!s)
-        s = sym_define(ps, ps->n_scopes - 1, pp_tok_text(ps, &name), name.len);
+    /* POV-Ray's Parse_For_Param: the variable is the current scope's
+    ** (a macro's or include file's, as #local), made there when only an
+    ** outer scope has the name; a global I is left alone by a macro's or
+    ** an include file's '#for (I, ...)' */
+    pp_sym *s = sym_define(ps, ps->n_scopes - 1, pp_tok_text(ps, &name),
+                           name.len);
     s = sym_resolve(s);
     s->val.kind = V_FLOAT;
     s->val.dim = 1;
@@ -1022,6 +1046,10 @@ void pp_directive(pp_state *ps, const pp_token *hash)
         ps->version = v;
         ps->scene->version = v;
         ps->version_set = true;
+        /* POV-Ray's #version picks the default noise generator: 1, the
+        ** original Perlin noise, before 3.5 (tokenize.cpp) */
+        if (!ps->noise_explicit)
+            ps->scene->settings.noise_generator = pp_version_noise(v);
         if (!pp_next_is_directive(ps))
             pp_accept(ps, T_SEMI);
         return;

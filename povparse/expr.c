@@ -249,6 +249,20 @@ static double checked(pp_state *ps, const pp_token *at, double r,
     return r;
 }
 
+/* acos() and asin() of a number outside [-1, 1]: POV-Ray warns
+** "Domain error" and takes the nearest end (acos(1.0000000001) of a dot
+** product of unit vectors is 0, not an error). */
+static double domain_clamp(pp_state *ps, const pp_token *at, double x,
+                           const char *fn)
+{
+    if (x > 1 || x < -1) {
+        pp_warning(ps, at, "domain error in %s(%g): %g used", fn, x,
+                   x > 1 ? 1.0 : -1.0);
+        return x > 1 ? 1 : -1;
+    }
+    return x;
+}
+
 /* rand(): POV-Ray 3.7's generator, so that scenes built from random
 ** numbers come out the same (randomsequence.cpp POV_rand): a 32-bit
 ** linear congruential step s = s * 1812433253 + 12345 (mod 2^32), and
@@ -285,6 +299,15 @@ static const char *fmt_float(pp_state *ps, double f, int len, int prec)
         snprintf(buf, sizeof buf, "%0*.*f", w, prec, f);
     else
         snprintf(buf, sizeof buf, "%*.*f", w, prec, f);
+    /* POV-Ray's Parse_Str formats into 256 bytes and, when %f fills
+    ** them (a number of 255 digits or more: 1e255), formats with %g
+    ** and the same width and precision: str(1e304, 0, 0) is "1e+304" */
+    if (strlen(buf) >= 255) {
+        if (zero)
+            snprintf(buf, sizeof buf, "%0*.*g", w, prec, f);
+        else
+            snprintf(buf, sizeof buf, "%*.*g", w, prec, f);
+    }
     return pp_strdup(ps, buf, strlen(buf));
 }
 
@@ -634,6 +657,20 @@ static pp_value call_fn(pp_state *ps, const iris_fn *fn)
 }
 
 /* A string expression factor: literal, identifier or string function. */
+/* paren_rest: expr_cond ')' -- after the '(' at 'open'. Inside
+** parentheses '<' compares again, even within a vector's components. */
+static pp_value paren_rest(pp_state *ps, const pp_token *open)
+{
+    bool iv = ps->in_vector;
+    ps->in_vector = false;
+    pp_enter(ps, open);
+    pp_value v = expr_cond(ps);
+    pp_leave(ps);
+    ps->in_vector = iv;
+    rparen(ps);
+    return v;
+}
+
 static pp_value factor(pp_state *ps)
 {
     pp_next(ps);
@@ -643,16 +680,8 @@ static pp_value factor(pp_state *ps)
     switch (k) {
     case T_NUMBER: return fval(at.num);
     case T_STRING: return sval(at.str);
-    case T_LPAREN: {
-        bool iv = ps->in_vector;
-        ps->in_vector = false;
-        pp_enter(ps, &at);
-        pp_value v = expr_cond(ps);
-        pp_leave(ps);
-        ps->in_vector = iv;
-        rparen(ps);
-        return v;
-    }
+    case T_LPAREN:
+        return paren_rest(ps, &at);
     case T_LT: {
         /* POV-Ray reads each component as a float (no comparisons) and
         ** the commas between them are optional */
@@ -699,10 +728,35 @@ static pp_value factor(pp_state *ps)
         case V_FUNCTION:
             return call_fn(ps, v.u.fn);
         case V_SPLINE: {
+            /* S(t [, spline_type]): with a type, POV-Ray's
+            ** Parse_Spline_Call evaluates a copy of S of that type */
             lparen(ps);
             double t = pp_float(ps);
+            const pp_spline *s = v.u.spline;
+            if (pp_accept(ps, T_COMMA)) {
+                pp_next(ps);
+                int ty;
+                switch (ps->tok.kind) {
+                case T_LINEAR_SPLINE: ty = IRIS_FN_SPLINE_LINEAR; break;
+                case T_QUADRATIC_SPLINE: ty = IRIS_FN_SPLINE_QUADRATIC; break;
+                case T_CUBIC_SPLINE: ty = IRIS_FN_SPLINE_CUBIC; break;
+                case T_NATURAL_SPLINE: ty = IRIS_FN_SPLINE_NATURAL; break;
+                default: {
+                    char buf[80];
+                    pp_error(ps, &ps->tok, "expected linear_spline, "
+                             "quadratic_spline, cubic_spline or "
+                             "natural_spline, found %s",
+                             pp_tok_name(ps, &ps->tok, buf, sizeof buf));
+                }
+                }
+                pp_spline *c = pp_salloc(ps, sizeof *c);
+                *c = *s;
+                c->type = ty;
+                pp_spline_finish(ps, c);
+                s = c;
+            }
             rparen(ps);
-            return spline_eval(v.u.spline, t);
+            return spline_eval(s, t);
         }
         default:
             pp_error(ps, &at, "expected a numeric expression, but '%.*s' is "
@@ -737,15 +791,24 @@ static pp_value factor(pp_state *ps)
     case T_VERSION: return fval(ps->version);
     case T_NOW: return fval(0);
     case T_ABS: return fval(fabs(arg1(ps)));
-    case T_ACOS: return fval(checked(ps, &at, acos(arg1(ps)), "acos"));
+    case T_ACOS:
+        a = domain_clamp(ps, &at, arg1(ps), "acos");
+        return fval(checked(ps, &at, acos(a), "acos"));
     case T_ACOSH: return fval(checked(ps, &at, acosh(arg1(ps)), "acosh"));
-    case T_ASIN: return fval(checked(ps, &at, asin(arg1(ps)), "asin"));
+    case T_ASIN:
+        a = domain_clamp(ps, &at, arg1(ps), "asin");
+        return fval(checked(ps, &at, asin(a), "asin"));
     case T_ASINH: return fval(asinh(arg1(ps)));
     case T_ATAN: return fval(atan(arg1(ps)));
     case T_ATANH: return fval(checked(ps, &at, atanh(arg1(ps)), "atanh"));
     case T_ATAN2:
         arg2(ps, &a, &b);
-        return fval(a == 0 && b == 0 ? 0 : atan2(a, b));
+        /* POV-Ray: "Domain error in atan2!" when both are within its
+        ** EPSILON (1e-10) of zero */
+        if (!pp_true(a) && !pp_true(b))
+            pp_error(ps, &at, "atan2(%g, %g): domain error (both within 1e-10 "
+                     "of 0)", a, b);
+        return fval(atan2(a, b));
     case T_CEIL: return fval(ceil(arg1(ps)));
     case T_COS: return fval(cos(arg1(ps)));
     case T_COSH: return fval(cosh(arg1(ps)));
@@ -755,7 +818,7 @@ static pp_value factor(pp_state *ps)
         arg2(ps, &a, &b);
         if (b == 0)
             pp_error(ps, &at, "div: division by zero");
-        return fval(trunc(a / b));
+        return fval(trunc(a / b) + 0.0); /* POV-Ray's (int) cast: no -0 */
     case T_MOD:
         arg2(ps, &a, &b);
         if (b == 0)
@@ -763,7 +826,8 @@ static pp_value factor(pp_state *ps)
         return fval(fmod(a, b));
     case T_EXP: return fval(checked(ps, &at, exp(arg1(ps)), "exp"));
     case T_FLOOR: return fval(floor(arg1(ps)));
-    case T_INT: return fval(trunc(arg1(ps)));
+    /* POV-Ray: (DBL)(int)x, so int(-0.5) is 0, not -0 */
+    case T_INT: return fval(trunc(arg1(ps)) + 0.0);
     case T_LN: return fval(checked(ps, &at, log(arg1(ps)), "ln"));
     case T_LOG: return fval(checked(ps, &at, log10(arg1(ps)), "log"));
     case T_SQRT: return fval(checked(ps, &at, sqrt(arg1(ps)), "sqrt"));
@@ -774,6 +838,8 @@ static pp_value factor(pp_state *ps)
     case T_TANH: return fval(tanh(arg1(ps)));
     case T_POW:
         arg2(ps, &a, &b);
+        if (a == 0 && b == 0) /* POV-Ray: "Domain error." */
+            pp_error(ps, &at, "pow(0, 0): domain error");
         return fval(checked(ps, &at, pow(a, b), "pow"));
     case T_BITWISE_AND: case T_BITWISE_OR: case T_BITWISE_XOR: {
         lparen(ps);
@@ -957,8 +1023,15 @@ static pp_value factor(pp_state *ps)
         comma(ps);
         const char *t = pp_string(ps);
         rparen(ps);
-        int c = strcmp(s, t);
-        return fval(c < 0 ? -1 : c > 0);
+        /* POV-Ray's UCS2_strcmp: the difference of the first two
+        ** characters that differ (strcmp("abc", "ab") is 99, 'c' - 0) */
+        const unsigned char *p = (const unsigned char *)s;
+        const unsigned char *q = (const unsigned char *)t;
+        while (*p && *p == *q) {
+            p++;
+            q++;
+        }
+        return fval((double)((int)*p - (int)*q));
     }
     case T_FILE_EXISTS: {
         lparen(ps);
@@ -1038,10 +1111,16 @@ static pp_value factor(pp_state *ps)
         return sval(pp_strdup(ps, buf, strlen(buf)));
     }
     case T_CONCAT: {
+        /* concat(S {[,] S}): POV-Ray's Parse_Concat reads strings until
+        ** ')', the commas between them optional (Parse_Comma), so a
+        ** macro's "b" followed by a fall-through #case's "c" is "bc" */
         lparen(ps);
         size_t cap = 256, len = 0;
         char *buf = pp_salloc(ps, cap);
-        do {
+        for (bool first = true; first || !pp_accept_in_list(ps, T_RPAREN);
+             first = false) {
+            if (!first)
+                comma(ps);
             const char *s = pp_string(ps);
             size_t n = strlen(s);
             if (len + n + 1 > cap) {
@@ -1056,8 +1135,7 @@ static pp_value factor(pp_state *ps)
             memcpy(buf + len, s, n);
             len += n;
             buf[len] = 0;
-        } while (pp_accept(ps, T_COMMA));
-        rparen(ps);
+        }
         return sval(buf);
     }
     case T_CHR: {
@@ -1103,15 +1181,16 @@ static pp_value factor(pp_state *ps)
         double days = pp_float(ps);
         const char *fmt = "%Y-%m-%d %H:%M:%SZ";
         pp_token ft = at;
-        if (pp_accept(ps, T_COMMA)) {
+        comma(ps); /* optional, as POV-Ray's Parse_Comma */
+        if (!pp_accept(ps, T_RPAREN)) {
             pp_next(ps);
             ft = ps->tok;
             pp_unget(ps);
             fmt = pp_string(ps);
             if (!*fmt)
                 pp_error(ps, &ft, "datetime: empty format string");
+            rparen(ps);
         }
-        rparen(ps);
         double secs = floor((days + 10957.0) * 86400.0 + 0.5);
         if (!(fabs(secs) < 1e15))
             pp_error(ps, &at, "datetime: time out of range");
@@ -1340,18 +1419,37 @@ pp_value pp_expr_sum(pp_state *ps)
     return expr_add(ps);
 }
 
+/* The value 'v' read at 'at' as a finite float, or an error there. */
+static double finite_float(pp_state *ps, const pp_token *at, pp_value *v)
+{
+    need_numeric(ps, at, v);
+    if (v->dim != 1)
+        pp_error(ps, at, "expected a float, found a %d-component vector",
+                 v->dim);
+    need_finite(ps, at, v);
+    return v->v[0];
+}
+
+double pp_paren_float(pp_state *ps)
+{
+    pp_next(ps);
+    pp_token at = ps->tok;
+    if (at.kind != T_LPAREN) {
+        char buf[80];
+        pp_error(ps, &at, "expected '(', found %s",
+                 pp_tok_name(ps, &at, buf, sizeof buf));
+    }
+    pp_value v = paren_rest(ps, &at);
+    return finite_float(ps, &at, &v);
+}
+
 double pp_float(pp_state *ps)
 {
     pp_next(ps);
     pp_token at = ps->tok;
     pp_unget(ps);
     pp_value v = expr_add(ps);
-    need_numeric(ps, &at, &v);
-    if (v.dim != 1)
-        pp_error(ps, &at, "expected a float, found a %d-component vector",
-                 v.dim);
-    need_finite(ps, &at, &v);
-    return v.v[0];
+    return finite_float(ps, &at, &v);
 }
 
 iris_vec3 pp_vector(pp_state *ps)

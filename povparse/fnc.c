@@ -58,7 +58,11 @@ static void emit(fnc *c, enum iris_fn_op op, int arg, int nargs, double value,
 
 static void cexpr(fnc *c);
 
-/* The index of parameter named by token 't', or -1. */
+/* param_index's answer for x/y/z/u/v with no parameter of that
+** register: the value 0. */
+#define PARAM_ZERO (-2)
+
+/* The index of parameter named by token 't', PARAM_ZERO, or -1. */
 static int param_index(fnc *c, const pp_token *t)
 {
     pp_state *ps = c->ps;
@@ -72,6 +76,24 @@ static int param_index(fnc *c, const pp_token *t)
                 return -1;
             break; /* a sum()/prod() index after x, y, z */
         }
+    }
+    /* POV-Ray's FNCode keeps x/u, y/v and z in three registers, loaded
+    ** from the parameters of those names (the last one wins) and 0
+    ** without one, and reads the registers first: in function(u,v) 'x'
+    ** is u (meshmaker.inc's mesh_by_2varfunction), in function(x,y) 'u'
+    ** is x (p_Lathe), in function(a) 'x' is 0. */
+    int reg = t->kind == T_X || t->kind == T_U ? 0 :
+              t->kind == T_Y || t->kind == T_V ? 1 :
+              t->kind == T_Z ? 2 : -1;
+    if (reg >= 0) {
+        static const char *const names[3][2] = {
+            { "x", "u" }, { "y", "v" }, { "z", "z" } };
+        int last = PARAM_ZERO;
+        for (int i = 0; i < c->n_params; i++)
+            if (!strcmp(c->params[i], names[reg][0]) ||
+                !strcmp(c->params[i], names[reg][1]))
+                last = i;
+        return last;
     }
     if (t->kind != T_IDENT && t->kind < T_KW_FIRST)
         return -1;
@@ -160,11 +182,22 @@ static int builtin_of(int k, int *arity)
     }
 }
 
-/* The result index that .red, .x, .gray ... select of a pigment
-** function: 0..4 = r, g, b, f, t; 5 = gray; -1 for anything else. */
-static int component_of(int k)
+/* The result index that .red, .x, .gray ... (token 't') select of a
+** pigment function: 0..4 = r, g, b, f, t; 5 = gray; 6 = hf; -1 for
+** anything else. POV-Ray's FNCode::compile_member also takes the names
+** 'grey' and 'hf' (MegaPOV's height field value, fn_pigment_component),
+** which are no keywords. */
+static int component_of(pp_state *ps, const pp_token *t)
 {
-    switch (k) {
+    if (t->kind == T_IDENT) {
+        const char *s = pp_tok_text(ps, t);
+        if (t->len == 4 && !memcmp(s, "grey", 4))
+            return 5;
+        if (t->len == 2 && !memcmp(s, "hf", 2))
+            return 6;
+        return -1;
+    }
+    switch (t->kind) {
     case T_RED: case T_X: case T_U: return 0;
     case T_GREEN: case T_Y: case T_V: return 1;
     case T_BLUE: case T_Z: return 2;
@@ -224,6 +257,10 @@ static void cfactor(fnc *c)
     int pi = param_index(c, &at);
     if (pi >= 0) {
         emit(c, IRIS_FN_PARAM, pi, 0, 0, 1);
+        return;
+    }
+    if (pi == PARAM_ZERO) {
+        emit(c, IRIS_FN_CONST, 0, 0, 0, 1);
         return;
     }
     int arity;
@@ -297,14 +334,15 @@ static void cfactor(fnc *c)
             ** pigment directly; other results are the first one */
             if (!pp_next_is_directive(ps) && pp_accept(ps, T_DOT)) {
                 pp_next(ps);
-                int comp = component_of(ps->tok.kind);
+                int comp = component_of(ps, &ps->tok);
                 const iris_fn_insn *body = v.u.fn->code;
                 int want = body->op == IRIS_FN_SPLINE ? 1 : 3;
                 bool inline_op = v.u.fn->n_code == 1 && comp >= 0 &&
                     (body->op == IRIS_FN_SPLINE ||
                      body->op == IRIS_FN_TRANSFORM ||
                      (body->op == IRIS_FN_PATTERN && body->pigment)) &&
-                    (comp < v.u.fn->n_results || body->pigment);
+                    (comp < v.u.fn->n_results || body->pigment ||
+                     (body->op == IRIS_FN_SPLINE && comp >= 5));
                 if (inline_op && n == want) {
                     /* the component evaluated in place, at the call's
                     ** arguments (the op pops them) */
@@ -345,9 +383,13 @@ static void cfactor(fnc *c)
     }
 }
 
+/* The body is not complete before its '}', so the directives met while
+** looking for an operator run first, as POV-Ray's Get_Token runs them:
+** 'function(x) { x #if (C) * 2 #end }' doubles when C is true. */
 static bool op_next(fnc *c, int a, int b, int *got)
 {
     pp_state *ps = c->ps;
+    pp_run_directives(ps);
     if (pp_next_is_directive(ps))
         return false;
     pp_next(ps);
@@ -413,6 +455,7 @@ static void ccmp(fnc *c)
     pp_state *ps = c->ps;
     cadd(c);
     for (;;) {
+        pp_run_directives(ps);
         if (pp_next_is_directive(ps))
             return;
         pp_next(ps);

@@ -486,11 +486,36 @@ void pp_next(pp_state *ps)
     }
 }
 
+void pp_run_directives(pp_state *ps)
+{
+    while (ps->n_unget == 0 && pp_next_is_directive(ps)) {
+        pp_raw(ps, &ps->tok);
+        if (ps->tok.kind != T_HASH) {
+            pp_unget(ps);
+            return;
+        }
+        pp_token hash = ps->tok;
+        pp_directive(ps, &hash);
+    }
+}
+
+bool pp_accept_in_list(pp_state *ps, int kind)
+{
+    pp_run_directives(ps);
+    return pp_accept(ps, kind);
+}
+
 bool pp_accept(pp_state *ps, int kind)
 {
     /* Looking ahead must not run a directive before the current
     ** statement is complete ('#declare A = array[2]' then '#declare
-    ** A[0] = 1'): a directive is never the optional token. */
+    ** A[0] = 1'): a directive is never the optional token. Except a
+    ** comma: one is looked for only between the items of a list that
+    ** is not finished, where POV-Ray's Parse_Comma runs the directives
+    ** before it ('P #if (I < N) , #end' in a prism's points,
+    ** 'max(1 #if (C) , 5 #end)'). */
+    if (kind == T_COMMA)
+        pp_run_directives(ps);
     if (pp_next_is_directive(ps))
         return false;
     /* and must not call a macro that is only looked at */

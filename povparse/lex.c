@@ -158,6 +158,42 @@ static uint32_t scan_string(pp_state *ps, uint32_t f, uint32_t p,
             case 'v': c = '\v'; break;
             case '0': c = 0; break;
             case '\\': case '"': case '\'': c = e; break;
+            case 'u': {
+                /* \uXXXX: POV-Ray's String_To_UCS2 reads 4 hex digits as
+                ** one UCS-2 character; iris keeps one byte below 256
+                ** (Latin-1, so strlen and substr count as POV-Ray does;
+                ** text reads a lone byte as Latin-1) and UTF-8 above.
+                ** Without 4 hex digits it stays as written, like other
+                ** unknown escapes (a Windows path "C:\users\..."). */
+                char hex[5] = { 0, 0, 0, 0, 0 };
+                int nh = 0;
+                while (nh < 4 && p + (uint32_t)nh < q &&
+                       isxdigit((unsigned char)s[p + (uint32_t)nh])) {
+                    hex[nh] = s[p + (uint32_t)nh];
+                    nh++;
+                }
+                if (nh < 4) {
+                    out[k++] = '\\';
+                    c = e;
+                    break;
+                }
+                p += 4;
+                unsigned long u = strtoul(hex, NULL, 16);
+                if (u == 0) {
+                    c = 0;
+                } else if (u < 0x100) {
+                    c = (char)u;
+                } else {
+                    if (u < 0x800) {
+                        out[k++] = (char)(0xc0 | (u >> 6));
+                    } else {
+                        out[k++] = (char)(0xe0 | (u >> 12));
+                        out[k++] = (char)(0x80 | ((u >> 6) & 0x3f));
+                    }
+                    c = (char)(0x80 | (u & 0x3f));
+                }
+                break;
+            }
             default:
                 /* POV-Ray keeps unknown escapes (Windows paths) as is. */
                 out[k++] = '\\';

@@ -900,6 +900,9 @@ static bool pattern_mod(pp_state *ps, iris_pattern *p)
             p->wave_exponent = pp_float(ps);
         return true;
     case T_NOISE_GENERATOR: p->noise_generator = pp_int(ps); return true;
+    /* POV-Ray's Parse_Pattern takes it in any pattern; only a normal's
+    ** (read before this) and a texture's have an effect */
+    case T_NO_BUMP_SCALE: pp_bool_opt(ps); return true;
     case T_AGATE_TURB: p->params[0] = pp_float(ps); return true;
     case T_BRICK_SIZE: p->brick_size = pp_vector(ps); return true;
     case T_MORTAR: p->mortar = pp_float(ps); return true;
@@ -1583,7 +1586,7 @@ static iris_normal *normal_body(pp_state *ps, const iris_normal *base,
             continue;
         }
         if (k == T_NO_BUMP_SCALE) {
-            pp_bool_opt(ps);
+            n->no_bump_scale = pp_bool_opt(ps);
             continue;
         }
         if (k == T_BUMP_MAP) {
@@ -2004,19 +2007,54 @@ static void material_map(pp_state *ps, iris_texture *t)
     }
 }
 
+/*
+** 'no_bump_scale' on a texture: POV-Ray's Post_Textures hands it to the
+** plain texture's normal and to every texture_map entry, wherever in the
+** block it stood. Copies: declared textures and normals are shared.
+*/
+static iris_texture *tex_no_bump_scale(pp_state *ps, const iris_texture *t)
+{
+    iris_texture *c = pp_alloc(ps, sizeof *c);
+    *c = *t;
+    if (c->normal) {
+        iris_normal *n = pp_alloc(ps, sizeof *n);
+        *n = *c->normal;
+        n->no_bump_scale = true;
+        c->normal = n;
+    }
+    if (c->n_entries > 0) {
+        iris_map_entry *e =
+            pp_alloc(ps, (size_t)c->n_entries * sizeof *e);
+        for (int i = 0; i < c->n_entries; i++) {
+            e[i] = c->entries[i];
+            if (e[i].texture)
+                e[i].texture = tex_no_bump_scale(ps, e[i].texture);
+        }
+        c->entries = e;
+    }
+    return c;
+}
+
 static iris_texture *texture_body(pp_state *ps, int end)
 {
     pp_next(ps);
     pp_token open = ps->tok;
     pp_unget(ps);
     iris_texture *t = pp_texture_new(ps, &open);
-    bool uv = false;
+    bool uv = false, no_bump_scale = false;
     for (;;) {
         pp_next(ps);
         pp_token at = ps->tok;
         int k = at.kind;
-        if (k == end)
+        if (k == end) {
+            if (no_bump_scale)
+                t = tex_no_bump_scale(ps, t);
             return uv ? uv_texture(ps, t) : t;
+        }
+        if (k == T_NO_BUMP_SCALE) {
+            no_bump_scale = pp_bool_opt(ps) || no_bump_scale;
+            continue;
+        }
         switch (k) {
         case T_EOF:
             pp_error(ps, &open, "texture without its closing bracket");

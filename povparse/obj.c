@@ -1306,7 +1306,9 @@ static void isosurface(pp_state *ps, iris_object *o)
 ** among its keywords. */
 static void closed_or_open(pp_state *ps, iris_object *o)
 {
-    if (pp_accept(ps, T_OPEN))
+    /* POV-Ray reads on with Get_Token, which runs directives first:
+    ** 'cylinder { A, B, R #if (Hollow) open #end }' */
+    if (pp_accept_in_list(ps, T_OPEN))
         o->open = true;
 }
 
@@ -1654,9 +1656,15 @@ static void shape_body(pp_state *ps, iris_object *o, int kw, const pp_token *at)
                 o->u.parametric.accuracy = pp_float(ps);
             } else if (ps->tok.kind == T_PRECOMPUTE) {
                 /* precompute DEPTH [,] [x] [,] [y] [,] [z] (POV-Ray 3.7;
-                ** a bracketed list is accepted too). Only a cache in
-                ** POV-Ray: nothing to keep. */
-                pp_float(ps);
+                ** a bracketed list is accepted too). The bounds POV-Ray
+                ** precomputes are those of the finest level merged
+                ** upwards, tighter than a coarse cell's own: they change
+                ** the image (geometry/parametric.c). */
+                pp_token pat = ps->tok;
+                double depth = pp_float(ps);
+                if (!(depth >= 1 && depth <= 20))
+                    pp_error(ps, &pat, "precompute depth must be 1 to 20");
+                o->u.parametric.precompute_depth = (int)depth;
                 pp_accept(ps, T_COMMA);
                 if (pp_accept(ps, T_LBRACKET)) {
                     while (!pp_accept(ps, T_RBRACKET))
@@ -1664,8 +1672,13 @@ static void shape_body(pp_state *ps, iris_object *o, int kw, const pp_token *at)
                 } else {
                     for (int k = 0; k < 3; k++) {
                         pp_accept(ps, T_COMMA);
-                        if (!pp_accept(ps, T_X) && !pp_accept(ps, T_Y) &&
-                            !pp_accept(ps, T_Z))
+                        if (pp_accept(ps, T_X))
+                            o->u.parametric.precompute_axes |= 1;
+                        else if (pp_accept(ps, T_Y))
+                            o->u.parametric.precompute_axes |= 2;
+                        else if (pp_accept(ps, T_Z))
+                            o->u.parametric.precompute_axes |= 4;
+                        else
                             break;
                     }
                 }
@@ -1695,7 +1708,9 @@ static void shape_body(pp_state *ps, iris_object *o, int kw, const pp_token *at)
             pp_accept(ps, T_COMMA);
             o->u.sphere_sweep.radii[i] = pp_float(ps);
         }
-        if (pp_accept(ps, T_TOLERANCE))
+        /* directives first, as POV-Ray reads on: '... #if (C) tolerance
+        ** 0.01 #end' */
+        if (pp_accept_in_list(ps, T_TOLERANCE))
             pp_float(ps);
         break;
     }

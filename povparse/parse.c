@@ -234,6 +234,11 @@ static enum iris_status run(const char *name, const char *text, size_t len,
     ** no gamma correction without assumed_gamma, 3.6's layered-texture
     ** opacity and sky; src/render reads scene->version). */
     sc->version = pp_effective_version(ps);
+    /* and POV-Ray sets it again from the version the scene ends with
+    ** (Parser::Parse): a 3.1 scene whose include files switch to 3.5
+    ** and back renders textures.inc's Jade with generator 1 */
+    if (!ps->noise_explicit)
+        sc->settings.noise_generator = pp_version_noise(ps->version);
     if (ps->n_conds > 0) {
         pp_cond *c = &ps->conds[ps->n_conds - 1];
         pp_error_at(ps, c->file, c->off, 1, "directive without #end");

@@ -347,6 +347,8 @@ struct pp_state {
     ** until then POV-Ray 3.7's EffectiveLanguageVersion() is 3.62, though
     ** 'version' reads 3.7 (pp_effective_version) */
     bool version_set;
+    /* global_settings gave noise_generator: #version no longer sets it */
+    bool noise_explicit;
     bool srgb_warned;      /* "sRGB colour before assumed_gamma" once */
     int depth;             /* nesting of the grammar's recursion */
     uintptr_t stack_base;  /* frame address where the parse started */
@@ -425,6 +427,14 @@ const char *lex_keyword_name(int kind);
 /* ---- input.c: tokens with directives executed --------------------- */
 void pp_next(pp_state *ps);           /* advances ps->tok */
 void pp_unget(pp_state *ps);          /* pushes ps->tok back */
+/* Runs the directives that come next, as POV-Ray's Get_Token does
+** wherever it reads on: only where the construct being read is not
+** complete (a list before its ')', a function body before its '}'). */
+void pp_run_directives(pp_state *ps);
+/* pp_accept after the directives that come next have run: for the
+** end of a list, which POV-Ray reads with Get_Token ('concat("a"
+** #if (C) , "b" #end)'). */
+bool pp_accept_in_list(pp_state *ps, int kind);
 bool pp_accept(pp_state *ps, int kind);
 void pp_expect(pp_state *ps, int kind, const char *what);
 void pp_open_file(pp_state *ps, const char *path, bool is_include,
@@ -474,6 +484,15 @@ pp_value pp_expr(pp_state *ps);
 pp_value pp_expr_sum(pp_state *ps);
 /* rgb, rgbft, srgb..., color, red ... transmit: a colour's first word */
 bool pp_is_colour_keyword(int kind);       /* numeric or string expression */
+/* The noise generator POV-Ray takes by default under #version v: 1
+** (the original Perlin noise) before 3.5, 2 from 3.5 on. */
+static inline int pp_version_noise(double v)
+{
+    return (int)(v * 100 + 0.5) < 350 ? 1 : 2;
+}
+/* '(' float ')' and no more, as POV-Ray's Parse_Float_Param: the
+** condition of #if, #elseif, #while and #switch. */
+double pp_paren_float(pp_state *ps);
 double pp_float(pp_state *ps);        /* POV-Ray's Parse_Float: no <, = */
 int pp_int(pp_state *ps);             /* a float in the int range */
 long pp_clamp_long(double v);
@@ -487,6 +506,9 @@ bool pp_bool_opt(pp_state *ps);       /* optional on/off after a flag */
 /* Parses the value of #declare X = ...; (any kind). */
 pp_value pp_rvalue(pp_state *ps);
 /* spline { ... } after 'spline' (rvalue.c); scratch arena. */
+/* Prepares a spline for evaluation once its type and keys are set (a
+** natural spline's coefficients). */
+void pp_spline_finish(pp_state *ps, pp_spline *s);
 pp_spline *pp_spline_block(pp_state *ps);
 /* The public view of a spline, for iris_fn_spline_eval. */
 iris_fn_spline pp_spline_view(const pp_spline *s);

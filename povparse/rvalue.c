@@ -140,7 +140,7 @@ iris_fn_spline pp_spline_view(const pp_spline *s)
 }
 
 /* A natural spline's coefficients, once its keys are final. */
-static void spline_finish(pp_state *ps, pp_spline *s)
+void pp_spline_finish(pp_state *ps, pp_spline *s)
 {
     s->coeff = NULL;
     if (s->type != IRIS_FN_SPLINE_NATURAL || s->n < 3)
@@ -170,7 +170,7 @@ pp_spline *pp_spline_block(pp_state *ps)
         case T_CUBIC_SPLINE: s->type = 2; continue;
         case T_NATURAL_SPLINE: s->type = 3; continue;
         case T_RBRACE:
-            spline_finish(ps, s);
+            pp_spline_finish(ps, s);
             return s;
         case T_IDENT:
             if (ps->tok.val.kind == V_SPLINE) {

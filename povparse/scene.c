@@ -642,6 +642,7 @@ static void global_settings(pp_state *ps)
             if (n < 1 || n > 3)
                 pp_error(ps, &at, "noise_generator must be 1, 2 or 3");
             g->noise_generator = n;
+            ps->noise_explicit = true;
             break;
         }
         case T_CHARSET: pp_next(ps); break;

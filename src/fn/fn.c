@@ -102,7 +102,7 @@ static double point_value(const iris_fn_insn *in, const double *p, int n)
     if (in->op == IRIS_FN_SPLINE) {
         double v[5];
         iris_fn_spline_eval(in->spline, x, v);
-        return k >= 0 && k < 5 ? v[k] : v[0];
+        return fn_pigment_component(v, k); /* .gray/.hf weigh x, y, z */
     }
     if (in->op == IRIS_FN_TRANSFORM) {
         if (!in->xform || k < 0 || k > 2)
@@ -115,9 +115,7 @@ static double point_value(const iris_fn_insn *in, const double *p, int n)
     if (in->pigment) {
         double c[5];
         mat_pigment_at(in->pigment, x, y, z, c);
-        if (in->arg == 5) /* POV-Ray's Greyscale() weights */
-            return 0.297 * c[0] + 0.589 * c[1] + 0.114 * c[2];
-        return in->arg >= 0 && in->arg < 5 ? c[in->arg] : c[0];
+        return fn_pigment_component(c, in->arg);
     }
     return in->pattern ? mat_pattern_at(in->pattern, x, y, z) : 0;
 }

@@ -110,8 +110,6 @@ double fn_images_value(const iris_fn_insn *in, double x, double y, double z)
     (void)mat_eval_pigment(fi->ctx, fi->list[0], &pt, &c);
     if (!in->pigment)
         return c.r;
-    if (in->arg == 5) /* POV-Ray's Greyscale() weights, as fn.c */
-        return 0.297 * c.r + 0.589 * c.g + 0.114 * c.b;
     const double v[5] = { c.r, c.g, c.b, c.f, c.t };
-    return in->arg >= 0 && in->arg < 5 ? v[in->arg] : v[0];
+    return fn_pigment_component(v, in->arg);
 }
