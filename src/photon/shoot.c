@@ -263,77 +263,16 @@ static bool scene_none_dispersive(const iris_scene *sc)
     return true;
 }
 
-/*
-** Whether POV-Ray links target union 'o' to the scene as its children
-** (parser.cpp Link_To_Frame): a union or light group with split_union on
-** (the default), not clipped and without bounded_by (a bounded union is
-** split only under the Split_Unions option, off by default). Its photons
-** then aim at each child's bounding sphere, one combo per child, which
-** shoots far fewer photons than the union's sphere when the children are
-** apart (tests/optics/scenes/split_union.pov, two balls of radius 0.5 two
-** apart: 46992 against 86934 with split_union off, POV-Ray's counts), and
-** 'count N' sums the children's spheres (spacing_for), as POV-Ray's. A
-** child without a box gets no photons, as any target without one.
-** The children inherit the union's photon flags there (Promote), so the
-** union stays the combo's target: its flags, density and first hit.
-*/
-static bool target_split(const iris_object *o)
-{
-    return (o->kind == IRIS_OBJ_UNION || o->kind == IRIS_OBJ_LIGHT_GROUP) &&
-           o->split_union && o->n_clipped_by == 0 && !o->bounded_by &&
-           o->u.csg.children && o->u.csg.n_children > 0;
-}
-
-/* Appends to 'aims' the objects whose bounding spheres target 'o' is shot
-** at: 'o' itself, or the leaves of its split unions (nested unions split
-** again, as Link_To_Frame recurses). Returns false without memory. */
-static bool collect_aims(const iris_object *o, const iris_object ***aims,
-                         int *n, int *cap, int depth)
-{
-    if (depth < 64 && target_split(o)) {
-        for (int i = 0; i < o->u.csg.n_children; i++)
-            if (!collect_aims(o->u.csg.children[i], aims, n, cap, depth + 1))
-                return false;
-        return true;
-    }
-    if (*n == *cap) {
-        int nc = *cap ? 2 * *cap : 16;
-        const iris_object **nv = iris_realloc(*aims, (size_t)nc * sizeof *nv);
-        if (!nv)
-            return false;
-        *aims = nv;
-        *cap = nc;
-    }
-    (*aims)[(*n)++] = o;
-    return true;
-}
-
 /* Collects the combos and their bounding spheres. */
 static enum iris_status find_combos(struct shoot *s)
 {
     const iris_scene *sc = s->scene;
-    if (sc->n_lights <= 0 || sc->n_objects <= 0)
+    int cap = sc->n_lights * sc->n_objects;
+    if (cap <= 0)
         return IRIS_OK;
-    /* the objects aimed at, with the target each belongs to */
-    const iris_object **aims = NULL;
-    int n_aims = 0, cap_aims = 0;
-    int *aim_top = NULL;
-    for (int oi = 0; oi < sc->n_objects; oi++) {
-        int before = n_aims;
-        if (!collect_aims(sc->objects[oi], &aims, &n_aims, &cap_aims, 0))
-            goto nomem;
-        int *nt = iris_realloc(aim_top, (size_t)(n_aims > 0 ? n_aims : 1) *
-                                            sizeof *nt);
-        if (!nt)
-            goto nomem;
-        aim_top = nt;
-        for (int k = before; k < n_aims; k++)
-            aim_top[k] = oi;
-    }
-    int cap = sc->n_lights * n_aims;
-    s->combos = cap > 0 ? iris_calloc((size_t)cap, sizeof *s->combos) : NULL;
+    s->combos = iris_calloc((size_t)cap, sizeof *s->combos);
     if (!s->combos)
-        goto nomem;
+        return IRIS_ENOMEM;
     int max_level = sc->settings.photons.max_trace_level;
     if (max_level < 0)
         max_level = sc->settings.max_trace_level;
@@ -342,11 +281,11 @@ static enum iris_status find_combos(struct shoot *s)
     bool none_dispersive = scene_none_dispersive(sc);
     for (int li = 0; li < sc->n_lights; li++) {
         const iris_light *l = sc->lights[li];
-        for (int ai = 0; ai < n_aims; ai++) {
-            const iris_object *t = sc->objects[aim_top[ai]];
+        for (int oi = 0; oi < sc->n_objects; oi++) {
+            const iris_object *t = sc->objects[oi];
             vec3 lo, hi;
             if (!pmap_shoots(l, t) ||
-                !s->w->object_bounds(s->w->ctx, aims[ai], &lo, &hi))
+                !s->w->object_bounds(s->w->ctx, t, &lo, &hi))
                 continue;
             struct combo *c = &s->combos[s->n_combos++];
             c->tc.light = l;
@@ -415,13 +354,7 @@ static enum iris_status find_combos(struct shoot *s)
                 }
         }
     }
-    iris_free(aims);
-    iris_free(aim_top);
     return IRIS_OK;
-nomem:
-    iris_free(aims);
-    iris_free(aim_top);
-    return IRIS_ENOMEM;
 }
 
 /* POV-Ray's 'count' -> spacing (semantics §2.4). */
