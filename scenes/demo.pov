@@ -4,10 +4,20 @@
 // colours. The same file renders in POV-Ray 3.7 (+Q9 for photons).
 #version 3.7;
 
+// iris's photons each carry one wavelength and take one path, where
+// POV-Ray splits a photon into dispersion_samples colours at the glass:
+// iris asks for 4x the photons (646 k stored; +1 s at 640x480 on 2
+// cores) to keep the colour noise of its caustic low.
+#ifdef (iris_version)
+    #declare Spacing = 0.002;
+#else
+    #declare Spacing = 0.004;
+#end
+
 global_settings {
     assumed_gamma 1.0
     max_trace_level 10
-    photons { spacing 0.004 autostop 0 jitter 0.4 }
+    photons { spacing Spacing autostop 0 jitter 0.4 }
 }
 
 camera {
