@@ -15,6 +15,7 @@
 #ifndef IRIS_GEOMETRY_GEOM_H
 #define IRIS_GEOMETRY_GEOM_H
 
+#include <math.h>
 #include <stdbool.h>
 #include <stdio.h>
 
@@ -51,6 +52,23 @@ void isect_push(struct isect_list *l, double t, vec3 n, double u, double v);
 
 /* Whether 'kind' is handled here (analytic user geometry). */
 bool geom_is_analytic(enum iris_object_kind kind);
+
+/* Grows the 2-D box [*lo, *hi] to hold [l, h]; the first box (*have
+** false) is taken as it is. */
+static inline void geom_box2_add(iris_vec2 *lo, iris_vec2 *hi, bool *have,
+                                 iris_vec2 l, iris_vec2 h)
+{
+    if (!*have) {
+        *lo = l;
+        *hi = h;
+        *have = true;
+        return;
+    }
+    lo->u = fmin(lo->u, l.u);
+    lo->v = fmin(lo->v, l.v);
+    hi->u = fmax(hi->u, h.u);
+    hi->v = fmax(hi->v, h.v);
+}
 
 /*
 ** A 2-D outline made of straight segments: the flattened spline of a

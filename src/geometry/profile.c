@@ -306,21 +306,14 @@ static void build_runs(struct geom_profile *p)
 void geom_profile_finish(struct geom_profile *p)
 {
     geom_profile_close_group(p);
+    bool have = false;
     for (int g = 0; g < p->n_groups; g++) {
         int f = p->group_first[g], end = f + p->group_count[g];
         iris_vec2 lo, hi;
         segments_box(p, f, end, &lo, &hi);
         p->group_lo[g] = lo;
         p->group_hi[g] = hi;
-        if (g == 0) {
-            p->lo = lo;
-            p->hi = hi;
-        } else {
-            p->lo.u = fmin(p->lo.u, lo.u);
-            p->lo.v = fmin(p->lo.v, lo.v);
-            p->hi.u = fmax(p->hi.u, hi.u);
-            p->hi.v = fmax(p->hi.v, hi.v);
-        }
+        geom_box2_add(&p->lo, &p->hi, &have, lo, hi);
     }
     build_runs(p);
     /* Each curve's pieces and their extent, for the ray's quick tests */

@@ -310,16 +310,7 @@ struct geom_profile *geom_text_profile(const iris_object *o, const char **why)
             }
             iris_vec2 glo = { c.dx + x0, c.dy + y0 };
             iris_vec2 ghi = { c.dx + x1, c.dy + y1 };
-            if (!p->pov_box) {
-                p->pov_lo = glo;
-                p->pov_hi = ghi;
-                p->pov_box = true;
-            } else {
-                p->pov_lo.u = fmin(p->pov_lo.u, glo.u);
-                p->pov_lo.v = fmin(p->pov_lo.v, glo.v);
-                p->pov_hi.u = fmax(p->pov_hi.u, ghi.u);
-                p->pov_hi.v = fmax(p->pov_hi.v, ghi.v);
-            }
+            geom_box2_add(&p->pov_lo, &p->pov_hi, &p->pov_box, glo, ghi);
         }
         if (g->format == FT_GLYPH_FORMAT_OUTLINE) {
             c.open = false;

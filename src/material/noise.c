@@ -269,8 +269,14 @@ static void lattice(double x, int *index, double *frac)
 /* What both lattice noises need of a point: the hash indices of its cell,
 ** the offsets from the cell's low (f) and high (g) corners, and the
 ** s-curve weights (s along, t = 1 - s) with the four xy products. */
+static int hash2d(int a, int b)
+{
+    return hash_table[hash_table[a] ^ b];
+}
+
 struct cell {
     int ix, iy, iz;
+    int h00, h10, h01, h11;    /* the hashes of the four (x, y) columns */
     double fx, fy, fz, gx, gy, gz;
     double sz, tz, txty, sxty, txsy, sxsy;
 };
@@ -291,11 +297,10 @@ static inline void cell_setup(vec3 p, struct cell *c)
     c->sxty = sx * ty;
     c->txsy = tx * sy;
     c->sxsy = sx * sy;
-}
-
-static int hash2d(int a, int b)
-{
-    return hash_table[hash_table[a] ^ b];
+    c->h00 = hash2d(c->ix, c->iy);
+    c->h10 = hash2d(c->ix + 1, c->iy);
+    c->h01 = hash2d(c->ix, c->iy + 1);
+    c->h11 = hash2d(c->ix + 1, c->iy + 1);
 }
 
 /* The coefficients for lattice hash 'h' at z index 'iz'. */
@@ -365,13 +370,12 @@ double noise_value(vec3 p, int generator)
     }
     struct cell c;
     cell_setup(p, &c);
-    const int ix = c.ix, iy = c.iy, iz = c.iz;
+    const int iz = c.iz;
     const double fx = c.fx, fy = c.fy, fz = c.fz, gx = c.gx, gy = c.gy,
                  gz = c.gz;
     const double sz = c.sz, tz = c.tz, txty = c.txty, sxty = c.sxty,
                  txsy = c.txsy, sxsy = c.sxsy;
-    int h00 = hash2d(ix, iy), h10 = hash2d(ix + 1, iy);
-    int h01 = hash2d(ix, iy + 1), h11 = hash2d(ix + 1, iy + 1);
+    const int h00 = c.h00, h10 = c.h10, h01 = c.h01, h11 = c.h11;
     double sum;
 #ifdef __SSE2__
     /* Corners two at a time (each pair differs only in x), the terms
@@ -437,13 +441,12 @@ static inline vec3 dnoise(vec3 p)
     p = safe_point(p);
     struct cell c;
     cell_setup(p, &c);
-    const int ix = c.ix, iy = c.iy, iz = c.iz;
+    const int iz = c.iz;
     const double fx = c.fx, fy = c.fy, fz = c.fz, gx = c.gx, gy = c.gy,
                  gz = c.gz;
     const double sz = c.sz, tz = c.tz, txty = c.txty, sxty = c.sxty,
                  txsy = c.txsy, sxsy = c.sxsy;
-    int h00 = hash2d(ix, iy), h10 = hash2d(ix + 1, iy);
-    int h01 = hash2d(ix, iy + 1), h11 = hash2d(ix + 1, iy + 1);
+    const int h00 = c.h00, h10 = c.h10, h01 = c.h01, h11 = c.h11;
     pair pfx = pair_dup(fx), pgx = pair_dup(gx), pfy = pair_dup(fy);
     pair pgy = pair_dup(gy), pfz = pair_dup(fz), pgz = pair_dup(gz);
     /* Sums start from zero as POV-Ray's do (0 + -0 is +0). */
