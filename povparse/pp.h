@@ -488,7 +488,9 @@ bool pp_is_colour_keyword(int kind);       /* numeric or string expression */
 ** (the original Perlin noise) before 3.5, 2 from 3.5 on. */
 static inline int pp_version_noise(double v)
 {
-    return (int)(v * 100 + 0.5) < 350 ? 1 : 2;
+    /* compared as a double: a huge or odd #version must not overflow an
+    ** int conversion (the fuzzer's '#version 30000000') */
+    return v * 100 + 0.5 < 350.0 ? 1 : 2;
 }
 /* '(' float ')' and no more, as POV-Ray's Parse_Float_Param: the
 ** condition of #if, #elseif, #while and #switch. */
