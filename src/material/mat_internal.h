@@ -35,11 +35,6 @@ struct mat_ctx {
     struct objpat_set objpats; /* the objects of object patterns */
 };
 
-/* mat_eval_texture() for the one texture 'tex' (texture.c); the public
-** function (multitex.c) blends the textures of a blob's components. */
-void mat_eval_layers(const struct mat_ctx *ctx, const iris_texture *tex,
-                     const struct mat_point *pt, struct mat_eval *out);
-
 /* The textures of blob 'o' at world point 'p' and their weights (|field|
 ** of each component, normalised to sum 1): at most 'max', the heaviest.
 ** Returns the count, 0 where no component reaches 'p' (multitex.c). */

@@ -193,8 +193,9 @@ static bool eval_blob(const struct mat_ctx *ctx, const iris_object *o,
     return out->n_stacks > 0;
 }
 
-void mat_eval_texture(const struct mat_ctx *ctx, const iris_texture *tex,
-                      const struct mat_point *pt, struct mat_eval *out)
+void mat_eval_blob_texture(const struct mat_ctx *ctx,
+                           const iris_texture *tex,
+                           const struct mat_point *pt, struct mat_eval *out)
 {
     const iris_object *o = pt->obj;
     if (mat_texture_blended(o) && blob_texture(o, tex) &&

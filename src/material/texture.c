@@ -545,26 +545,29 @@ static void eval_list(const struct mat_ctx *ctx, const iris_texture *tex,
     set_empty(out);
     if (!tex || depth > 8)
         return;
-    /* Collect the list so it can be walked bottom-up. */
-    const iris_texture *list[MAT_MAX_LAYERS];
-    int n = 0;
-    for (const iris_texture *t = tex; t && n < MAT_MAX_LAYERS; t = t->next)
-        list[n++] = t;
-    /* The common case, a list of plain layers: one stack, top first. */
+    /* The common case, a list of plain layers (of the first
+    ** MAT_MAX_LAYERS, the most kept): one stack, top first. */
     bool plain = true;
-    for (int i = 0; i < n && plain; i++)
-        plain = !(list[i]->map_pattern.kind != IRIS_PAT_NONE &&
-                  list[i]->n_entries > 0);
+    int n = 0;
+    for (const iris_texture *t = tex; t && n < MAT_MAX_LAYERS && plain;
+         t = t->next, n++)
+        plain = !(t->map_pattern.kind != IRIS_PAT_NONE && t->n_entries > 0);
     if (plain) {
         /* Top down, stopping below an opaque layer (a colour with no
         ** filter or transmit): no shading looks through it (POV-Ray's
         ** layer loops end once the filter colour is black), so the
         ** patterns and normals of the layers below would be evaluated
-        ** for nothing. */
+        ** for nothing. eval_layer()'s work, with the point copied once
+        ** (its normal follows *pn) and no array of the list. */
+        struct mat_point ppt = *pt;
+        ppt.n = *pn;
         int used = 0;
-        while (used < n) {
-            struct mat_layer *l = &out->layers[used];
-            eval_layer(ctx, list[used++], pt, l, pn);
+        for (const iris_texture *t = tex; t && used < MAT_MAX_LAYERS;
+             t = t->next) {
+            struct mat_layer *l = &out->layers[used++];
+            layer_at(ctx, t, &ppt, pt->n, l);
+            if (t->normal && !pt->skip_normals)
+                ppt.n = *pn = l->n;
             if (l->valid && l->pigment.f == 0.0 && l->pigment.t == 0.0)
                 break;
         }
@@ -572,6 +575,11 @@ static void eval_list(const struct mat_ctx *ctx, const iris_texture *tex,
         out->stacks[0].n = used;
         return;
     }
+    /* Collect the list so it can be walked bottom-up. */
+    const iris_texture *list[MAT_MAX_LAYERS];
+    n = 0;
+    for (const iris_texture *t = tex; t && n < MAT_MAX_LAYERS; t = t->next)
+        list[n++] = t;
     for (int i = n - 1; i >= 0; i--) {
         const iris_texture *t = list[i];
         if (t->map_pattern.kind != IRIS_PAT_NONE && t->n_entries > 0) {
@@ -649,15 +657,15 @@ double mat_fresnel(double cos_i, double n)
     double f = 0.5 * a * a * (1.0 + (num * num) / (den * den));
     if (!isfinite(f))
         return 1.0;
-    return fmin(1.0, fmax(0.0, f));
+    return mat_fmin(1.0, mat_fmax(0.0, f));
 }
 
 /* POV-Ray's metallic factor F(x) of the angle x = acos(c)/(pi/2). */
 static double metallic_f(double cos_angle)
 {
-    double x = fabs(acos(fmin(fmax(cos_angle, -1.0), 1.0))) / M_PI_2;
+    double x = fabs(acos(mat_fmin(mat_fmax(cos_angle, -1.0), 1.0))) / M_PI_2;
     double f = 0.014567225 / ((x - 1.12) * (x - 1.12)) - 0.011612903;
-    return fmin(1.0, fmax(0.0, f));
+    return mat_fmin(1.0, mat_fmax(0.0, f));
 }
 
 void mat_metallic_tint(double metallic, double cos_angle,
@@ -690,10 +698,10 @@ bool mat_layer_reflectivity(const struct mat_layer *layer, double cos_i,
         double sqx = n * n + cos_i * cos_i - 1.0;
         for (int k = 0; k < 3; k++)
             refl[k] = sqx > 0.0 ? fr * mx[k] + (1.0 - fr) * mn[k] : mx[k];
-        *weight = fmax(refl[0], fmax(refl[1], refl[2]));
+        *weight = mat_fmax(refl[0], mat_fmax(refl[1], refl[2]));
     } else {
-        *weight = fmax(fmax(mx[0], fmax(mx[1], mx[2])),
-                       fmax(mn[0], fmax(mn[1], mn[2])));
+        *weight = mat_fmax(mat_fmax(mx[0], mat_fmax(mx[1], mx[2])),
+                           mat_fmax(mn[0], mat_fmax(mn[1], mn[2])));
         double falloff = f->reflection_falloff != 0 ? f->reflection_falloff
                                                     : 1.0;
         double frac = fabs(falloff - 1.0) > 1e-10 ? pow(1.0 - cos_i, falloff)

@@ -41,6 +41,7 @@ void light_prepare(const iris_light *l, struct rlight *out)
     out->size1 = l->size1 > 0 ? l->size1 : 1;
     out->size2 = l->size2 > 0 ? l->size2 : 1;
     out->fill = l->shadowless;
+    out->attenuates = out->spot || out->cylinder || l->fade_power > 0.0;
 }
 
 double light_smoothstep(double low, double high, double pos)

@@ -30,6 +30,12 @@ struct rlight {
     double radius, falloff;    /* cylinder radius and falloff lengths */
     double tightness;
     bool spot, cylinder, parallel, area, fill;
+    /* spot, cylinder or fade_power > 0: light_attenuation() can give
+    ** other than 1 (one flag read per shadow ray instead of three) */
+    bool attenuates;
+    /* colour is black (each channel below trace.c's epsilon): set by
+    ** tracer_init(), which owns that test */
+    bool black;
     vec3 axis1, axis2;
     int size1, size2;
     /* projected_through: a query on that object alone (render.c builds
@@ -85,8 +91,7 @@ static inline double light_attenuation(const struct rlight *l, vec3 p,
 {
     /* inline: a point light without fade, the usual light, is 1 (what
     ** light_attenuation_full() returns for it) */
-    const iris_light *s = l->src;
-    if (!l->spot && !l->cylinder && !(s->fade_power > 0.0))
+    if (!l->attenuates)
         return 1.0;
     return light_attenuation_full(l, p, L, depth);
 }

@@ -9,6 +9,7 @@
 #include "config.h"
 
 #include <math.h>
+#include <stdint.h>
 #include <string.h>
 
 #include "render/trace.h"
@@ -47,6 +48,7 @@ unsigned trace_quality_flags(int q)
 }
 
 static bool shadow_opaque_scene(const iris_scene *scene);
+static bool rgb_zero(const double c[3]);
 
 bool tracer_init(struct tracer *t, const iris_scene *scene,
                  const struct mat_ctx *mat, const struct rquery *q,
@@ -81,6 +83,7 @@ bool tracer_init(struct tracer *t, const iris_scene *scene,
                               ? scene->lights[i]
                               : scene->group_lights[i - scene->n_lights],
                           &t->lights[i]);
+            t->lights[i].black = rgb_zero(t->lights[i].colour);
             if (t->lights[i].area) {
                 long g = (long)t->lights[i].size1 * t->lights[i].size2;
                 /* a point light, as the parser warned */
@@ -866,7 +869,8 @@ static inline void trace_shadow(struct trace_ctx *c,
     ** own rays (area_sample), any other light the ray to its centre; a
     ** shadowless light stops after the test */
     bool area = l->area && (ray_quality(c) & TQ_AREA_LIGHT) && !l->fill;
-    if (!area && !light_through(l, p, leave_eps(t, eps), L, &depth)) {
+    if (!area && l->through &&
+        !light_through_object(l, p, leave_eps(t, eps), L, &depth)) {
         lc[0] = lc[1] = lc[2] = 0.0;
         return;
     }
@@ -963,8 +967,12 @@ static inline void light_terms(struct trace_ctx *c,
     }
     if (fill || backside || c->gi_depth > 0) /* radiosity rays: none */
         return;
+    /* a finish without highlights (the usual diffuse one) ends here,
+    ** before the tint is set up */
+    if (!(f->phong > 0.0) && !(f->specular > 0.0))
+        return;
     double tint[3] = { 1, 1, 1 };
-    if (f->metallic > 0.0 && (f->phong > 0.0 || f->specular > 0.0))
+    if (f->metallic > 0.0)
         mat_metallic_tint(f->metallic, v3_dot(n, L), P, tint);
     if (f->phong > 0.0) {
         vec3 R = v3_madd(d, n, -2.0 * v3_dot(d, n));
@@ -1042,7 +1050,8 @@ static void full_area_light(struct trace_ctx *c, const struct layer_shade *s,
         }
 }
 
-/* POV-Ray's ComputeDiffuseLight over every light. */
+/* POV-Ray's ComputeDiffuseLight over every light. 'cache' is NULL where
+** the hit has one layer (no other layer could reuse a shadow test). */
 static void diffuse_light(struct trace_ctx *c, const struct layer_shade *s,
                           struct light_cache *cache, double out[3])
 {
@@ -1066,7 +1075,8 @@ static void diffuse_light(struct trace_ctx *c, const struct layer_shade *s,
         double a = full_area ? 1.0 : light_attenuation(l, p, L, depth);
         double lc[3] = { l->colour[0] * a, l->colour[1] * a,
                          l->colour[2] * a };
-        if (rgb_zero(lc))
+        /* a = 1 (the usual light): lc is the colour, tested once */
+        if (a == 1.0 ? l->black : rgb_zero(lc))
             continue;
         bool backside = false;
         if (!dbl && !full_area && v3_dot(s->l->n, L) < T_EPSILON) {
@@ -1076,12 +1086,12 @@ static void diffuse_light(struct trace_ctx *c, const struct layer_shade *s,
                 continue;
         }
         if ((t->quality & TQ_SHADOW) && (!l->fill || l->through)) {
-            if (i < MAX_CACHED_LIGHTS && cache->tested[i]) {
+            if (cache && i < MAX_CACHED_LIGHTS && cache->tested[i]) {
                 memcpy(lc, cache->colour[i], sizeof lc);
             } else {
                 trace_shadow(c, &s->eye->st, l, s->h->obj, p, s->h->eps, L,
                              depth, lc);
-                if (i < MAX_CACHED_LIGHTS) {
+                if (cache && i < MAX_CACHED_LIGHTS) {
                     cache->tested[i] = true;
                     memcpy(cache->colour[i], lc, sizeof lc);
                 }
@@ -1309,11 +1319,20 @@ struct refl_entry {
 /* Whether mat_layer_reflectivity() can give anything but 0: its first
 ** test, here without the call (most finishes reflect nothing, and the
 ** call per layer and hit was 2.6 % of a simple scene's eye pass). */
+static inline uint64_t double_bits(double x)
+{
+    uint64_t u;
+    memcpy(&u, &x, sizeof u);
+    return u;
+}
 static inline bool finish_reflects(const iris_finish *f)
 {
-    return !(f->reflection_max.r == 0 && f->reflection_max.g == 0 &&
-             f->reflection_max.b == 0 && f->reflection_min.r == 0 &&
-             f->reflection_min.g == 0 && f->reflection_min.b == 0);
+    /* the bits of the six, or'ed: 0 only where all are +0 (six double
+    ** compares cost twice this); a -0 answers true, and the call then
+    ** finds the layer black, as it would anyway */
+    const iris_colour *mx = &f->reflection_max, *mn = &f->reflection_min;
+    return (double_bits(mx->r) | double_bits(mx->g) | double_bits(mx->b) |
+            double_bits(mn->r) | double_bits(mn->g) | double_bits(mn->b)) != 0;
 }
 
 /* POV-Ray's ComputeLightedTexture for one stack of layers. */
@@ -1339,7 +1358,11 @@ static void lighted_texture(struct trace_ctx *c, const struct tray *eye,
     /* POV-Ray 3.7 drops ambient only where radiosity runs (+Q9) */
     bool use_ambient = !sc->settings.radiosity || !gather_wanted(t) ||
                        t->legacy;
-    double fres_n = relative_ior(eye, h);
+    /* fresnel's n, asked for by reflecting and subsurface layers only
+    ** (most layers are neither): computed at the first that asks */
+    double fres_n = 0.0;
+    bool fres_known = false;
+    bool any_refl = false;     /* some refl[] entry is not black */
     /* radiosity{}: an eye hit gathers (once for all layers) and reads
     ** the photon map without its global part; gather rays' hits read the
     ** global map only when recursion_limit allows a further bounce */
@@ -1368,18 +1391,26 @@ static void lighted_texture(struct trace_ctx *c, const struct tray *eye,
             out[1] = P->g;
             out[2] = P->b;
         } else {
-            double cosi = -v3_dot(eye->r.d, l->n);
             struct refl_entry *re = &refl[i];
-            re->n = l->n;
-            re->f = f;
-            re->exponent = f->reflection_exponent > 0
-                               ? 1.0 / f->reflection_exponent : 1.0;
-            double wf = 0.0;
-            if (!finish_reflects(f) ||
-                !mat_layer_reflectivity(l, cosi, fres_n, re->refl, &wf)) {
-                re->refl[0] = re->refl[1] = re->refl[2] = 0.0;
+            re->refl[0] = re->refl[1] = re->refl[2] = 0.0;
+            if (finish_reflects(f)) {
+                /* the rest of the entry is read only where refl is not
+                ** black (the reflection loop below) */
+                double cosi = -v3_dot(eye->r.d, l->n);
+                if (!fres_known) {
+                    fres_n = relative_ior(eye, h);
+                    fres_known = true;
+                }
+                re->n = l->n;
+                re->f = f;
+                re->exponent = f->reflection_exponent > 0
+                                   ? 1.0 / f->reflection_exponent : 1.0;
+                double wf = 0.0;
+                if (!mat_layer_reflectivity(l, cosi, fres_n, re->refl, &wf))
+                    re->refl[0] = re->refl[1] = re->refl[2] = 0.0;
+                re->weight = new_weight * wf;
+                any_refl = any_refl || !rgb_zero(re->refl);
             }
-            re->weight = new_weight * wf;
             double att = mat_opacity(t->mat, P);
             double tmp[3] = { 0, 0, 0 };
             const double col[3] = { P->r, P->g, P->b };
@@ -1410,6 +1441,10 @@ static void lighted_texture(struct trace_ctx *c, const struct tray *eye,
             /* subsurface{}: the BSSRDF stands for the diffuse term of
             ** the lights and photons below (subsurface.h) */
             if (f->subsurface && subsurface_enabled(t)) {
+                if (!fres_known) {
+                    fres_n = relative_ior(eye, h);
+                    fres_known = true;
+                }
                 l = subsurface_shade(c, eye, h, l, raw, fres_n, lit, &sss,
                                      tmp);
                 f = l->finish;
@@ -1468,14 +1503,14 @@ static void lighted_texture(struct trace_ctx *c, const struct tray *eye,
     }
 
     /* Reflection, unfiltered by the layers above. */
-    if (t->quality & TQ_REFLECT) {
+    if (any_refl && (t->quality & TQ_REFLECT)) {
         for (int i = 0; i < n_done; i++) {
             struct refl_entry *re = &refl[i];
+            if (rgb_zero(re->refl))
+                continue;
             if (tir && fabs(n_top.x - re->n.x) <= T_EPSILON &&
                 fabs(n_top.y - re->n.y) <= T_EPSILON &&
                 fabs(n_top.z - re->n.z) <= T_EPSILON)
-                continue;
-            if (rgb_zero(re->refl))
                 continue;
             double rfl[3] = { 0, 0, 0 };
             reflect(c, eye, h, re->f, re->n, raw, re->weight, rfl);
@@ -1507,15 +1542,27 @@ static void texture_colour(struct trace_ctx *c, const struct tray *eye,
     struct mat_eval *ev = &evs;
     out[0] = out[1] = out[2] = 0.0;
     mat_eval_texture(t->mat, hit_texture(h, nd > 0.0), &pt, ev);
-    struct light_cache cache;
-    memset(cache.tested, 0, sizeof cache.tested);
+    /* the shadow colours are shared only between layers: a texture of
+    ** one layer (the usual one) tests each light once anyway */
+    struct light_cache cache, *cp = NULL;
+    if (ev->n_layers > 1) {
+        memset(cache.tested, 0, sizeof cache.tested);
+        cp = &cache;
+    }
     double transm = 0.0;       /* the stacks' c->transm, blended */
     for (int s = 0; s < ev->n_stacks; s++) {
         const struct mat_stack *sk = &ev->stacks[s];
         if (sk->weight < t->adc)
             continue;
+        /* one stack of weight 1, every texture but a blend: its colour
+        ** and c->transm are the hit's (1 x + 0 is x, but for the sign
+        ** of a zero, which no pixel shows) */
+        bool whole = ev->n_stacks == 1 && sk->weight == 1.0;
         double col[3];
-        lighted_texture(c, eye, h, ev, sk, raw, weight, &cache, col);
+        lighted_texture(c, eye, h, ev, sk, raw, weight, cp,
+                        whole ? out : col);
+        if (whole)
+            return;
         for (int k = 0; k < 3; k++)
             out[k] += sk->weight * col[k];
         transm += sk->weight * c->transm;

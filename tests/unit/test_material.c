@@ -339,6 +339,98 @@ static void test_texture_stacks(void **state)
     assert_near(wb, 0.25, 1e-12);
 }
 
+/*
+** A list of plain layers (mat_eval_layers' own loop, not eval_layer()):
+** one stack, top first, ending at the first opaque layer (the one below
+** it is never evaluated); a layer's normal{} perturbs the raw normal for
+** that layer only, and quality below 8 (skip_normals) leaves it raw.
+** Each layer must equal the layer evaluated alone.
+*/
+static void test_plain_layers(void **state)
+{
+    (void)state;
+    iris_finish f;
+    memset(&f, 0, sizeof f);
+    f.diffuse = 0.6;
+    iris_normal bumps;
+    memset(&bumps, 0, sizeof bumps);
+    bumps.pattern.kind = IRIS_PAT_BUMPS;
+    bumps.amount = 0.5;
+    iris_pigment p[4];
+    memset(p, 0, sizeof p);
+    p[0].colour = rgb(1, 0, 0);
+    p[0].colour.t = 0.5;
+    p[1].colour = rgb(0, 1, 0);
+    p[1].colour.f = 0.3;
+    p[2].colour = rgb(0, 0, 1);
+    p[3].colour = rgb(1, 1, 1);
+    iris_texture t[4];
+    memset(t, 0, sizeof t);
+    for (int i = 0; i < 4; i++) {
+        t[i].pigment = &p[i];
+        t[i].finish = &f;
+        t[i].next = i < 3 ? &t[i + 1] : NULL;
+    }
+    t[0].normal = &bumps;
+    struct mat_point pt;
+    memset(&pt, 0, sizeof pt);
+    pt.p = v3(0.3, 0.1, 0.7);
+    pt.n = v3(0, 1, 0);
+    struct mat_eval ev;
+    mat_eval_texture(NULL, &t[0], &pt, &ev);
+    assert_int_equal(ev.n_stacks, 1);
+    assert_int_equal(ev.n_layers, 3); /* t[3], below opaque t[2]: unused */
+    assert_int_equal(ev.stacks[0].first, 0);
+    assert_int_equal(ev.stacks[0].n, 3);
+    assert_near(ev.stacks[0].weight, 1, 0);
+    vec3 bumped = mat_perturb_normal(NULL, &bumps, &pt, pt.n);
+    assert_true(fabs(bumped.y - 1) > 1e-6); /* the bumps do tilt it here */
+    for (int i = 0; i < 3; i++) {
+        const struct mat_layer *l = &ev.layers[i];
+        assert_true(l->valid);
+        assert_ptr_equal(l->finish, &f);
+        assert_near(l->pigment.r, p[i].colour.r, 0);
+        assert_near(l->pigment.g, p[i].colour.g, 0);
+        assert_near(l->pigment.f, p[i].colour.f, 0);
+        assert_near(l->pigment.t, p[i].colour.t, 0);
+        vec3 n = i == 0 ? bumped : pt.n;
+        assert_near(l->n.x, n.x, 0);
+        assert_near(l->n.y, n.y, 0);
+        assert_near(l->n.z, n.z, 0);
+    }
+    pt.skip_normals = true;
+    mat_eval_texture(NULL, &t[0], &pt, &ev);
+    assert_int_equal(ev.n_layers, 3);
+    assert_near(ev.layers[0].n.y, 1, 0);
+}
+
+/* mat_fmax() and mat_fmin() give what libm's fmax() and fmin() give,
+** bit for bit, on ordinary numbers, infinities, zeros and NaNs. */
+static void test_fmax_fmin(void **state)
+{
+    (void)state;
+    const double v[] = { 0.0, -0.0, 1.0, -1.0, 0.25, 1e308, -1e-308,
+                         HUGE_VAL, -HUGE_VAL, NAN };
+    int n = (int)(sizeof v / sizeof v[0]);
+    for (int i = 0; i < n; i++)
+        for (int j = 0; j < n; j++) {
+            double a = v[i], b = v[j];
+            double mx = mat_fmax(a, b), mn = mat_fmin(a, b);
+            if (isnan(a) && isnan(b)) {
+                assert_true(isnan(mx) && isnan(mn));
+                continue;
+            }
+            /* both zeros: fmax/fmin may give either sign (C11 F.10.9.2),
+            ** any other pair one value */
+            if (a == 0 && b == 0) {
+                assert_true(mx == 0 && mn == 0);
+                continue;
+            }
+            assert_memory_equal(&mx, &(double){ fmax(a, b) }, sizeof mx);
+            assert_memory_equal(&mn, &(double){ fmin(a, b) }, sizeof mn);
+        }
+}
+
 /* POV-Ray's fresnel formula is the exact unpolarised Fresnel reflectance
 ** of a dielectric: compare with Rs and Rp from Snell's law. */
 static void test_fresnel(void **state)
@@ -652,6 +744,8 @@ int main(void)
         cmocka_unit_test(test_pattern_transform),
         cmocka_unit_test(test_colour_map),
         cmocka_unit_test(test_texture_stacks),
+        cmocka_unit_test(test_plain_layers),
+        cmocka_unit_test(test_fmax_fmin),
         cmocka_unit_test(test_fresnel),
         cmocka_unit_test(test_reflectivity),
         cmocka_unit_test(test_transmittance),
