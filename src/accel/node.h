@@ -98,6 +98,11 @@ struct anode {
     bool sphere_uv;                /* AN_SHAPE sphere: a texture of its
                                       hits may read uv (accel_intersect
                                       computes it only then) */
+    const iris_texture *texture;   /* leaves: their hits' texture where
+                                      the crossing has none of its own:
+                                      obj's, else top's, else the
+                                      accel's default (accel.c, set
+                                      once after the build) */
     bool has_blob_box;             /* AN_SHAPE blob: geom_blob_bounds() */
     vec3 blob_lo, blob_hi;         /* in object space, computed once */
     struct amesh *mesh;            /* AN_MESH */

@@ -227,8 +227,40 @@ void geom_plane_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
                      double t1, struct isect_list *out);
 void geom_box_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
                    double t1, struct isect_list *out);
+/* A crossing of a box: its t, the axis of its face and the side of
+** that face (-1 low, +1 high) */
+struct geom_box_cross {
+    double t;
+    int axis;
+    double side;
+};
+/* geom_box_hits() in parts, for a caller that wants only the nearest
+** crossing (accel/node.c): the crossings in (t0, t1), entering first,
+** into c[] (their count, 0-2); the object-space unit normal of one;
+** its uv, as geom_box_hits() gives it (0 where not finite). */
+int geom_box_crossings(const iris_object *o, vec3 ro, vec3 rd, double t0,
+                       double t1, struct geom_box_cross c[2]);
+vec3 geom_box_normal(const struct geom_box_cross *c);
+iris_vec2 geom_box_uv(const iris_object *o, vec3 ro, vec3 rd,
+                      const struct geom_box_cross *c);
 void geom_cone_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
                     double t1, struct isect_list *out);
+/* A crossing of a cylinder or cone: its t, its object-space normal
+** (finite, not zero: those geom_cone_hits() keeps), and for one on the
+** side what its uv is computed from */
+struct geom_cone_cross {
+    double t;
+    vec3 n;
+    bool side;
+    double x, y, z, len;
+};
+/* geom_cone_hits() in parts, for a caller that wants only the nearest
+** crossing (accel/node.c): the crossings it would push, in its order,
+** into c[] (their count, 0-4), and the uv of one (its atan2 asked only
+** for the crossing kept), as geom_cone_hits() gives it. */
+int geom_cone_crossings(const iris_object *o, vec3 ro, vec3 rd, double t0,
+                        double t1, struct geom_cone_cross c[4]);
+iris_vec2 geom_cone_uv(const struct geom_cone_cross *c);
 void geom_disc_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
                     double t1, struct isect_list *out);
 bool geom_cone_inside(const iris_object *o, vec3 p);

@@ -114,8 +114,8 @@ static iris_vec2 box_uv(vec3 lo, vec3 hi, vec3 p, int axis, double side)
     return uv; /* a flat box's 0/0 is NaN: isect_push() makes it 0 */
 }
 
-void geom_box_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
-                   double t1, struct isect_list *out)
+int geom_box_crossings(const iris_object *o, vec3 ro, vec3 rd, double t0,
+                       double t1, struct geom_box_cross c[2])
 {
     vec3 lo = v3_min(o->u.box.lo, o->u.box.hi);
     vec3 hi = v3_max(o->u.box.lo, o->u.box.hi);
@@ -127,7 +127,7 @@ void geom_box_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
         double l = v3_comp(lo, k), h = v3_comp(hi, k);
         if (dk == 0) {
             if (ok < l || ok > h)
-                return;
+                return 0;
             continue;
         }
         double ta = (l - ok) / dk, tb = (h - ok) / dk;
@@ -152,18 +152,43 @@ void geom_box_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
         }
     }
     if (!(tin <= tout) || ain < 0 || aout < 0)
-        return;
-    double nin[3] = { 0, 0, 0 }, nout[3] = { 0, 0, 0 };
-    nin[ain] = sin_;
-    nout[aout] = sout;
+        return 0;
+    int nc = 0;
+    if (tin > t0 && tin < t1)
+        c[nc++] = (struct geom_box_cross){ tin, ain, sin_ };
+    if (tout > t0 && tout < t1 && tout > tin)
+        c[nc++] = (struct geom_box_cross){ tout, aout, sout };
+    return nc;
+}
+
+vec3 geom_box_normal(const struct geom_box_cross *c)
+{
+    double n[3] = { 0, 0, 0 };
+    n[c->axis] = c->side;
+    return v3(n[0], n[1], n[2]);
+}
+
+iris_vec2 geom_box_uv(const iris_object *o, vec3 ro, vec3 rd,
+                      const struct geom_box_cross *c)
+{
+    vec3 lo = v3_min(o->u.box.lo, o->u.box.hi);
+    vec3 hi = v3_max(o->u.box.lo, o->u.box.hi);
+    iris_vec2 uv = box_uv(lo, hi, v3_madd(ro, rd, c->t), c->axis, c->side);
+    /* as isect_push() keeps it */
+    uv.u = isfinite(uv.u) ? uv.u : 0;
+    uv.v = isfinite(uv.v) ? uv.v : 0;
+    return uv;
+}
+
+void geom_box_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
+                   double t1, struct isect_list *out)
+{
+    struct geom_box_cross c[2];
+    int nc = geom_box_crossings(o, ro, rd, t0, t1, c);
     /* uv for every crossing: a dozen flops, cheaper than asking later */
-    if (tin > t0 && tin < t1) {
-        iris_vec2 uv = box_uv(lo, hi, v3_madd(ro, rd, tin), ain, sin_);
-        isect_push(out, tin, v3(nin[0], nin[1], nin[2]), uv.u, uv.v);
-    }
-    if (tout > t0 && tout < t1 && tout > tin) {
-        iris_vec2 uv = box_uv(lo, hi, v3_madd(ro, rd, tout), aout, sout);
-        isect_push(out, tout, v3(nout[0], nout[1], nout[2]), uv.u, uv.v);
+    for (int k = 0; k < nc; k++) {
+        iris_vec2 uv = geom_box_uv(o, ro, rd, &c[k]);
+        isect_push(out, c[k].t, geom_box_normal(&c[k]), uv.u, uv.v);
     }
 }
 
@@ -219,13 +244,21 @@ static void cone_frame(const iris_object *o, struct cone_frame *f)
     v3_basis(f->w, &f->u, &f->v);
 }
 
-void geom_cone_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
-                    double t1, struct isect_list *out)
+/* isect_push()'s test of a crossing's normal: finite and not zero */
+static bool normal_kept(vec3 n)
+{
+    return isfinite(n.x) && isfinite(n.y) && isfinite(n.z) &&
+           !(n.x == 0 && n.y == 0 && n.z == 0);
+}
+
+int geom_cone_crossings(const iris_object *o, vec3 ro, vec3 rd, double t0,
+                        double t1, struct geom_cone_cross c[4])
 {
     struct cone_frame f;
     cone_frame(o, &f);
     if (f.empty)
-        return;
+        return 0;
+    int nc = 0;
     vec3 q = v3_sub(ro, f.a);
     double ox = v3_dot(q, f.u), oy = v3_dot(q, f.v), oz = v3_dot(q, f.w);
     double dx = v3_dot(rd, f.u), dy = v3_dot(rd, f.v), dz = v3_dot(rd, f.w);
@@ -247,20 +280,47 @@ void geom_cone_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
         double x = ox + t * dx, y = oy + t * dy;
         vec3 nn = v3_add(v3_add(v3_scale(f.u, x), v3_scale(f.v, y)),
                          v3_scale(f.w, -rz * k));
-        isect_push(out, t, nn, atan2(y, x) / (2 * M_PI) + 0.5, z / f.len);
+        if (normal_kept(nn))
+            c[nc++] = (struct geom_cone_cross){ t, nn, true, x, y, z, f.len };
     }
 
     /* End caps */
     if (o->open || dz == 0)
-        return;
+        return nc;
     for (int end = 0; end < 2; end++) {
         double zc = end ? f.len : 0, rc = fabs(end ? f.rb : f.ra);
         double t = (zc - oz) / dz;
         if (!(t > t0 && t < t1) || rc <= 0)
             continue;
         double x = ox + t * dx, y = oy + t * dy;
-        if (x * x + y * y <= rc * rc)
-            isect_push(out, t, end ? f.w : v3_neg(f.w), 0, 0);
+        vec3 nn = end ? f.w : v3_neg(f.w);
+        if (x * x + y * y <= rc * rc && normal_kept(nn))
+            c[nc++] = (struct geom_cone_cross){ t, nn, false, 0, 0, 0, 0 };
+    }
+    return nc;
+}
+
+iris_vec2 geom_cone_uv(const struct geom_cone_cross *c)
+{
+    iris_vec2 uv = { 0, 0 };
+    if (c->side) {
+        uv.u = atan2(c->y, c->x) / (2 * M_PI) + 0.5;
+        uv.v = c->z / c->len;
+    }
+    /* as isect_push() keeps it */
+    uv.u = isfinite(uv.u) ? uv.u : 0;
+    uv.v = isfinite(uv.v) ? uv.v : 0;
+    return uv;
+}
+
+void geom_cone_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
+                    double t1, struct isect_list *out)
+{
+    struct geom_cone_cross c[4];
+    int nc = geom_cone_crossings(o, ro, rd, t0, t1, c);
+    for (int i = 0; i < nc; i++) {
+        iris_vec2 uv = geom_cone_uv(&c[i]);
+        isect_push(out, c[i].t, c[i].n, uv.u, uv.v);
     }
 }
 

@@ -387,17 +387,26 @@ static double aa_distance(const struct px *a, const struct px *b)
            fabs(a->g[2] - b->g[2]) + fabs(a->c[3] - b->c[3]);
 }
 
+/* aa_differs() once the fast distance cannot settle it: with the exact
+** values (rare: a call of its own, so that the common case inlines) */
+static __attribute__((noinline)) bool aa_differs_exact(const struct job *j,
+                                                       struct px *a,
+                                                       struct px *b)
+{
+    px_gamma_exact(j, a);
+    px_gamma_exact(j, b);
+    return aa_distance(a, b) >= j->aa_threshold;
+}
+
 /* Whether a and b differ by the AA threshold, as with exact pow(): the
 ** fast distance is off by at most a->gerr + b->gerr, so only a distance
-** that close to the threshold needs the exact values. */
-static bool aa_differs(const struct job *j, struct px *a, struct px *b)
+** that close to the threshold needs the exact values. Inline: asked
+** twice per pixel. */
+static inline bool aa_differs(const struct job *j, struct px *a, struct px *b)
 {
     double d = aa_distance(a, b), e = a->gerr + b->gerr;
-    if (e > 0.0 && fabs(d - j->aa_threshold) <= e) {
-        px_gamma_exact(j, a);
-        px_gamma_exact(j, b);
-        d = aa_distance(a, b);
-    }
+    if (e > 0.0 && fabs(d - j->aa_threshold) <= e)
+        return aa_differs_exact(j, a, b);
     return d >= j->aa_threshold;
 }
 

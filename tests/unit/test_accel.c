@@ -1335,6 +1335,267 @@ static void test_fast_paths(void **state)
     }
 }
 
+/* The nearest crossing of world ray o + t·d with transformed box 'b',
+** t > tmin, solved here with the textbook slab method in object space
+** (independently of src/geometry); INFINITY for none. *enters: whether
+** the ray enters the box there. */
+static double brute_box(const iris_object *b, vec3 o, vec3 d, double tmin,
+                        bool *enters)
+{
+    vec3 lo = xf_inv_point(&b->transform, o);
+    vec3 ld = xf_inv_dir(&b->transform, d);
+    const double ol[3] = { lo.x, lo.y, lo.z }, dl[3] = { ld.x, ld.y, ld.z };
+    const double bl[3] = { b->u.box.lo.x, b->u.box.lo.y, b->u.box.lo.z };
+    const double bh[3] = { b->u.box.hi.x, b->u.box.hi.y, b->u.box.hi.z };
+    double t0 = -INFINITY, t1 = INFINITY;
+    for (int k = 0; k < 3; k++) {
+        double ta = (bl[k] - ol[k]) / dl[k], tb = (bh[k] - ol[k]) / dl[k];
+        t0 = fmax(t0, fmin(ta, tb));
+        t1 = fmin(t1, fmax(ta, tb));
+    }
+    *enters = t0 > tmin;
+    if (t0 > t1)
+        return INFINITY;
+    return t0 > tmin ? t0 : t1 > tmin ? t1 : INFINITY;
+}
+
+/*
+** A box leaf without clipping takes node.c's box_nearest(), which must
+** give what the general path (the crossing list of geom_box_hits, then
+** shape_hits' world normals) gives: the same crossing, t, normal and uv
+** to the bit. The same random boxes (rotated, stretched, one inverted)
+** are built twice, once plain and once clipped by a sphere holding them
+** all (a clipped leaf takes the general path; the clip cuts nothing),
+** with 5 boxes (the linear search) and 12 (Embree). Rays are aimed at
+** points on the boxes' faces from afar; each must also meet the box and
+** the t of a brute-force slab search in the test (relative 1e-9: the
+** same slabs, divided where the library multiplies), rays within 1e-6
+** of an edge left out (there the nearest face is ill-conditioned).
+*/
+static void test_box_fast_path(void **state)
+{
+    (void)state;
+    const int counts[2] = { 5, 12 };
+    for (int k = 0; k < 2; k++) {
+        iris_scene *sc[2];
+        iris_object *bx[2][12];
+        rng g;
+        for (int v = 0; v < 2; v++) {
+            sc[v] = scene_new();
+            rng_seed(&g, 23, (uint64_t)k, 0); /* the same boxes twice */
+            for (int i = 0; i < counts[k]; i++) {
+                vec3 lo = v3(-rng_uniform(&g) - 0.2, -rng_uniform(&g) - 0.2,
+                             -rng_uniform(&g) - 0.2);
+                vec3 hi = v3(rng_uniform(&g) + 0.2, rng_uniform(&g) + 0.2,
+                             rng_uniform(&g) + 0.2);
+                iris_object *b = box_object(sc[v], lo, hi);
+                b->inverse = i == 1;
+                xform x;
+                xf_scale(&x, v3(0.5 + rng_uniform(&g), 0.5 + rng_uniform(&g),
+                                0.5 + rng_uniform(&g)));
+                apply(b, &x);
+                xf_rotate(&x, v3(360 * rng_uniform(&g), 360 * rng_uniform(&g),
+                                 360 * rng_uniform(&g)));
+                apply(b, &x);
+                xf_translate(&x, v3(12 * rng_uniform(&g) - 6,
+                                    12 * rng_uniform(&g) - 6,
+                                    12 * rng_uniform(&g) - 6));
+                apply(b, &x);
+                if (v == 1) {
+                    b->n_clipped_by = 1;
+                    b->clipped_by =
+                        arena_array(sc[v]->arena, 1, sizeof(iris_object *));
+                    b->clipped_by[0] = sphere(sc[v], v3(0, 0, 0), 100);
+                }
+                bx[v][i] = add(sc[v], b);
+            }
+        }
+        struct accel *a[2] = { build(sc[0]), build(sc[1]) };
+        int n_hits = 0, n_rays = 0;
+        for (int r = 0; r < 4000; r++) {
+            /* a point on a random face of a random box */
+            int i = (int)(rng_u32(&g) % (uint32_t)counts[k]);
+            const iris_object *b = bx[0][i];
+            int axis = (int)(rng_u32(&g) % 3u);
+            double f[3] = { rng_uniform(&g), rng_uniform(&g),
+                            rng_uniform(&g) };
+            f[axis] = rng_uniform(&g) < 0.5 ? 0.0 : 1.0;
+            vec3 pl = v3(b->u.box.lo.x + f[0] * (b->u.box.hi.x - b->u.box.lo.x),
+                         b->u.box.lo.y + f[1] * (b->u.box.hi.y - b->u.box.lo.y),
+                         b->u.box.lo.z + f[2] * (b->u.box.hi.z - b->u.box.lo.z));
+            bool edge = false;
+            for (int c = 0; c < 3; c++)
+                if (c != axis && (f[c] < 1e-6 || f[c] > 1 - 1e-6))
+                    edge = true;
+            vec3 p = xf_point(&b->transform, pl);
+            vec3 o = v3(40 * rng_uniform(&g) - 20, 40 * rng_uniform(&g) - 20,
+                        40 * rng_uniform(&g) - 20);
+            vec3 d = v3_norm(v3_sub(p, o));
+            double tmin = accel_epsilon(a[0]);
+            double best = INFINITY;
+            int bi = -1;
+            bool enters = false;
+            for (int j = 0; j < counts[k]; j++) {
+                bool e;
+                double t = brute_box(bx[0][j], o, d, tmin, &e);
+                if (t < best) {
+                    best = t;
+                    bi = j;
+                    enters = e;
+                }
+            }
+            if (edge)
+                continue;
+            n_rays++;
+            ray ry = { o, d };
+            struct hit h[2];
+            bool got[2];
+            for (int v = 0; v < 2; v++)
+                got[v] = accel_intersect(a[v], &ry, tmin, INFINITY, 0, &h[v]);
+            assert_int_equal(got[0], got[1]);
+            assert_int_equal(got[0], bi >= 0);
+            if (!got[0])
+                continue;
+            n_hits++;
+            assert_ptr_equal(h[0].obj, bx[0][bi]);
+            assert_ptr_equal(h[1].obj, bx[1][bi]);
+            assert_rel(h[0].t, best, 1e-9);
+            /* the fast path's crossing is the general path's, to the bit */
+            assert_true(h[0].t == h[1].t);
+            assert_true(h[0].n.x == h[1].n.x && h[0].n.y == h[1].n.y &&
+                        h[0].n.z == h[1].n.z);
+            assert_true(h[0].uv.u == h[1].uv.u && h[0].uv.v == h[1].uv.v);
+            /* a unit normal out of the box: against the ray where it
+            ** enters, along it where it leaves (the other way round for
+            ** the inverted box, whose outside is its inside) */
+            assert_near(v3_len(h[0].n), 1, 1e-12);
+            double facing = v3_dot(h[0].n, d);
+            assert_true((bi == 1) != enters ? facing < 0 : facing > 0);
+        }
+        /* most rays are kept and hit what they aim at */
+        assert_true(n_rays > 3900);
+        assert_true(n_hits > 3000);
+        for (int v = 0; v < 2; v++) {
+            accel_destroy(a[v]);
+            scene_free(sc[v]);
+        }
+    }
+}
+
+/*
+** Cylinders and cones without clipping take node.c's cone_nearest(),
+** which must give the general path's crossing (the list of
+** geom_cone_hits, then shape_hits' world normals) to the bit: t, normal
+** and uv (the side's uv is an atan2, asked for the kept crossing only).
+** As in test_box_fast_path, the same random shapes (cylinders, cones, a
+** cone to an apex, an open cylinder, one inverted) are built plain and
+** clipped by a sphere holding them all; rays are aimed at points on
+** their sides and caps from afar, through the linear search (6 shapes)
+** and Embree (12). Every ray aims at a surface, so most must hit.
+*/
+static void test_cone_fast_path(void **state)
+{
+    (void)state;
+    const int counts[2] = { 6, 12 };
+    for (int k = 0; k < 2; k++) {
+        iris_scene *sc[2];
+        iris_object *sh[2][12];
+        rng g;
+        for (int v = 0; v < 2; v++) {
+            sc[v] = scene_new();
+            rng_seed(&g, 29, (uint64_t)k, 0); /* the same shapes twice */
+            for (int i = 0; i < counts[k]; i++) {
+                double r0 = 0.3 + rng_uniform(&g), r1 = 0.3 + rng_uniform(&g);
+                iris_object *o;
+                if (i % 3 == 0) {
+                    o = obj(sc[v], IRIS_OBJ_CYLINDER);
+                    o->u.cylinder.base = v3(0, -1, 0);
+                    o->u.cylinder.cap = v3(0, 1, 0);
+                    o->u.cylinder.radius = r0;
+                    o->open = i == 3;
+                } else {
+                    o = obj(sc[v], IRIS_OBJ_CONE);
+                    o->u.cone.base = v3(0, -1, 0);
+                    o->u.cone.cap = v3(0, 1, 0);
+                    o->u.cone.base_radius = r0;
+                    o->u.cone.cap_radius = i % 3 == 2 ? 0 : r1;
+                }
+                o->inverse = i == 1;
+                xform x;
+                xf_scale(&x, v3(0.5 + rng_uniform(&g), 0.5 + rng_uniform(&g),
+                                0.5 + rng_uniform(&g)));
+                apply(o, &x);
+                xf_rotate(&x, v3(360 * rng_uniform(&g), 360 * rng_uniform(&g),
+                                 360 * rng_uniform(&g)));
+                apply(o, &x);
+                xf_translate(&x, v3(12 * rng_uniform(&g) - 6,
+                                    12 * rng_uniform(&g) - 6,
+                                    12 * rng_uniform(&g) - 6));
+                apply(o, &x);
+                if (v == 1) {
+                    o->n_clipped_by = 1;
+                    o->clipped_by =
+                        arena_array(sc[v]->arena, 1, sizeof(iris_object *));
+                    o->clipped_by[0] = sphere(sc[v], v3(0, 0, 0), 100);
+                }
+                sh[v][i] = add(sc[v], o);
+            }
+        }
+        struct accel *a[2] = { build(sc[0]), build(sc[1]) };
+        int n_hits = 0, n_side = 0;
+        for (int r = 0; r < 4000; r++) {
+            /* a point on a random shape's side or cap, in its own frame */
+            int i = (int)(rng_u32(&g) % (uint32_t)counts[k]);
+            const iris_object *o = sh[0][i];
+            double r0 = o->kind == IRIS_OBJ_CONE ? o->u.cone.base_radius
+                                                 : o->u.cylinder.radius;
+            double r1 = o->kind == IRIS_OBJ_CONE ? o->u.cone.cap_radius : r0;
+            double y = 2 * rng_uniform(&g) - 1, phi = 2 * M_PI * rng_uniform(&g);
+            double rad = r0 + (r1 - r0) * (y + 1) / 2;
+            if (rng_uniform(&g) < 0.25) { /* a cap */
+                y = rng_uniform(&g) < 0.5 ? -1 : 1;
+                rad = (y < 0 ? r0 : r1) * rng_uniform(&g);
+            }
+            vec3 p = xf_point(&o->transform,
+                              v3(rad * cos(phi), y, rad * sin(phi)));
+            vec3 org = v3(40 * rng_uniform(&g) - 20, 40 * rng_uniform(&g) - 20,
+                          40 * rng_uniform(&g) - 20);
+            vec3 d = v3_norm(v3_sub(p, org));
+            ray ry = { org, d };
+            struct hit h[2];
+            bool got[2];
+            for (int v = 0; v < 2; v++)
+                got[v] = accel_intersect(a[v], &ry, accel_epsilon(a[v]),
+                                         INFINITY, 0, &h[v]);
+            assert_int_equal(got[0], got[1]);
+            if (!got[0])
+                continue;
+            n_hits++;
+            /* the same shape, the fast path's crossing the general
+            ** path's to the bit */
+            int j = 0;
+            while (j < counts[k] && sh[0][j] != h[0].obj)
+                j++;
+            assert_true(j < counts[k]);
+            assert_ptr_equal(h[1].obj, sh[1][j]);
+            assert_true(h[0].t == h[1].t);
+            assert_true(h[0].n.x == h[1].n.x && h[0].n.y == h[1].n.y &&
+                        h[0].n.z == h[1].n.z);
+            assert_true(h[0].uv.u == h[1].uv.u && h[0].uv.v == h[1].uv.v);
+            assert_near(v3_len(h[0].n), 1, 1e-12);
+            if (h[0].uv.u != 0 || h[0].uv.v != 0)
+                n_side++;
+        }
+        /* most rays hit, and many on a side (a uv of its own) */
+        assert_true(n_hits > 3000);
+        assert_true(n_side > 1000);
+        for (int v = 0; v < 2; v++) {
+            accel_destroy(a[v]);
+            scene_free(sc[v]);
+        }
+    }
+}
+
 int main(void)
 {
     glass.ior = 1.5;
@@ -1360,6 +1621,8 @@ int main(void)
         cmocka_unit_test(test_threads),
         cmocka_unit_test(test_self_hit),
         cmocka_unit_test(test_fast_paths),
+        cmocka_unit_test(test_box_fast_path),
+        cmocka_unit_test(test_cone_fast_path),
         cmocka_unit_test(test_csg_polytope),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
