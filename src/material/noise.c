@@ -111,6 +111,45 @@ static double wave_freqs[WAVE_TABLE];
 
 static pthread_once_t noise_once = PTHREAD_ONCE_INIT;
 
+/* MT19937: POV-Ray's PatternRands table comes from its default stream.
+** Built with the noise tables (at mat_ctx_create, before rendering, as
+** POV-Ray builds it at start-up) rather than at its first use, which
+** would fall inside the render. */
+#define MT_N 624
+#define RAND_TABLE 32768
+
+static double rand_table[RAND_TABLE];
+
+/* Fills rand_table with the first 32768 outputs of MT19937 seeded with
+** 5489 (the standard default), each divided by 2^32 as Boost's
+** uniform_real<double>(0, 1) does for a 32-bit engine. */
+static void build_rand_table(void)
+{
+    uint32_t mt[MT_N];
+    mt[0] = 5489u;
+    for (int i = 1; i < MT_N; i++)
+        mt[i] = 1812433253u * (mt[i - 1] ^ (mt[i - 1] >> 30)) + (uint32_t)i;
+    int idx = MT_N;
+    for (int k = 0; k < RAND_TABLE; k++) {
+        if (idx >= MT_N) {
+            for (int i = 0; i < MT_N; i++) {
+                uint32_t y = (mt[i] & 0x80000000u) |
+                             (mt[(i + 1) % MT_N] & 0x7fffffffu);
+                mt[i] = mt[(i + 397) % MT_N] ^ (y >> 1) ^
+                        ((y & 1u) ? 0x9908b0dfu : 0u);
+            }
+            idx = 0;
+        }
+        uint32_t y = mt[idx++];
+        y ^= y >> 11;
+        y ^= (y << 7) & 0x9d2c5680u;
+        y ^= (y << 15) & 0xefc60000u;
+        y ^= y >> 18;
+        rand_table[k] = (double)y / 4294967296.0;
+    }
+}
+
+
 /* POV-Ray's table generator: next = next*1812433253 + 12345 in 32 bits,
 ** and 15 bits taken from bit 16 up. */
 static int lcg15(uint32_t *state)
@@ -210,6 +249,7 @@ static void init_once(void)
 {
     build_tables();
     build_waves(); /* needs the tables above */
+    build_rand_table();
     atomic_store_explicit(&noise_ready, true, memory_order_release);
 }
 
@@ -259,24 +299,25 @@ static double scurve(double a)
 
 /* The lattice cell of one coordinate: integer part (floored, with POV-Ray's
 ** epsilon for negatives), its hash index and the fraction. */
-static void lattice(double x, int *index, double *frac)
+static void lattice(double x, unsigned *index, double *frac)
 {
     int cell = x >= 0 ? (int)x : (int)(x - (1 - NOISE_EPSILON));
-    *index = (cell - LATTICE_MIN) & 0xFFF;
+    *index = (unsigned)(cell - LATTICE_MIN) & 0xFFF;
     *frac = x - cell;
 }
 
 /* What both lattice noises need of a point: the hash indices of its cell,
 ** the offsets from the cell's low (f) and high (g) corners, and the
 ** s-curve weights (s along, t = 1 - s) with the four xy products. */
-static int hash2d(int a, int b)
+static unsigned hash2d(unsigned a, unsigned b)
 {
     return hash_table[hash_table[a] ^ b];
 }
 
+/* (Indices unsigned: no sign extension before each table read.) */
 struct cell {
-    int ix, iy, iz;
-    int h00, h10, h01, h11;    /* the hashes of the four (x, y) columns */
+    unsigned ix, iy, iz;
+    unsigned h00, h10, h01, h11; /* the hashes of the four (x, y) columns */
     double fx, fy, fz, gx, gy, gz;
     double sz, tz, txty, sxty, txsy, sxsy;
 };
@@ -304,7 +345,7 @@ static inline void cell_setup(vec3 p, struct cell *c)
 }
 
 /* The coefficients for lattice hash 'h' at z index 'iz'. */
-static inline const struct corner_block *coeffs(int h, int iz)
+static inline const struct corner_block *coeffs(unsigned h, unsigned iz)
 {
     return (const struct corner_block *)((const char *)corner_blocks +
                                          block_of[h ^ iz]);
@@ -370,12 +411,12 @@ double noise_value(vec3 p, int generator)
     }
     struct cell c;
     cell_setup(p, &c);
-    const int iz = c.iz;
+    const unsigned iz = c.iz;
     const double fx = c.fx, fy = c.fy, fz = c.fz, gx = c.gx, gy = c.gy,
                  gz = c.gz;
     const double sz = c.sz, tz = c.tz, txty = c.txty, sxty = c.sxty,
                  txsy = c.txsy, sxsy = c.sxsy;
-    const int h00 = c.h00, h10 = c.h10, h01 = c.h01, h11 = c.h11;
+    const unsigned h00 = c.h00, h10 = c.h10, h01 = c.h01, h11 = c.h11;
     double sum;
 #ifdef __SSE2__
     /* Corners two at a time (each pair differs only in x), the terms
@@ -441,12 +482,12 @@ static inline vec3 dnoise(vec3 p)
     p = safe_point(p);
     struct cell c;
     cell_setup(p, &c);
-    const int iz = c.iz;
+    const unsigned iz = c.iz;
     const double fx = c.fx, fy = c.fy, fz = c.fz, gx = c.gx, gy = c.gy,
                  gz = c.gz;
     const double sz = c.sz, tz = c.tz, txty = c.txty, sxty = c.sxty,
                  txsy = c.txsy, sxsy = c.sxsy;
-    const int h00 = c.h00, h10 = c.h10, h01 = c.h01, h11 = c.h11;
+    const unsigned h00 = c.h00, h10 = c.h10, h01 = c.h01, h11 = c.h11;
     pair pfx = pair_dup(fx), pgx = pair_dup(gx), pfy = pair_dup(fy);
     pair pgy = pair_dup(gy), pfz = pair_dup(fz), pgz = pair_dup(gz);
     /* Sums start from zero as POV-Ray's do (0 + -0 is +0). */
@@ -550,6 +591,19 @@ vec3 noise_dturbulence(vec3 p, const struct noise_turb *t)
         }
     }
     return r;
+}
+
+double noise_pattern_rand(unsigned long i)
+{
+    noise_init();
+    return rand_table[i % RAND_TABLE];
+}
+
+vec3 noise_pattern_rand3(unsigned long i)
+{
+    noise_init();
+    return v3(rand_table[i % RAND_TABLE], rand_table[(i + 1) % RAND_TABLE],
+              rand_table[(i + 2) % RAND_TABLE]);
 }
 
 int noise_hash_entry(int i)

@@ -46,6 +46,13 @@ int noise_hash_entry(int i);
 ** way. 0 outside the range. */
 double noise_coefficient(int i);
 
+/* POV-Ray's PatternRands: entry i % 32768 of the first 32768 outputs of
+** MT19937 (seed 5489), each over 2^32; cells, crackle, facets and
+** black_hole's turbulence read it. */
+double noise_pattern_rand(unsigned long i);
+/* Entries i, i + 1 and i + 2 of it (a random point's offsets). */
+vec3 noise_pattern_rand3(unsigned long i);
+
 /* POV-Ray's Hash3d over the noise hash table, for cells and crackle. */
 int noise_hash3d(int a, int b, int c);
 

@@ -128,10 +128,9 @@ static vec3 wrinkles_normal(const iris_normal *nrm, vec3 q, vec3 n)
 */
 static vec3 facet_point(int x, int y, int z)
 {
-    unsigned long seed = (unsigned long)noise_hash3d(x & 0xFFF, y & 0xFFF,
-                                                     z & 0xFFF);
-    return v3(x + pat_rand(seed), y + pat_rand(seed + 1),
-              z + pat_rand(seed + 2));
+    vec3 r = noise_pattern_rand3(
+        (unsigned long)noise_hash3d(x & 0xFFF, y & 0xFFF, z & 0xFFF));
+    return v3(x + r.x, y + r.y, z + r.z);
 }
 
 static double facet_metric(vec3 d, double metric)

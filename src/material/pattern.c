@@ -16,8 +16,6 @@
 #include "config.h"
 
 #include <math.h>
-#include <pthread.h>
-#include <stdatomic.h>
 #include <stdbool.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -35,66 +33,28 @@
 
 /* fmin(fmax(v, -COORD_LIMIT), COORD_LIMIT), NaN giving -COORD_LIMIT as
 ** there, in comparisons: without -ffinite-math-only GCC calls libm's
-** fmin and fmax, six calls per pattern evaluation. */
+** fmin and fmax, six calls per pattern evaluation. Written in the forms
+** of SSE2's maxsd and minsd (a NaN first operand gives the second), which
+** GCC then emits, two instructions and no branch per coordinate. */
 static inline double coord_clamp(double v)
 {
-    return !(v >= -COORD_LIMIT) ? -COORD_LIMIT : v > COORD_LIMIT ? COORD_LIMIT
-                                                                 : v;
+    v = v > -COORD_LIMIT ? v : -COORD_LIMIT;
+    return v < COORD_LIMIT ? v : COORD_LIMIT;
 }
 
-/* ------------------------------------------------------------------ */
-/* MT19937: POV-Ray's PatternRands table comes from its default stream.  */
-/* ------------------------------------------------------------------ */
-
-#define MT_N 624
-#define RAND_TABLE 32768
-
-static double rand_table[RAND_TABLE];
-static pthread_once_t rand_once = PTHREAD_ONCE_INIT;
-
-/* Fills rand_table with the first 32768 outputs of MT19937 seeded with
-** 5489 (the standard default), each divided by 2^32 as Boost's
-** uniform_real<double>(0, 1) does for a 32-bit engine. */
-static void build_rand_table(void)
+/* fmod(v, 1.0) for v >= 0 or NaN, without the library call: for v >= 1
+** the subtraction is exact (floor(v) >= v / 2, Sterbenz), as fmod is, so
+** the bits agree; below 1 both give v. +inf and NaN give NaN either way
+** (the callers' isfinite test then takes 0). */
+static inline double mod1_nonneg(double v)
 {
-    uint32_t mt[MT_N];
-    mt[0] = 5489u;
-    for (int i = 1; i < MT_N; i++)
-        mt[i] = 1812433253u * (mt[i - 1] ^ (mt[i - 1] >> 30)) + (uint32_t)i;
-    int idx = MT_N;
-    for (int k = 0; k < RAND_TABLE; k++) {
-        if (idx >= MT_N) {
-            for (int i = 0; i < MT_N; i++) {
-                uint32_t y = (mt[i] & 0x80000000u) |
-                             (mt[(i + 1) % MT_N] & 0x7fffffffu);
-                mt[i] = mt[(i + 397) % MT_N] ^ (y >> 1) ^
-                        ((y & 1u) ? 0x9908b0dfu : 0u);
-            }
-            idx = 0;
-        }
-        uint32_t y = mt[idx++];
-        y ^= y >> 11;
-        y ^= (y << 7) & 0x9d2c5680u;
-        y ^= (y << 15) & 0xefc60000u;
-        y ^= y >> 18;
-        rand_table[k] = (double)y / 4294967296.0;
-    }
+    return v < 1.0 ? v : v - floor(v);
 }
 
-/* Set once the table is built (see noise.c's noise_ready). */
-static atomic_bool rand_ready;
-
-static void build_rand_once(void)
-{
-    build_rand_table();
-    atomic_store_explicit(&rand_ready, true, memory_order_release);
-}
-
+/* POV-Ray's PatternRands (noise.c builds the table with the noise's). */
 double pat_rand(unsigned long i)
 {
-    if (!atomic_load_explicit(&rand_ready, memory_order_acquire))
-        pthread_once(&rand_once, build_rand_once);
-    return rand_table[i % RAND_TABLE];
+    return noise_pattern_rand(i);
 }
 
 /* ------------------------------------------------------------------ */
@@ -177,10 +137,11 @@ static vec3 warp_black_hole(const iris_warp *w, vec3 p)
         int bz = r.z >= 1e-10 ? (int)floor(p.z / r.z) : 0;
         vec3 u = w->turbulence;
         if (u.x != 0 || u.y != 0 || u.z != 0) {
-            unsigned long seed = (unsigned long)noise_hash3d(bx, by, bz);
-            c.x += pat_rand(seed) * u.x;
-            c.y += pat_rand(seed + 1) * u.y;
-            c.z += pat_rand(seed + 2) * u.z;
+            vec3 k = noise_pattern_rand3(
+                (unsigned long)noise_hash3d(bx, by, bz));
+            c.x += k.x * u.x;
+            c.y += k.y * u.y;
+            c.z += k.z * u.z;
         }
         c = v3_add(c, v3(r.x * bx, r.y * by, r.z * bz));
     }
@@ -306,16 +267,38 @@ static vec3 apply_warp(const iris_warp *w, vec3 q)
     }
 }
 
-vec3 pat_space(const struct mat_ctx *ctx, const iris_pattern *pat, vec3 p)
+/* The warps of pat_space(), last written first, the classic turbulence
+** last of all. Out of line: most patterns have none, and pat_space()
+** stays small enough to need no stack frame then. */
+static __attribute__((noinline)) vec3 apply_warps(const iris_pattern *pat,
+                                                  vec3 q)
 {
-    (void)ctx;
-    vec3 q = pat->has_transform ? xf_inv_point(&pat->transform, p) : p;
     const iris_warp *classic = classic_turb(pat);
     int n = classic ? pat->n_warps - 1 : pat->n_warps;
     for (int i = n - 1; i >= 0; i--)
         q = apply_warp(&pat->warps[i], q);
     if (classic && !uses_own_turb(pat->kind))
         q = apply_warp(classic, q);
+    return q;
+}
+
+/* xf_inv_point() (math/transform.c), inline here: most patterns are
+** scaled or moved, and take it once per evaluation. The same operations
+** in the same order, so the same bits. */
+static inline vec3 pattern_point(const iris_transform *t, vec3 p)
+{
+    const double (*m)[4] = t->inv;
+    return v3(m[0][0] * p.x + m[0][1] * p.y + m[0][2] * p.z + m[0][3],
+              m[1][0] * p.x + m[1][1] * p.y + m[1][2] * p.z + m[1][3],
+              m[2][0] * p.x + m[2][1] * p.y + m[2][2] * p.z + m[2][3]);
+}
+
+vec3 pat_space(const struct mat_ctx *ctx, const iris_pattern *pat, vec3 p)
+{
+    (void)ctx;
+    vec3 q = pat->has_transform ? pattern_point(&pat->transform, p) : p;
+    if (pat->n_warps > 0)
+        q = apply_warps(pat, q);
     q.x = coord_clamp(q.x);
     q.y = coord_clamp(q.y);
     q.z = coord_clamp(q.z);
@@ -384,7 +367,8 @@ static double frac_trunc(double v)
     return f < 0.0 ? f + 1.0 : f;
 }
 
-static double brick(const iris_pattern *pat, vec3 p)
+static __attribute__((noinline)) double brick(const iris_pattern *pat,
+                                              vec3 p)
 {
     double mortar = pat->mortar;
     vec3 size = pat->brick_size;
@@ -411,7 +395,7 @@ static double brick(const iris_pattern *pat, vec3 p)
 
 /* The hexagon tiling on a grid of half-triangles (xfactor 0.5, zfactor
 ** sqrt(3)/2), three colours 0, 1, 2. */
-static double hexagon(vec3 p)
+static __attribute__((noinline)) double hexagon(vec3 p)
 {
     static const int straight_a[6] = { 0, 1, 1, 2, 2, 0 };  /* xm 0, 5 */
     static const int straight_b[6] = { 2, 2, 0, 0, 1, 1 };  /* xm 2, 3 */
@@ -650,10 +634,9 @@ static double box_gap(double x, int c)
 /* The random point POV-Ray picks in the unit cube at (x, y, z). */
 static vec3 cube_point(int x, int y, int z)
 {
-    unsigned long seed = (unsigned long)noise_hash3d(x & 0xFFF, y & 0xFFF,
-                                                     z & 0xFFF);
-    return v3(x + pat_rand(seed), y + pat_rand(seed + 1),
-              z + pat_rand(seed + 2));
+    vec3 r = noise_pattern_rand3(
+        (unsigned long)noise_hash3d(x & 0xFFF, y & 0xFFF, z & 0xFFF));
+    return v3(x + r.x, y + r.y, z + r.z);
 }
 
 /*
@@ -890,35 +873,26 @@ static double function_value(const iris_pattern *pat, vec3 p)
     double v = iris_fn_eval(pat->fn, args, 3);
     if (!isfinite(v))
         return 0.0;
-    return v > 1.0 ? fmod(v, 1.0) : v;
+    return v > 1.0 ? mod1_nonneg(v) : v;
 }
 
-/* The raw pattern function, before frequency and wave shaping. */
-static double raw_value(const struct mat_ctx *ctx, const iris_pattern *pat,
-                        vec3 p, const struct mat_point *pt)
+/* raw_value() of the kinds not handled inline there. */
+static __attribute__((noinline)) double
+raw_value_other(const struct mat_ctx *ctx, const iris_pattern *pat, vec3 p,
+                const struct mat_point *pt)
 {
     int gen = pat_noise_generator(ctx, pat);
     switch (pat->kind) {
     case IRIS_PAT_AGATE: return agate(pat, p, gen);
     case IRIS_PAT_BOZO: case IRIS_PAT_SPOTTED: case IRIS_PAT_BUMPS:
         return noise_value(p, gen);
-    case IRIS_PAT_BRICK: return brick(pat, p);
     case IRIS_PAT_CELLS:
         return fmin(pat_rand((unsigned long)noise_hash3d(
                         (int)floor(p.x + PAT_EPSILON),
                         (int)floor(p.y + PAT_EPSILON),
                         (int)floor(p.z + PAT_EPSILON))), 1.0);
-    case IRIS_PAT_CHECKER: return checker(p);
     case IRIS_PAT_CRACKLE: return crackle(ctx, pat, p);
-    case IRIS_PAT_GRADIENT: {
-        double r = v3_dot(p, pat->vector);
-        return r > 1.0 ? fmod(r, 1.0) : r;
-    }
     case IRIS_PAT_GRANITE: return granite(p, gen);
-    case IRIS_PAT_HEXAGON: return hexagon(p);
-    case IRIS_PAT_SQUARE: return pattern_square(p);
-    case IRIS_PAT_TRIANGULAR: return pattern_triangular(p);
-    case IRIS_PAT_CUBIC: return pattern_cubic(p);
     case IRIS_PAT_LEOPARD: {
         double s = (sin(p.x) + sin(p.y) + sin(p.z)) / 3.0;
         return s * s;
@@ -926,7 +900,6 @@ static double raw_value(const struct mat_ctx *ctx, const iris_pattern *pat,
     case IRIS_PAT_MARBLE:
         return p.x + turb_value(pat, p, gen,
                                 classic_turb(pat) ? classic_turb(pat)->turbulence.x : 0);
-    case IRIS_PAT_ONION: return fmod(v3_len(p), 1.0);
     case IRIS_PAT_RADIAL:
         if (fabs(p.x) < 0.001 && fabs(p.z) < 0.001)
             return 0.25;
@@ -968,7 +941,6 @@ static double raw_value(const struct mat_ctx *ctx, const iris_pattern *pat,
         return 0.297 * c.r + 0.589 * c.g + 0.114 * c.b;
     }
     case IRIS_PAT_SLOPE: return slope(pat, p, pt);
-    case IRIS_PAT_TILING: return pattern_tiling(pat->params[0], p);
     case IRIS_PAT_DENSITY_FILE: return mat_density_file(ctx, pat, p);
     case IRIS_PAT_OBJECT:
         /* POV-Ray's ObjectPattern: entry 1 inside the object, 0 outside */
@@ -976,6 +948,33 @@ static double raw_value(const struct mat_ctx *ctx, const iris_pattern *pat,
                objpat_inside(ctx ? &ctx->objpats : NULL, pat->object, p);
     default:
         return 0.0;
+    }
+}
+
+/* The raw pattern function, before frequency and wave shaping. The
+** commonest cheap kinds are computed here, inline in pat_eval_at(), or
+** (brick, hexagon, the tilings) in small functions of their own, out of
+** line so as not to enlarge pat_eval_at()'s frame; the others (noise,
+** cells, fractals, images: large, with a stack frame to match) in
+** raw_value_other(). */
+static inline double raw_value(const struct mat_ctx *ctx,
+                               const iris_pattern *pat, vec3 p,
+                               const struct mat_point *pt)
+{
+    switch (pat->kind) {
+    case IRIS_PAT_CHECKER: return checker(p);
+    case IRIS_PAT_BRICK: return brick(pat, p);
+    case IRIS_PAT_HEXAGON: return hexagon(p);
+    case IRIS_PAT_SQUARE: return pattern_square(p);
+    case IRIS_PAT_TRIANGULAR: return pattern_triangular(p);
+    case IRIS_PAT_CUBIC: return pattern_cubic(p);
+    case IRIS_PAT_TILING: return pattern_tiling(pat->params[0], p);
+    case IRIS_PAT_GRADIENT: {
+        double r = v3_dot(p, pat->vector);
+        return r > 1.0 ? mod1_nonneg(r) : r;
+    }
+    case IRIS_PAT_ONION: return mod1_nonneg(v3_len(p));
+    default: return raw_value_other(ctx, pat, p, pt);
     }
 }
 
@@ -987,8 +986,13 @@ double pat_eval_at(const struct mat_ctx *ctx, const iris_pattern *pat,
         return v;
     if (!isfinite(v))
         v = 0.0;
-    if (pat->frequency != 0.0)
-        v = fmod(v * pat->frequency + pat->phase, 1.00001);
+    if (pat->frequency != 0.0) {
+        v = v * pat->frequency + pat->phase;
+        /* fmod(v, 1.00001) is v itself on [0, 1.00001) (-0 included):
+        ** the library call only for the values it changes */
+        if (!(v >= 0.0 && v < 1.00001))
+            v = fmod(v, 1.00001);
+    }
     if (v < 0.0)
         v -= floor(v);
     switch (pat->wave) {

@@ -83,9 +83,55 @@ static iris_colour colour_lerp(iris_colour a, iris_colour b, double t)
     return c;
 }
 
-/* Search_Blend_Map over 'n' values read by 'value_at': sets *prev, *cur. */
-static void search_map(double v, const iris_map_entry *e,
-                       const struct def_entry *d, int n, int *prev, int *cur)
+/*
+** Long colour maps (the wood maps of POV-Ray's include files hold 256
+** entries, searched ~900 instructions a lookup) are searched by
+** bisection when their values ascend (POV-Ray's search is linear, but
+** over ascending values the first entry >= v is the same entry). Whether
+** a map ascends is remembered per thread, keyed by its address and size
+** and by the epoch of mat_texel_memo_forget() (bumped whenever a mat_ctx
+** is destroyed), so a map allocated later at the same address is looked
+** at afresh. Only with a mat_ctx: the maps then belong to its scene.
+*/
+#define MAP_LINEAR_MAX 16
+#define MAP_ORDER_SLOTS 8
+struct map_order {
+    const iris_map_entry *e;
+    int n;
+    unsigned epoch;
+    bool ascending;
+};
+static _Thread_local struct map_order map_order_memo[MAP_ORDER_SLOTS];
+/* The epoch of these memos and of the texel memo below: from 1, so the
+** empty (zeroed) entries, epoch 0, never match. Wraps after 2^32
+** destroyed contexts; an entry would have to survive all of them. */
+static atomic_uint ctx_epoch = 1;
+
+static __attribute__((noinline)) bool map_ascends(const iris_map_entry *e,
+                                                  int n)
+{
+    unsigned epoch = atomic_load_explicit(&ctx_epoch, memory_order_acquire);
+    struct map_order *m =
+        &map_order_memo[((uintptr_t)e / sizeof *e) % MAP_ORDER_SLOTS];
+    if (m->e != e || m->n != n || m->epoch != epoch) {
+        m->e = e;
+        m->n = n;
+        m->epoch = epoch;
+        m->ascending = true;
+        for (int i = 0; i + 1 < n; i++)
+            if (!(e[i].value <= e[i + 1].value)) { /* NaN: not ascending */
+                m->ascending = false;
+                break;
+            }
+    }
+    return m->ascending;
+}
+
+/* Search_Blend_Map over the 'n' values of 'e' or else 'd': sets *prev,
+** *cur. 'ascending': e's values ascend (bisect). */
+static inline void search_map(double v, const iris_map_entry *e,
+                              const struct def_entry *d, int n,
+                              bool ascending, int *prev, int *cur)
 {
 #define VAL(i) (e ? e[i].value : d[i].v)
     int last = n - 1;
@@ -93,16 +139,34 @@ static void search_map(double v, const iris_map_entry *e,
         *prev = *cur = last;
         return;
     }
-    int p = 0, c = 0;
-    while (v > VAL(c)) {
-        p = c;
-        c++;
+    int c = 0;
+    if (ascending) {
+        /* the first c in [0, last] with !(v > VAL(c)): last qualifies */
+        int hi = last;
+        while (c < hi) {
+            int mid = c + (hi - c) / 2;
+            if (v > VAL(mid))
+                c = mid + 1;
+            else
+                hi = mid;
+        }
+    } else {
+        /* (ends at 'last' at the latest: v < VAL(last) here) */
+        while (v > VAL(c))
+            c++;
     }
-    if (v == VAL(c))
-        p = c;
-    *prev = p;
+    *prev = v == VAL(c) || c == 0 ? c : c - 1;
     *cur = c;
 #undef VAL
+}
+
+/* search_map() over a pigment's own map entries. */
+static inline void search_entries(const struct mat_ctx *ctx, double v,
+                                  const iris_map_entry *e, int n, int *prev,
+                                  int *cur)
+{
+    bool bisect = ctx && n > MAP_LINEAR_MAX && map_ascends(e, n);
+    search_map(v, e, NULL, n, bisect, prev, cur);
 }
 
 static double map_value(const iris_map_entry *e, const struct def_entry *d,
@@ -160,8 +224,58 @@ static bool entry_colour(const struct mat_ctx *ctx, const iris_pigment *pig,
     return true;
 }
 
+static bool eval_pigment(const struct mat_ctx *ctx, const iris_pigment *pig,
+                         const struct mat_point *pt, iris_colour *out);
+
+/*
+** The commonest pigments, no quick colour in force: a plain colour (in
+** mat_eval_pigment() itself, which then needs no stack frame), and a
+** pattern with a colour map of plain colours, a list pattern's colours
+** included (colour_map_pigment()). These are eval_pigment()'s steps for
+** them without the tests that cannot apply; the numbers are
+** eval_pigment()'s (the same pat_value(), search and blend). A map whose
+** entries turn out to be pigments goes the general way.
+*/
+static __attribute__((noinline)) bool
+colour_map_pigment(const struct mat_ctx *ctx, const iris_pigment *pig,
+                   const struct mat_point *pt, iris_colour *out)
+{
+    const iris_map_entry *e = pig->entries;
+    double v = pat_value(ctx, &pig->pattern, pt->p, pt);
+    int prev, cur;
+    search_entries(ctx, v, e, pig->n_entries, &prev, &cur);
+    if (e[cur].pigment || e[prev].pigment)
+        return eval_pigment(ctx, pig, pt, out);
+    if (prev == cur) {
+        *out = e[cur].colour;
+        return true;
+    }
+    double v0 = e[prev].value, v1 = e[cur].value;
+    double t = v1 > v0 ? (v - v0) / (v1 - v0) : 1.0;
+    *out = colour_lerp(e[prev].colour, e[cur].colour, t);
+    return true;
+}
+
 bool mat_eval_pigment(const struct mat_ctx *ctx, const iris_pigment *pig,
                       const struct mat_point *pt, iris_colour *out)
+{
+    if (pig && !(ctx && ctx->quick_colour)) {
+        enum iris_pattern_kind k = pig->pattern.kind;
+        if (k == IRIS_PAT_NONE) {
+            *out = pig->colour;
+            return true;
+        }
+        if (pig->n_entries > 0 && !pig->is_pigment_map &&
+            !pig->entries[0].pigment && k != IRIS_PAT_IMAGE_MAP &&
+            k != IRIS_PAT_AVERAGE)
+            return colour_map_pigment(ctx, pig, pt, out);
+    }
+    return eval_pigment(ctx, pig, pt, out);
+}
+
+/* mat_eval_pigment(), every case. */
+static bool eval_pigment(const struct mat_ctx *ctx, const iris_pigment *pig,
+                         const struct mat_point *pt, iris_colour *out)
 {
     memset(out, 0, sizeof *out);
     if (!pig)
@@ -209,7 +323,10 @@ bool mat_eval_pigment(const struct mat_ctx *ctx, const iris_pigment *pig,
 
     double v = pat_value(ctx, pat, pt->p, pt);
     int prev, cur;
-    search_map(v, e, d, n, &prev, &cur);
+    if (e)
+        search_entries(ctx, v, e, n, &prev, &cur);
+    else
+        search_map(v, NULL, d, n, false, &prev, &cur);
     iris_colour c_cur, c_prev;
     bool found = entry_colour(ctx, pig, d, cur, ept, &c_cur);
     if (prev == cur) {
@@ -498,19 +615,17 @@ static void to_stored(const iris_image_ref *ref, iris_colour *c)
 #define TEXEL_MEMO_BITS 9
 struct texel_memo {
     const float *px;       /* the texel's address; NULL: empty */
-    unsigned epoch;        /* texel_epoch when filled */
+    unsigned epoch;        /* ctx_epoch when filled */
     unsigned mode;         /* texel_as() */
     double gamma, working_gamma;
     double rgb[3];         /* the converted r, g, b */
 };
 static _Thread_local struct texel_memo texel_memo[1 << TEXEL_MEMO_BITS];
-/* From 1: the empty (zeroed) entries, epoch 0, never match. Wraps after
-** 2^32 destroyed contexts; an entry would have to survive all of them. */
-static atomic_uint texel_epoch = 1;
 
+/* Forgets the texel memo and the map orders (the epoch, ctx_epoch above). */
 void mat_texel_memo_forget(void)
 {
-    atomic_fetch_add_explicit(&texel_epoch, 1, memory_order_release);
+    atomic_fetch_add_explicit(&ctx_epoch, 1, memory_order_release);
 }
 
 /* texel_at() (x, y), then into the working space ('working', as
@@ -536,7 +651,7 @@ static iris_colour texel_as(const struct mat_ctx *working,
     if (!stored && (!sc || (!(ref->gamma > 0) && !(mode & 8u) &&
                             !(wg > 0 && wg != 1.0))))
         return c;
-    unsigned epoch = atomic_load_explicit(&texel_epoch, memory_order_acquire);
+    unsigned epoch = atomic_load_explicit(&ctx_epoch, memory_order_acquire);
     /* texels are 16 bytes apart; the multiply spreads rows that a
     ** power-of-two width would put in one slot */
     uint64_t h = ((uint64_t)(uintptr_t)px >> 4) * UINT64_C(0x9e3779b97f4a7c15);

@@ -122,3 +122,10 @@ tests_unit_test_texelmemo_SOURCES = tests/unit/test_texelmemo.c \
 	tests/testutil.h tests/unit/parse_util.h
 tests_unit_test_texelmemo_CFLAGS = $(TEST_CFLAGS)
 tests_unit_test_texelmemo_LDADD = $(TEST_LDADD)
+# pattern.c's and pigment.c's short cuts (fmod, long colour maps) give POV-Ray's formulas' bits
+check_PROGRAMS += tests/unit/test_pattern_paths
+TESTS += tests/unit/test_pattern_paths
+tests_unit_test_pattern_paths_SOURCES = tests/unit/test_pattern_paths.c \
+	tests/testutil.h tests/unit/parse_util.h
+tests_unit_test_pattern_paths_CFLAGS = $(TEST_CFLAGS)
+tests_unit_test_pattern_paths_LDADD = $(TEST_LDADD)
