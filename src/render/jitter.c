@@ -12,12 +12,11 @@
 
 #include <pthread.h>
 #include <stdatomic.h>
-#include <stdbool.h>
 
 #include "material/noise.h"
 #include "render/jitter.h"
 
-static const float jitter_table[256] = {
+const float jitter_table[256] = {
     -0.500000, 0.005890, 0.011749, -0.490234, 0.023468, -0.470703, -0.480469, 0.017609,
     0.046906, -0.447266, -0.441406, 0.056671, -0.460938, 0.044952, 0.035187, -0.466797,
     0.093781, -0.400391, -0.394531, 0.103546, -0.382813, 0.123077, 0.113312, -0.388672,
@@ -55,26 +54,18 @@ static const float jitter_table[256] = {
 /* The noise hash table's first 4096 entries, all the lookup reads,
 ** copied once: four calls into noise.c per subsample (each asking
 ** whether the table exists) were 2 % of a simple scene's eye pass. */
-static int hash[4096];
-static atomic_bool hash_ready;
+int jitter_hash[4096];
+atomic_bool jitter_hash_ready;
 static pthread_once_t hash_once = PTHREAD_ONCE_INIT;
 
 static void hash_copy(void)
 {
     for (int i = 0; i < 4096; i++)
-        hash[i] = noise_hash_entry(i);
-    atomic_store_explicit(&hash_ready, true, memory_order_release);
+        jitter_hash[i] = noise_hash_entry(i);
+    atomic_store_explicit(&jitter_hash_ready, true, memory_order_release);
 }
 
-static int lookup(int a, int b)
+void jitter_hash_init(void)
 {
-    return hash[(hash[a & 0xfff] ^ b) & 0xfff] & 0xff;
-}
-
-void jitter2d(double x, double y, double *jx, double *jy)
-{
-    if (!atomic_load_explicit(&hash_ready, memory_order_acquire))
-        pthread_once(&hash_once, hash_copy);
-    *jx = jitter_table[lookup((int)(x * 1021.0), (int)(y * 1019.0))];
-    *jy = jitter_table[lookup((int)(x * 1019.0), (int)(y * 1021.0))];
+    pthread_once(&hash_once, hash_copy);
 }
