@@ -471,28 +471,32 @@ static void palette_ft(const struct mat_image *mi, const iris_image_ref *ref,
                 ref->palette_ft[i].value;
 }
 
-/* The texel at image position (x, y), and in 'at' its address (the
-** key of the converted-texel memo below). */
-static iris_colour texel_at(const struct mat_image *mi, const iris_image *img,
-                            const iris_image_ref *ref, double x, double y,
-                            const float **at)
+/* The column (or row) of image position x in an image n texels across:
+** clamped to the edge for `once`, wrapped otherwise. */
+static inline int texel_index(const iris_image_ref *ref, double x, int n)
 {
-    int ix, iy;
-    if (ref->once) {
-        ix = x < 0 ? 0 : x >= img->width ? img->width - 1 : (int)x;
-        iy = y < 0 ? 0 : y >= img->height ? img->height - 1 : (int)y;
-    } else {
-        ix = (int)wrap(x, img->width);
-        iy = (int)wrap(y, img->height);
-    }
+    if (ref->once)
+        return x < 0 ? 0 : x >= n ? n - 1 : (int)x;
+    return (int)wrap(x, n);
+}
+
+/* The texel in column ix, row iy (texel_index()'s), and in 'at' its
+** address (the key of the converted-texel memo below). */
+static inline void texel_at(const struct mat_image *mi, const iris_image *img,
+                            const iris_image_ref *ref, int ix, int iy,
+                            const float **at, iris_colour *c)
+{
     const float *px = &img->pixels[((size_t)iy * img->width + ix) * 4];
     *at = px;
-    iris_colour c = { px[0], px[1], px[2], 0, 1.0 - px[3] };
+    c->r = px[0];
+    c->g = px[1];
+    c->b = px[2];
+    c->f = 0;
+    c->t = 1.0 - px[3];
     if (ref->n_palette_ft > 0)
-        palette_ft(mi, ref, ix, iy, &c);
-    c.f += ref->filter_all;
-    c.t += ref->transmit_all;
-    return c;
+        palette_ft(mi, ref, ix, iy, c);
+    c->f += ref->filter_all;
+    c->t += ref->transmit_all;
 }
 
 /*
@@ -628,54 +632,70 @@ void mat_texel_memo_forget(void)
     atomic_fetch_add_explicit(&ctx_epoch, 1, memory_order_release);
 }
 
-/* texel_at() (x, y), then into the working space ('working', as
-** image_to_working) or as stored ('stored', as to_stored), through the
-** memo. */
-static iris_colour texel_as(const struct mat_ctx *working,
-                            const struct mat_image *mi, const iris_image *img,
-                            const iris_image_ref *ref, double x, double y,
-                            bool stored)
+/* What texel_as() converts with, the same for every texel of a sample:
+** the conversion ('working', as image_to_working, and/or 'stored', as
+** to_stored) and the memo's key besides the texel's address. */
+struct texel_conv_key {
+    const struct mat_ctx *working;
+    bool stored;
+    bool convert;          /* false: the texel is taken as it is */
+    unsigned mode, epoch;
+    double working_gamma;
+};
+
+static void texel_conv_key_of(const struct mat_ctx *working,
+                              const iris_image_ref *ref, bool stored,
+                              struct texel_conv_key *k)
 {
-    const float *px;
-    iris_colour c = texel_at(mi, img, ref, x, y, &px);
-    if (!working && !stored)
-        return c;
+    k->working = working;
+    k->stored = stored;
     /* everything the two conversions read besides the texel */
     const iris_scene *sc = working ? working->scene : NULL;
-    unsigned mode = (working ? 1u : 0u) | (stored ? 2u : 0u) |
-                    (sc ? 4u : 0u) |
-                    (sc && sc->version > 0 && sc->version < 3.7 ? 8u : 0u);
+    k->mode = (working ? 1u : 0u) | (stored ? 2u : 0u) | (sc ? 4u : 0u) |
+              (sc && sc->version > 0 && sc->version < 3.7 ? 8u : 0u);
     double wg = sc ? sc->settings.assumed_gamma : 0.0;
-    /* image_to_working() changes nothing (its three tests fail): an image
-    ** map in a linear scene (assumed_gamma 1) needs no memo */
-    if (!stored && (!sc || (!(ref->gamma > 0) && !(mode & 8u) &&
-                            !(wg > 0 && wg != 1.0))))
-        return c;
-    unsigned epoch = atomic_load_explicit(&ctx_epoch, memory_order_acquire);
+    k->working_gamma = wg;
+    /* without 'stored', only image_to_working() converts, and it changes
+    ** nothing when its three tests fail: an image map in a linear scene
+    ** (assumed_gamma 1) needs no memo */
+    k->convert = stored || (sc && (ref->gamma > 0 || (k->mode & 8u) ||
+                                   (wg > 0 && wg != 1.0)));
+    k->epoch = atomic_load_explicit(&ctx_epoch, memory_order_acquire);
+}
+
+/* texel_at() (ix, iy), converted as 'k' says, through the memo. */
+static inline void texel_as(const struct texel_conv_key *k,
+                            const struct mat_image *mi, const iris_image *img,
+                            const iris_image_ref *ref, int ix, int iy,
+                            iris_colour *c)
+{
+    const float *px;
+    texel_at(mi, img, ref, ix, iy, &px, c);
+    if (!k->convert)
+        return;
     /* texels are 16 bytes apart; the multiply spreads rows that a
     ** power-of-two width would put in one slot */
     uint64_t h = ((uint64_t)(uintptr_t)px >> 4) * UINT64_C(0x9e3779b97f4a7c15);
     struct texel_memo *m = &texel_memo[h >> (64 - TEXEL_MEMO_BITS)];
-    if (m->px == px && m->epoch == epoch && m->mode == mode &&
-        m->gamma == ref->gamma && m->working_gamma == wg) {
-        c.r = m->rgb[0];
-        c.g = m->rgb[1];
-        c.b = m->rgb[2];
-        return c;
+    if (m->px == px && m->epoch == k->epoch && m->mode == k->mode &&
+        m->gamma == ref->gamma && m->working_gamma == k->working_gamma) {
+        c->r = m->rgb[0];
+        c->g = m->rgb[1];
+        c->b = m->rgb[2];
+        return;
     }
-    if (working)
-        image_to_working(working, ref, &c);
-    if (stored)
-        to_stored(ref, &c);
+    if (k->working)
+        image_to_working(k->working, ref, c);
+    if (k->stored)
+        to_stored(ref, c);
     m->px = px;
-    m->epoch = epoch;
-    m->mode = mode;
+    m->epoch = k->epoch;
+    m->mode = k->mode;
     m->gamma = ref->gamma;
-    m->working_gamma = wg;
-    m->rgb[0] = c.r;
-    m->rgb[1] = c.g;
-    m->rgb[2] = c.b;
-    return c;
+    m->working_gamma = k->working_gamma;
+    m->rgb[0] = c->r;
+    m->rgb[1] = c->g;
+    m->rgb[2] = c->b;
 }
 
 /* The weights of texels (ix, iy), (ix-1, iy), (ix, iy-1), (ix-1, iy-1)
@@ -725,8 +745,12 @@ static void sample_at_as(const struct mat_ctx *working,
                          const iris_image_ref *ref, double x, double y,
                          bool stored, iris_colour *out)
 {
+    struct texel_conv_key k;
+    texel_conv_key_of(working, ref, stored, &k);
+    int w = img->width, h = img->height;
     if (ref->interpolate != 2 && ref->interpolate != 4) {
-        *out = texel_as(working, mi, img, ref, x, y, stored);
+        texel_as(&k, mi, img, ref, texel_index(ref, x, w),
+                 texel_index(ref, y, h), out);
         return;
     }
     /* The four texels around the sample, weighted bilinearly or by
@@ -740,10 +764,14 @@ static void sample_at_as(const struct mat_ctx *working,
         norm_dist_weights(p, qf, &f0, &f1, &f2, &f3);
     else
         bilinear_weights(p, qf, &f0, &f1, &f2, &f3);
-    iris_colour c0 = texel_as(working, mi, img, ref, ix, iy, stored);
-    iris_colour c1 = texel_as(working, mi, img, ref, ix - 1, iy, stored);
-    iris_colour c2 = texel_as(working, mi, img, ref, ix, iy - 1, stored);
-    iris_colour c3 = texel_as(working, mi, img, ref, ix - 1, iy - 1, stored);
+    /* the two columns and two rows, each wrapped (or clamped) once */
+    int cx0 = texel_index(ref, ix, w), cx1 = texel_index(ref, ix - 1, w);
+    int ry0 = texel_index(ref, iy, h), ry1 = texel_index(ref, iy - 1, h);
+    iris_colour c0, c1, c2, c3;
+    texel_as(&k, mi, img, ref, cx0, ry0, &c0);
+    texel_as(&k, mi, img, ref, cx1, ry0, &c1);
+    texel_as(&k, mi, img, ref, cx0, ry1, &c2);
+    texel_as(&k, mi, img, ref, cx1, ry1, &c3);
     out->r = c0.r * f0 + c1.r * f1 + c2.r * f2 + c3.r * f3;
     out->g = c0.g * f0 + c1.g * f1 + c2.g * f2 + c3.g * f3;
     out->b = c0.b * f0 + c1.b * f1 + c2.b * f2 + c3.b * f3;
@@ -805,15 +833,9 @@ double mat_density_file(const struct mat_ctx *ctx, const iris_pattern *pat,
 static int index_at(const struct mat_image *mi, const iris_image_ref *ref,
                     double x, double y)
 {
-    int w = mi->index_w, h = mi->index_h, ix, iy;
-    if (ref->once) {
-        ix = x < 0 ? 0 : x >= w ? w - 1 : (int)x;
-        iy = y < 0 ? 0 : y >= h ? h - 1 : (int)y;
-    } else {
-        ix = (int)wrap(x, w);
-        iy = (int)wrap(y, h);
-    }
-    return mi->index[(size_t)iy * w + ix];
+    int w = mi->index_w;
+    return mi->index[(size_t)texel_index(ref, y, mi->index_h) * w +
+                     texel_index(ref, x, w)];
 }
 
 int mat_image_index(const struct mat_ctx *ctx, const iris_image_ref *ref,
