@@ -609,6 +609,7 @@ static struct anode *build(struct accel *a, FILE *log, const iris_object *o,
             n->plane_n = v3_norm(o->u.plane.normal);
             plane_world_normal(n);
         }
+        node_sphere_world_prepare(n);
         if (o->kind == IRIS_OBJ_BLOB)
             n->has_blob_box = geom_blob_bounds(o, &n->blob_lo, &n->blob_hi);
         vec3 lo, hi;

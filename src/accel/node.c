@@ -15,6 +15,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "geometry/sphere_span.h"
 #include "math/transform.h"
 #include "util/mem.h"
 
@@ -91,11 +92,53 @@ static void plane_hits(const struct anode *n, vec3 lo, vec3 ld, double tmin,
     ahit_push(out, &h);
 }
 
+void node_sphere_world_prepare(struct anode *n)
+{
+    n->sphere_world = n->kind == AN_SHAPE &&
+                      sphere_world_frame(n->obj, &n->sphere_wc,
+                                         &n->sphere_wr);
+}
+
+/*
+** shape_hits() of a sphere_world leaf: geom_sphere_hits() and the loop
+** below for an untransformed sphere at sphere_wc, radius sphere_wr, step
+** for step (the same t and normals), in world space.
+*/
+static void sphere_world_hits(const struct anode *n, vec3 o, vec3 d,
+                              double tmin, double tmax,
+                              struct ahit_list *out)
+{
+    double rad = n->sphere_wr, tc, h;
+    vec3 oc = v3_sub(o, n->sphere_wc);
+    if (!sphere_span(oc, d, v3_len2(d), rad, &tc, &h))
+        return;
+    for (int k = 0; k < 2; k++) {
+        double t = k ? tc + h : tc - h;
+        if (!(t > tmin && t < tmax))
+            continue;
+        vec3 wn = v3_scale(v3_madd(oc, d, t), 1.0 / rad);
+        double len = v3_len(wn);
+        if (!(len > 0) || !isfinite(len))
+            continue;
+        struct ahit a;
+        a.t = t;
+        a.n = a.sn = v3_scale(wn, (n->inverted ? -1.0 : 1.0) / len);
+        a.uv.u = a.uv.v = 0;
+        a.leaf = n;
+        a.texture = NULL;
+        ahit_push(out, &a);
+    }
+}
+
 /* Crossings of an analytic leaf: solved in object space. */
 static void shape_hits(const struct anode *n, vec3 o, vec3 d, double tmin,
                        double tmax, struct ahit_list *out)
 {
     const iris_object *obj = n->obj;
+    if (n->sphere_world) {
+        sphere_world_hits(n, o, d, tmin, tmax, out);
+        return;
+    }
     vec3 lo = o, ld = d;
     if (obj->has_transform) {
         lo = anode_inv_point(&obj->transform, o);
@@ -209,22 +252,14 @@ void node_hits_in_box(const struct anode *n, vec3 o, vec3 d, double tmin,
 ** geom_sphere_hits() step for step (the same t and normal), without the
 ** crossing list, for the commonest primitive of POV-Ray's scenes.
 */
-static bool sphere_nearest(const struct anode *n, vec3 lo, vec3 ld,
-                           double tmin, double tmax, struct ahit *best)
+static bool sphere_nearest(const struct anode *n, vec3 c, double rad,
+                           const xform *xf, vec3 lo, vec3 ld, double tmin,
+                           double tmax, struct ahit *best)
 {
-    const iris_object *obj = n->obj;
-    vec3 c = obj->u.sphere.centre;
-    double rad = obj->u.sphere.radius;
-    double a = v3_len2(ld);
-    if (!(a > 0))
-        return false;
     vec3 oc = v3_sub(lo, c);
-    double tc = -v3_dot(oc, ld) / a;
-    vec3 pc = v3_madd(oc, ld, tc);
-    double num = rad * rad - v3_len2(pc);
-    if (num < 0) /* a miss, known before the division (a > 0) */
+    double tc, h;
+    if (!sphere_span(oc, ld, v3_len2(ld), rad, &tc, &h))
         return false;
-    double h = sqrt(num / a);
     for (int k = 0; k < 2; k++) {
         double t = k ? tc + h : tc - h;
         /* no isfinite(t): see plane_hits() */
@@ -234,7 +269,7 @@ static bool sphere_nearest(const struct anode *n, vec3 lo, vec3 ld,
         if (!isfinite(on.x) || !isfinite(on.y) || !isfinite(on.z) ||
             (on.x == 0 && on.y == 0 && on.z == 0))
             continue;
-        vec3 wn = obj->has_transform ? xf_normal(&obj->transform, on) : on;
+        vec3 wn = xf ? xf_normal(xf, on) : on;
         double len = v3_len(wn);
         if (!(len > 0) || !isfinite(len))
             continue;
@@ -355,6 +390,9 @@ static bool shape_nearest(const struct anode *n, vec3 o, vec3 d,
                           double tmin, double tmax, struct ahit *best)
 {
     const iris_object *obj = n->obj;
+    if (n->sphere_world) /* an untransformed sphere at sphere_wc */
+        return sphere_nearest(n, n->sphere_wc, n->sphere_wr, NULL, o, d,
+                              tmin, tmax, best);
     vec3 lo = o, ld = d;
     if (obj->has_transform) {
         lo = anode_inv_point(&obj->transform, o);
@@ -362,7 +400,9 @@ static bool shape_nearest(const struct anode *n, vec3 o, vec3 d,
     }
     /* bounded_by goes through geom_intersect (its box cuts the shape) */
     if (obj->kind == IRIS_OBJ_SPHERE && !obj->bounded_by)
-        return sphere_nearest(n, lo, ld, tmin, tmax, best);
+        return sphere_nearest(n, obj->u.sphere.centre, obj->u.sphere.radius,
+                              obj->has_transform ? &obj->transform : NULL,
+                              lo, ld, tmin, tmax, best);
     if (obj->kind == IRIS_OBJ_PLANE && !obj->bounded_by)
         return plane_nearest(n, lo, ld, tmin, tmax, best);
     if (obj->kind == IRIS_OBJ_BOX && !obj->bounded_by)

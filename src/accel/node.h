@@ -106,6 +106,14 @@ struct anode {
     bool has_blob_box;             /* AN_SHAPE blob: geom_blob_bounds() */
     vec3 blob_lo, blob_hi;         /* in object space, computed once */
     struct amesh *mesh;            /* AN_MESH */
+    bool sphere_world;             /* AN_SHAPE sphere moved by rotations,
+                                      translations and uniform scales
+                                      only: solved as an untransformed
+                                      sphere at sphere_wc, radius
+                                      sphere_wr, as POV-Ray moves its
+                                      centre (node_sphere_world_prepare) */
+    vec3 sphere_wc;
+    double sphere_wr;
 };
 
 /* A surface crossing in world space, before it becomes a 'struct hit'. */
@@ -189,5 +197,9 @@ bool amesh_bounds(const struct anode *n, vec3 *lo, vec3 *hi);
 void amesh_free(struct amesh *m);
 /* Whether 'kind' is built as triangles. */
 bool amesh_kind(enum iris_object_kind kind);
+
+/* Sets n->sphere_world, sphere_wc and sphere_wr of a sphere leaf
+** (geometry/sphere_span.h sphere_world_frame). */
+void node_sphere_world_prepare(struct anode *n);
 
 #endif

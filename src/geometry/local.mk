@@ -1,6 +1,7 @@
 ## src/geometry: see the file headers. Appends to the core library.
 libiris_core_la_SOURCES += %reldir%/geom.c %reldir%/geom.h \
 	%reldir%/roots.c %reldir%/roots.h %reldir%/quadrics.c \
+	%reldir%/sphere_span.h \
 	%reldir%/torus.c %reldir%/poly.c %reldir%/superellipsoid.c \
 	%reldir%/blob.c %reldir%/profile.c %reldir%/sweep.c \
 	%reldir%/text.c %reldir%/isosurface.c %reldir%/julia.c \

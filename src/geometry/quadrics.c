@@ -3,14 +3,13 @@
 ** quadrics.c: sphere, plane, box, cylinder, cone, disc and polygon.
 **
 ** Closed-form intersections in object space. Quadratics use the
-** numerically stable form (no subtraction of nearly equal numbers), and
-** the sphere measures its discriminant at the ray's closest approach to
-** the centre, which keeps full precision for rays starting far away
-** (Haines et al., Ray Tracing Gems ch. 7).
+** numerically stable form (no subtraction of nearly equal numbers); the
+** sphere's chord is sphere_span()'s (POV-Ray's sums for unit directions).
 */
 #include "config.h"
 
 #include "geometry/geom.h"
+#include "geometry/sphere_span.h"
 
 #include <math.h>
 
@@ -43,16 +42,10 @@ void geom_sphere_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
 {
     vec3 c = o->u.sphere.centre;
     double rad = o->u.sphere.radius;
-    double a = v3_len2(rd);
-    if (!(a > 0))
-        return;
     vec3 oc = v3_sub(ro, c);
-    double tc = -v3_dot(oc, rd) / a;
-    vec3 pc = v3_madd(oc, rd, tc);
-    double h2 = (rad * rad - v3_len2(pc)) / a;
-    if (h2 < 0)
+    double tc, h;
+    if (!sphere_span(oc, rd, v3_len2(rd), rad, &tc, &h))
         return;
-    double h = sqrt(h2);
     for (int k = 0; k < 2; k++) {
         double t = k ? tc + h : tc - h;
         if (t > t0 && t < t1) {

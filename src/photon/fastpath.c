@@ -34,17 +34,20 @@
 #include <math.h>
 
 #include "geometry/geom.h"
+#include "geometry/sphere_span.h"
 #include "math/transform.h"
 #include "util/mem.h"
 
 struct pfast_prim {
     const iris_object *obj;
     bool transformed;
+    bool world;                /* sphere: transformed, solved as an
+                                  untransformed one at c, radius rad
+                                  (sphere_world_frame, as accel) */
     double sign;               /* -1 for an inverse object */
     unsigned skip;             /* ACCEL_SKIP_* bits of the object */
     vec3 c;                    /* sphere centre, or unit plane normal */
     double rad;                /* sphere radius, or plane distance */
-    double rad2;               /* sphere: rad * rad, as node.c computes it */
     double inv_rad;            /* 1/rad (sphere) */
     vec3 wn;                   /* plane: its world normal at every hit */
     double size;               /* hit_epsilon's leaf size (0: unbounded) */
@@ -120,9 +123,11 @@ struct pfast *pfast_build(const iris_scene *scene, const struct accel *a)
                 iris_free(f); /* accel left it out: not the same */
                 return NULL;
             }
-            q.c = o->u.sphere.centre;
-            q.rad = o->u.sphere.radius;
-            q.rad2 = q.rad * q.rad;
+            q.world = sphere_world_frame(o, &q.c, &q.rad);
+            if (!q.world) {
+                q.c = o->u.sphere.centre;
+                q.rad = o->u.sphere.radius;
+            }
             q.inv_rad = 1.0 / q.rad;
             q.size = v3_max_comp(v3_sub(hi, lo));
             q.needs_uv = !texture_is_uniform(o->texture);
@@ -187,12 +192,9 @@ static inline bool sphere_hit(const struct pfast_prim *s, vec3 lo, vec3 ld,
                               double *t_out, vec3 *n, bool may_xf)
 {
     vec3 oc = v3_sub(lo, s->c);
-    double tc = -v3_dot(oc, ld) / a;
-    vec3 pc = v3_madd(oc, ld, tc);
-    double num = s->rad2 - v3_len2(pc);
-    if (num < 0)
+    double tc, h;
+    if (!sphere_span(oc, ld, a, s->rad, &tc, &h))
         return false;
-    double h = sqrt(num / a);
     for (int k = 0; k < 2; k++) {
         double t = k ? tc + h : tc - h;
         /* (node.c also tests isfinite(t): t > tmin and t < tmax already
@@ -202,7 +204,7 @@ static inline bool sphere_hit(const struct pfast_prim *s, vec3 lo, vec3 ld,
         vec3 on = v3_scale(v3_madd(oc, ld, t), s->inv_rad);
         if (!finite_v(on) || (on.x == 0 && on.y == 0 && on.z == 0))
             continue;
-        vec3 wn = may_xf && s->transformed
+        vec3 wn = may_xf && s->transformed && !s->world
                       ? xf_normal(&s->obj->transform, on) : on;
         double len = v3_len(wn);
         if (!(len > 0) || !isfinite(len))
@@ -271,7 +273,7 @@ query(const struct pfast *f, const ray *r, double tmin, double tmax,
             continue;
         double t;
         vec3 n;
-        if (!plain && s->transformed
+        if (!plain && s->transformed && !s->world
                 ? sphere_hit_xf(s, r, tmin, tmax, &t, &n)
                 : a > 0 && sphere_hit(s, r->o, r->d, a, tmin, tmax, &t, &n,
                                       !plain)) {

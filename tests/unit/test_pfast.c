@@ -40,7 +40,8 @@ static const char *const BALL =
     "  finish { ambient 0 diffuse 0 } interior { ior 1.5 }\n"
     "  photons { target refraction on reflection on collect off } }\n";
 
-/* Transforms, inverse, no_shadow, a tilted plane, overlapping spheres. */
+/* Transforms (a similarity among them), inverse, no_shadow, a tilted
+** plane, overlapping spheres. */
 static const char *const MIXED =
     "light_source { <3, 9, -4> color rgb 1 }\n"
     "plane { <0.3, 1, 0.1>, -0.5 pigment { color rgb 0.8 } "
@@ -51,6 +52,9 @@ static const char *const MIXED =
     "sphere { <-0.5, 0.8, 0>, 0.6 no_shadow\n"
     "  pigment { uv_mapping checker color rgb 1 color rgb 0 } }\n"
     "sphere { <0, 3, 0>, 0.01 pigment { color rgb 1 } }\n"
+    /* turned and scaled uniformly: solved about its moved centre */
+    "sphere { <0.2, 0, 0>, 0.5 rotate <10, 20, 30> scale 1.5\n"
+    "  translate <-1.5, 1.2, 1> pigment { color rgb 0.7 } }\n"
     "plane { x, 6 inverse pigment { color rgb 0.5 } }\n";
 
 static vec3 random_dir(rng *r)
