@@ -88,6 +88,35 @@ static pp_value *array_slot(pp_state *ps, pp_array *arr)
     return &arr->items[idx];
 }
 
+/*
+** undef: '#undef' IDENT { '[' float ']' }
+** An element of an array becomes uninitialised again, as POV-Ray's
+** Remove_Symbol does for an array element: users #undef a function held
+** in an array before declaring another there (t-o-k's complex-function
+** library). The '[' is looked for only when no directive follows, so
+** that '#undef A' then '#declare A = ...' on the next line runs in order.
+*/
+static void do_undef(pp_state *ps)
+{
+    ident(ps, "undefined");
+    pp_token name = ps->tok;
+    const char *text = pp_tok_text(ps, &name);
+    pp_sym *s = sym_resolve(sym_lookup(ps, text, name.len));
+    if (s && s->val.kind == V_ARRAY && !pp_next_is_directive(ps) &&
+        pp_accept(ps, T_LBRACKET)) {
+        pp_unget(ps);
+        pp_value *slot = array_slot(ps, s->val.u.arr);
+        while (slot->kind == V_ARRAY && !pp_next_is_directive(ps) &&
+               pp_accept(ps, T_LBRACKET)) {
+            pp_unget(ps);
+            slot = array_slot(ps, slot->u.arr);
+        }
+        memset(slot, 0, sizeof *slot); /* kind V_NONE */
+        return;
+    }
+    sym_undef(ps, text, name.len);
+}
+
 /* #declare / #local Name [index...] = rvalue [;] */
 static void do_declare(pp_state *ps, bool local)
 {
@@ -948,8 +977,7 @@ void pp_directive(pp_state *ps, const pp_token *hash)
     case T_DECLARE: do_declare(ps, false); return;
     case T_LOCAL: do_declare(ps, true); return;
     case T_UNDEF:
-        ident(ps, "undefined");
-        sym_undef(ps, pp_tok_text(ps, &ps->tok), ps->tok.len);
+        do_undef(ps);
         return;
     case T_IF:
         branch(ps, &at, cond_true(ps));

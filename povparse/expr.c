@@ -180,8 +180,14 @@ static double component(pp_state *ps, const pp_token *at, int op,
     case T_MINUS: return x - y;
     case T_STAR: return x * y;
     case T_SLASH:
-        if (y == 0)
-            pp_error(ps, at, "division by zero");
+        /* POV-Ray's Parse_Term: a divisor of exactly 0 gives HUGE_VAL
+        ** (+inf, whatever the dividend) and a warning, not an error:
+        ** '#declare Speed = D / clock;' parses at clock 0. The value is
+        ** refused only where it goes into the scene (need_finite). */
+        if (y == 0) {
+            pp_warning(ps, at, "divide by zero");
+            return HUGE_VAL;
+        }
         return x / y;
     case T_LT: return x < y;
     case T_LE: return x <= y || same;

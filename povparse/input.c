@@ -45,6 +45,24 @@ uint32_t pp_add_text(pp_state *ps, const char *name, const char *text,
     return (uint32_t)ps->n_files++;
 }
 
+/* A lone carriage return ends a line, as in files saved on a classic Mac:
+** POV-Ray's text stream reads CR, LF, CR LF and LF CR each as one line
+** break. Such a CR becomes LF in place (offsets, and so columns, are
+** unchanged), so that a '//' comment ends there and lines are counted;
+** a CR next to an LF stays blank space. Without it a whole CR-only file
+** was one line, and its first '//' comment hid the rest of the scene. */
+static void old_mac_lines(char *s, size_t n)
+{
+    char prev = 0; /* the previous byte as read (before any change) */
+    for (size_t i = 0; i < n; i++) {
+        char c = s[i];
+        if (c == '\r' && prev != '\n' && (i + 1 == n || s[i + 1] != '\n'))
+            s[i] = '\n';
+        /* an LF CR pair is one break: the CR after it is blank */
+        prev = (c == '\r' && prev == '\n') ? 0 : c;
+    }
+}
+
 /* Reads a whole file into the scratch arena; NULL if it cannot. */
 static char *read_file(pp_state *ps, const char *path, size_t *len)
 {
@@ -68,6 +86,7 @@ static char *read_file(pp_state *ps, const char *path, size_t *len)
     fclose(fp);
     buf[got] = 0;
     *len = got;
+    old_mac_lines(buf, got);
     return buf;
 }
 

@@ -1311,6 +1311,26 @@ static void pigment_list(pp_state *ps, iris_pigment *p, int max)
     }
     if (n == 0)
         return;
+    /* Fewer entries than the pattern has (checker with one colour):
+    ** POV-Ray's Parse_Blend_List fills the rest, colours from the
+    ** pattern's default map, pigments with copies of the default
+    ** texture's pigment (black unless #default says otherwise). iris
+    ** repeated the last entry. */
+    if (n < max) {
+        iris_pigment defaults = *p;
+        defaults.n_entries = 0;
+        default_map(ps, &defaults);
+        const iris_texture *dt = pp_default_texture(ps);
+        for (int i = n; i < max; i++) {
+            e[i].value = i;
+            if (pigments)
+                e[i].pigment = dt && dt->pigment ? dt->pigment
+                                                 : pp_pigment_new(ps, &ps->tok);
+            else if (i < defaults.n_entries)
+                e[i].colour = defaults.entries[i].colour;
+        }
+        n = max;
+    }
     if (pigments) {
         /* mixed lists: wrap colours as solid pigments */
         for (int i = 0; i < n; i++)
@@ -2188,6 +2208,14 @@ static iris_texture *texture_body(pp_state *ps, int end)
                     /* a ',' after the last entry too (Parse_Blend_List) */
                     pp_accept(ps, T_COMMA);
                 }
+                /* missing entries are the default texture, as POV-Ray's
+                ** Parse_Blend_List fills them (pigment_list) */
+                const iris_texture *dt = pp_default_texture(ps);
+                if (cnt > 0 && dt)
+                    for (; cnt < max; cnt++) {
+                        e[cnt].texture = (iris_texture *)dt;
+                        e[cnt].value = cnt;
+                    }
                 t->n_entries = cnt;
                 t->entries = e;
                 close_object_pattern(ps, &np);

@@ -1643,11 +1643,24 @@ static void shape_body(pp_state *ps, iris_object *o, int kw, const pp_token *at)
         for (;;) {
             pp_next(ps);
             if (ps->tok.kind == T_CONTAINED_BY) {
+                /* contained_by { box { A, B } | sphere { C, R } }
+                ** (POV-Ray's Parse_Parametric takes both) */
                 pp_expect(ps, T_LBRACE, "'{'");
-                pp_expect(ps, T_BOX, "box");
-                pp_expect(ps, T_LBRACE, "'{'");
-                o->u.parametric.lo = pp_vector(ps); comma(ps);
-                o->u.parametric.hi = pp_vector(ps);
+                pp_next(ps);
+                if (ps->tok.kind == T_SPHERE) {
+                    pp_expect(ps, T_LBRACE, "'{'");
+                    o->u.parametric.contained_kind = 1;
+                    o->u.parametric.centre = pp_vector(ps); comma(ps);
+                    o->u.parametric.radius = pp_float(ps);
+                } else if (ps->tok.kind == T_BOX) {
+                    pp_expect(ps, T_LBRACE, "'{'");
+                    o->u.parametric.contained_kind = 0;
+                    o->u.parametric.lo = pp_vector(ps); comma(ps);
+                    o->u.parametric.hi = pp_vector(ps);
+                } else {
+                    pp_error(ps, &ps->tok, "contained_by takes a box or a "
+                             "sphere");
+                }
                 pp_expect(ps, T_RBRACE, "'}'");
                 pp_expect(ps, T_RBRACE, "'}'");
             } else if (ps->tok.kind == T_MAX_GRADIENT) {

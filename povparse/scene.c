@@ -216,6 +216,8 @@ iris_camera *pp_camera(pp_state *ps, const iris_camera *base)
         case T_ANGLE: {
             angle = pp_float(ps);
             has_angle = true;
+            if (angle < 0)
+                pp_error(ps, &at, "negative viewing angle");
             /* the spherical camera's optional vertical angle: 'angle H, V'
             ** or 'angle H V' (POV-Ray: an optional comma, then a float if
             ** one follows) */
@@ -313,12 +315,17 @@ resolve:
     c->right = right;
     c->direction = dir;
     if (has_angle) {
-        if (!(angle > 0 && angle < 180) &&
-            (c->kind == IRIS_CAM_PERSPECTIVE))
-            pp_error(ps, &open, "camera angle must be in (0, 180) degrees");
+        /* POV-Ray's Parse_Camera: 180 or more is an error for the
+        ** perspective and orthographic cameras; 0 leaves the direction
+        ** as it is (users write 'angle 0' for "no angle") but still
+        ** counts as an angle for the orthographic size below */
+        if (!(angle < 180) && (c->kind == IRIS_CAM_PERSPECTIVE ||
+                               c->kind == IRIS_CAM_ORTHOGRAPHIC))
+            pp_error(ps, &open, "camera angle must be smaller than 180 "
+                     "degrees");
         c->angle = angle;
-        if (c->kind == IRIS_CAM_PERSPECTIVE ||
-            c->kind == IRIS_CAM_ORTHOGRAPHIC) {
+        if ((c->kind == IRIS_CAM_PERSPECTIVE ||
+             c->kind == IRIS_CAM_ORTHOGRAPHIC) && angle > 0) {
             double len = 0.5 * v3_len(c->right) / tan(angle * M_PI / 360);
             c->direction = v3_scale(v3_norm(c->direction), len);
         }

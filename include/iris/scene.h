@@ -480,6 +480,8 @@ struct iris_object {
                  iris_vec3 points[16]; } bicubic;
         struct { iris_fn *fx, *fy, *fz; iris_vec2 uv_lo, uv_hi;
                  iris_vec3 lo, hi;
+                 int contained_kind; /* 0 box lo..hi, 1 sphere */
+                 iris_vec3 centre; double radius;
                  double accuracy, max_gradient; /* 0 = POV-Ray's
                                                    0.001 and 1 */
                  /* 'precompute D x,y,z': depth 1..20 (0 = none) and the

@@ -170,6 +170,12 @@ bool geom_parametric_precompute(const iris_object *o,
 
 static void container(const iris_object *o, vec3 *lo, vec3 *hi)
 {
+    if (o->u.parametric.contained_kind == 1) {
+        double r = fabs(o->u.parametric.radius);
+        *lo = v3_sub(o->u.parametric.centre, v3(r, r, r));
+        *hi = v3_add(o->u.parametric.centre, v3(r, r, r));
+        return;
+    }
     vec3 a = o->u.parametric.lo, b = o->u.parametric.hi;
     if (a.x == 0 && a.y == 0 && a.z == 0 && b.x == 0 && b.y == 0 &&
         b.z == 0) {
@@ -179,6 +185,29 @@ static void container(const iris_object *o, vec3 *lo, vec3 *hi)
     }
     *lo = v3_min(a, b);
     *hi = v3_max(a, b);
+}
+
+/* The ray's span in a container sphere, as POV-Ray's Sphere::Intersect
+** gives it: both chord ends, the first behind the origin when the origin
+** is inside (a box container starts at the origin instead), none when
+** the origin is outside and the centre behind it, or the chord shorter
+** than EPSILON (1e-10, on its squared half in unit-direction terms). */
+static bool sphere_span(const iris_object *o, vec3 ro, vec3 rd, double *d1,
+                        double *d2)
+{
+    double len = v3_len(rd), r = o->u.parametric.radius;
+    if (!(len > 0))
+        return false;
+    vec3 dn = v3_scale(rd, 1 / len), oc = v3_sub(o->u.parametric.centre, ro);
+    double oc2 = v3_len2(oc), tca = v3_dot(oc, dn);
+    if (oc2 >= r * r && tca < 1e-10)
+        return false;
+    double h2 = r * r - oc2 + tca * tca;
+    if (!(h2 > 1e-10))
+        return false;
+    *d1 = (tca - sqrt(h2)) / len;
+    *d2 = (tca + sqrt(h2)) / len;
+    return true;
 }
 
 void geom_parametric_hits(const iris_object *o,
@@ -193,8 +222,12 @@ void geom_parametric_hits(const iris_object *o,
     /* The container along the ray, from the origin on (POV-Ray's box
     ** test starts at 0) */
     double d1 = 0, d2 = INFINITY;
-    if (!geom_clip_box(blo, bhi, ro, rd, &d1, &d2))
+    if (o->u.parametric.contained_kind == 1) {
+        if (!sphere_span(o, ro, rd, &d1, &d2))
+            return;
+    } else if (!geom_clip_box(blo, bhi, ro, rd, &d1, &d2)) {
         return;
+    }
     d1 += 4 * p.acc;
     if (d1 > d2)
         return;

@@ -1,0 +1,4 @@
+// options: -q -w
+// Lines ended by a lone carriage return (a file saved on a classic Mac):// POV-Ray 3.7 reads CR, LF, CR LF and LF CR each as one line break, so// a // comment ends at the CR (the first line ends in LF for run.sh). iris read the whole file as one line,// and this first comment hid the scene: no output at all. The #debug// line of the .expect file is POV-Ray 3.7.0.10's output for this file,// and POV-Ray also stops at the #error on line 15.#version 3.7;#declare A = 5; // a comment after a value#declare B = A * 2;#declare C = B + 1; // CR LF lines mixed in
+#declare D = C + 1; // an LF CR pair
+#debug concat("A=", str(A, 0, 0), " B=", str(B, 0, 0), " C=", str(C, 0, 0), " D=", str(D, 0, 0), "\n")#error "line 15"
