@@ -252,9 +252,11 @@ void node_hits_in_box(const struct anode *n, vec3 o, vec3 d, double tmin,
 ** geom_sphere_hits() step for step (the same t and normal), without the
 ** crossing list, for the commonest primitive of POV-Ray's scenes.
 */
-static bool sphere_nearest(const struct anode *n, vec3 c, double rad,
-                           const xform *xf, vec3 lo, vec3 ld, double tmin,
-                           double tmax, struct ahit *best)
+/* always_inline: with two call sites (world-frame and object-space
+** spheres) GCC kept it out of line, +4% instructions on ntreal */
+static inline __attribute__((always_inline)) bool
+sphere_nearest(const struct anode *n, vec3 c, double rad, const xform *xf,
+               vec3 lo, vec3 ld, double tmin, double tmax, struct ahit *best)
 {
     vec3 oc = v3_sub(lo, c);
     double tc, h;
