@@ -90,6 +90,15 @@ void geom_plane_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
 ** 'side' -1 for its low face (POV-Ray's X0, Y0, Z0), +1 for the high one.
 ** The faces read the right way round seen from outside.
 */
+/* A crossing's uv as isect_push() keeps it: 0 where not finite (the
+** fast paths of accel/node.c ask for one crossing's uv alone) */
+static inline iris_vec2 uv_finite(iris_vec2 uv)
+{
+    uv.u = isfinite(uv.u) ? uv.u : 0;
+    uv.v = isfinite(uv.v) ? uv.v : 0;
+    return uv;
+}
+
 static iris_vec2 box_uv(vec3 lo, vec3 hi, vec3 p, int axis, double side)
 {
     /* Only the two coordinates a face uses: divisions are most of it */
@@ -167,10 +176,7 @@ iris_vec2 geom_box_uv(const iris_object *o, vec3 ro, vec3 rd,
     vec3 lo = v3_min(o->u.box.lo, o->u.box.hi);
     vec3 hi = v3_max(o->u.box.lo, o->u.box.hi);
     iris_vec2 uv = box_uv(lo, hi, v3_madd(ro, rd, c->t), c->axis, c->side);
-    /* as isect_push() keeps it */
-    uv.u = isfinite(uv.u) ? uv.u : 0;
-    uv.v = isfinite(uv.v) ? uv.v : 0;
-    return uv;
+    return uv_finite(uv);
 }
 
 void geom_box_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
@@ -300,10 +306,7 @@ iris_vec2 geom_cone_uv(const struct geom_cone_cross *c)
         uv.u = atan2(c->y, c->x) / (2 * M_PI) + 0.5;
         uv.v = c->z / c->len;
     }
-    /* as isect_push() keeps it */
-    uv.u = isfinite(uv.u) ? uv.u : 0;
-    uv.v = isfinite(uv.v) ? uv.v : 0;
-    return uv;
+    return uv_finite(uv);
 }
 
 void geom_cone_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
