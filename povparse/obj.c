@@ -526,6 +526,31 @@ static void object_mods(pp_state *ps, iris_object *o, const pp_token *open,
 /* POV-Ray's Parse_Comma: the comma is optional. */
 static void comma(pp_state *ps) { pp_accept(ps, T_COMMA); }
 
+/* contained_by_rest: '{' ( box '{' vector [','] vector '}'
+**                         | sphere '{' vector [','] float '}' ) '}'
+** (isosurface and parametric; *kind 0 box lo..hi, 1 sphere) */
+static void contained_by(pp_state *ps, int *kind, iris_vec3 *lo,
+                         iris_vec3 *hi, iris_vec3 *centre, double *radius)
+{
+    pp_expect(ps, T_LBRACE, "'{'");
+    pp_next(ps);
+    if (ps->tok.kind == T_BOX) {
+        pp_expect(ps, T_LBRACE, "'{'");
+        *kind = 0;
+        *lo = pp_vector(ps); comma(ps);
+        *hi = pp_vector(ps);
+    } else if (ps->tok.kind == T_SPHERE) {
+        pp_expect(ps, T_LBRACE, "'{'");
+        *kind = 1;
+        *centre = pp_vector(ps); comma(ps);
+        *radius = pp_float(ps);
+    } else {
+        pp_error(ps, &ps->tok, "contained_by takes a box or a sphere");
+    }
+    pp_expect(ps, T_RBRACE, "'}'");
+    pp_expect(ps, T_RBRACE, "'}'");
+}
+
 /* An index read as a float: out-of-range values become -1 (rejected by
 ** the callers' range checks) instead of undefined conversions. */
 static int32_t index_of(double v)
@@ -1259,23 +1284,9 @@ static void isosurface(pp_state *ps, iris_object *o)
         switch (at.kind) {
         case T_FUNCTION: o->u.isosurface.fn = pp_function(ps); break;
         case T_CONTAINED_BY: {
-            pp_expect(ps, T_LBRACE, "'{'");
-            pp_next(ps);
-            if (ps->tok.kind == T_BOX) {
-                pp_expect(ps, T_LBRACE, "'{'");
-                o->u.isosurface.contained_kind = 0;
-                o->u.isosurface.lo = pp_vector(ps); comma(ps);
-                o->u.isosurface.hi = pp_vector(ps);
-            } else if (ps->tok.kind == T_SPHERE) {
-                pp_expect(ps, T_LBRACE, "'{'");
-                o->u.isosurface.contained_kind = 1;
-                o->u.isosurface.centre = pp_vector(ps); comma(ps);
-                o->u.isosurface.radius = pp_float(ps);
-            } else {
-                pp_error(ps, &ps->tok, "contained_by takes a box or a sphere");
-            }
-            pp_expect(ps, T_RBRACE, "'}'");
-            pp_expect(ps, T_RBRACE, "'}'");
+            contained_by(ps, &o->u.isosurface.contained_kind,
+                         &o->u.isosurface.lo, &o->u.isosurface.hi,
+                         &o->u.isosurface.centre, &o->u.isosurface.radius);
             break;
         }
         case T_THRESHOLD: o->u.isosurface.threshold = pp_float(ps); break;
@@ -1643,26 +1654,11 @@ static void shape_body(pp_state *ps, iris_object *o, int kw, const pp_token *at)
         for (;;) {
             pp_next(ps);
             if (ps->tok.kind == T_CONTAINED_BY) {
-                /* contained_by { box { A, B } | sphere { C, R } }
-                ** (POV-Ray's Parse_Parametric takes both) */
-                pp_expect(ps, T_LBRACE, "'{'");
-                pp_next(ps);
-                if (ps->tok.kind == T_SPHERE) {
-                    pp_expect(ps, T_LBRACE, "'{'");
-                    o->u.parametric.contained_kind = 1;
-                    o->u.parametric.centre = pp_vector(ps); comma(ps);
-                    o->u.parametric.radius = pp_float(ps);
-                } else if (ps->tok.kind == T_BOX) {
-                    pp_expect(ps, T_LBRACE, "'{'");
-                    o->u.parametric.contained_kind = 0;
-                    o->u.parametric.lo = pp_vector(ps); comma(ps);
-                    o->u.parametric.hi = pp_vector(ps);
-                } else {
-                    pp_error(ps, &ps->tok, "contained_by takes a box or a "
-                             "sphere");
-                }
-                pp_expect(ps, T_RBRACE, "'}'");
-                pp_expect(ps, T_RBRACE, "'}'");
+                /* POV-Ray's Parse_Parametric takes both forms */
+                contained_by(ps, &o->u.parametric.contained_kind,
+                             &o->u.parametric.lo, &o->u.parametric.hi,
+                             &o->u.parametric.centre,
+                             &o->u.parametric.radius);
             } else if (ps->tok.kind == T_MAX_GRADIENT) {
                 o->u.parametric.max_gradient = pp_float(ps);
             } else if (ps->tok.kind == T_ACCURACY) {
