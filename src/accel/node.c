@@ -247,6 +247,32 @@ void node_hits_in_box(const struct anode *n, vec3 o, vec3 d, double tmin,
     }
 }
 
+/* A crossing's world-space unit normal (xf NULL: object space is world
+** space), turned for an inverted leaf; false when it is degenerate, and
+** the crossing is then skipped, as the general path skips it. */
+static inline bool leaf_normal(const struct anode *n, const xform *xf,
+                               vec3 on, vec3 *out)
+{
+    vec3 wn = xf ? xf_normal(xf, on) : on;
+    double len = v3_len(wn);
+    if (!(len > 0) || !isfinite(len))
+        return false;
+    *out = v3_scale(wn, (n->inverted ? -1.0 : 1.0) / len);
+    return true;
+}
+
+/* The leaf's crossing at t becomes the nearest hit (the fast paths'
+** answer; the texture is chosen by the caller). */
+static inline void keep_hit(struct ahit *best, const struct anode *n,
+                            double t, vec3 nrm, iris_vec2 uv)
+{
+    best->t = t;
+    best->n = best->sn = nrm;
+    best->uv = uv;
+    best->leaf = n;
+    best->texture = NULL;
+}
+
 /*
 ** The nearest crossing of a sphere leaf with the object-space ray lo + t·ld:
 ** geom_sphere_hits() step for step (the same t and normal), without the
@@ -271,15 +297,11 @@ sphere_nearest(const struct anode *n, vec3 c, double rad, const xform *xf,
         if (!isfinite(on.x) || !isfinite(on.y) || !isfinite(on.z) ||
             (on.x == 0 && on.y == 0 && on.z == 0))
             continue;
-        vec3 wn = xf ? xf_normal(xf, on) : on;
-        double len = v3_len(wn);
-        if (!(len > 0) || !isfinite(len))
+        vec3 nrm;
+        if (!leaf_normal(n, xf, on, &nrm))
             continue;
-        best->t = t;
-        best->n = best->sn = v3_scale(wn, (n->inverted ? -1.0 : 1.0) / len);
-        best->uv.u = best->uv.v = 0; /* geom_sphere_uv, for the hit kept */
-        best->leaf = n;
-        best->texture = NULL;
+        /* uv 0: geom_sphere_uv, asked for the hit kept */
+        keep_hit(best, n, t, nrm, (iris_vec2){ 0, 0 });
         return true;
     }
     return false;
@@ -329,16 +351,11 @@ static bool box_nearest(const struct anode *n, vec3 lo, vec3 ld, double tmin,
     struct geom_box_cross c[2];
     int nc = geom_box_crossings(obj, lo, ld, tmin, tmax, c);
     for (int k = 0; k < nc; k++) {
-        vec3 on = geom_box_normal(&c[k]);
-        vec3 wn = obj->has_transform ? xf_normal(&obj->transform, on) : on;
-        double len = v3_len(wn);
-        if (!(len > 0) || !isfinite(len))
+        vec3 nrm;
+        if (!leaf_normal(n, obj->has_transform ? &obj->transform : NULL,
+                         geom_box_normal(&c[k]), &nrm))
             continue;
-        best->t = c[k].t;
-        best->n = best->sn = v3_scale(wn, (n->inverted ? -1.0 : 1.0) / len);
-        best->uv = geom_box_uv(obj, lo, ld, &c[k]);
-        best->leaf = n;
-        best->texture = NULL;
+        keep_hit(best, n, c[k].t, nrm, geom_box_uv(obj, lo, ld, &c[k]));
         return true;
     }
     return false;
@@ -364,18 +381,13 @@ static bool cone_nearest(const struct anode *n, vec3 lo, vec3 ld,
                 k = i;
         if (k < 0)
             return false;
-        vec3 wn = obj->has_transform ? xf_normal(&obj->transform, c[k].n)
-                                     : c[k].n;
-        double len = v3_len(wn);
-        if (!(len > 0) || !isfinite(len)) {
+        vec3 nrm;
+        if (!leaf_normal(n, obj->has_transform ? &obj->transform : NULL,
+                         c[k].n, &nrm)) {
             c[k].t = NAN; /* never nearest again */
             continue;
         }
-        best->t = c[k].t;
-        best->n = best->sn = v3_scale(wn, (n->inverted ? -1.0 : 1.0) / len);
-        best->uv = geom_cone_uv(&c[k]);
-        best->leaf = n;
-        best->texture = NULL;
+        keep_hit(best, n, c[k].t, nrm, geom_cone_uv(&c[k]));
         return true;
     }
 }
