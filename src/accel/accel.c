@@ -47,15 +47,18 @@
 ** Speed. A query costs Embree's set-up and a user-geometry dispatch per
 ** candidate, which for a handful of primitives is more than testing their
 ** boxes in turn: a scene of at most LINEAR_MAX bounded primitives and no
-** mesh is searched without Embree (same boxes, same exact tests). Embree's
-** own box test is not repeated in double in the callback. Shape leaves
-** without clipping take node_nearest's short path (node.c shape_nearest):
-** only the nearest crossing's normal is taken to world space, spheres and
-** planes are solved inline, boxes, cylinders and cones hand over their
-** few crossings without a list (node.c box_nearest, cone_nearest: the
-** cone's atan2 uv only for the crossing kept), and a sphere's uv is
-** computed once, for the hit kept, and only when its texture may read
-** it. A leaf's texture (its own, its top-level object's or the default)
+** mesh is searched without Embree (same boxes, same exact tests; each
+** box's sides packed near-then-far for the query's signs of 1/d, so the
+** slab test needs no swap: linear_ordered). Embree's own box test is not
+** repeated in double in the callback. Shape leaves without clipping take
+** node_nearest's short path (node.c shape_nearest): only the nearest
+** crossing's normal is taken to world space, spheres and planes are
+** solved inline, boxes, cylinders and cones hand over their few
+** crossings without a list (node.c box_nearest, cone_nearest, the
+** cone's frame taken at build time), a torus refines only its first
+** root (torus_nearest), and the uv of a sphere, a cone's side or a
+** torus is computed once, for the hit kept, and only when its texture
+** has a uv_mapping pattern (uv_prepare). A leaf's texture (its own, its top-level object's or the default)
 ** is chosen once at build time (node.h 'texture'). An unbounded plane
 ** without clipping is tested inside the query itself, its world normal
 ** taken once at build time (plane_world_normal, plane_prepare); a plane
@@ -139,6 +142,11 @@ struct accel {
     int n_inf;
     int n_attached;                /* meshes attached to 'scene' */
     bool linear;                   /* few primitives: no Embree query */
+    /* linear: a->user[i]'s box, packed for each pattern of signs of
+    ** 1/d (bit k set: 1/d < 0 along axis k) with the side a ray of that
+    ** pattern enters along axis k (lo, or hi where 1/d < 0) in
+    ** lin_box[pattern][i][0][k] and the side it leaves in [1][k] */
+    double lin_box[8][LINEAR_MAX][2][3];
 
     int cap_user, cap_inf;
     const iris_object *stack[MAX_DEPTH + 2]; /* the objects being built */
@@ -898,35 +906,81 @@ static void compute_epsilon(struct accel *a)
     a->eps = fmax(1e-9 * size, 1e-290);
 }
 
-/* Whether shading with 't' (its layers) may evaluate a pattern, and so
-** read a hit's uv (only a pattern's uv_mapping does): a texture map, a
-** normal or a patterned pigment anywhere in it. */
-static bool texture_may_read_uv(const iris_texture *t)
+/*
+** Whether shading with texture 't' may read a hit's uv. Only a pattern
+** under uv_mapping does (material/pattern.c pat_input, the one reader of
+** struct mat_point's uv), so this looks for one among every pattern the
+** texture's evaluation can reach: each layer's texture_map pattern and
+** entries, its pigment's pattern and pigment_map (or list pattern)
+** entries, its normal's pattern and normal_map entries. Function
+** patterns evaluate what they embed at a point of their own, with uv 0
+** (fn/fnimages.c). Nesting deeper than MAX_DEPTH answers yes.
+*/
+static bool pigment_reads_uv(const iris_pigment *p, int depth);
+static bool normal_reads_uv(const iris_normal *n, int depth);
+
+static bool texture_reads_uv(const iris_texture *t, int depth)
 {
-    for (; t; t = t->next)
-        if (t->map_pattern.kind != IRIS_PAT_NONE || t->normal ||
-            !t->pigment || t->pigment->pattern.kind != IRIS_PAT_NONE)
+    if (depth > MAX_DEPTH)
+        return true;
+    for (; t; t = t->next) {
+        if (t->map_pattern.uv_mapping ||
+            pigment_reads_uv(t->pigment, depth + 1) ||
+            normal_reads_uv(t->normal, depth + 1))
+            return true;
+        for (int i = 0; i < t->n_entries && t->entries; i++)
+            if (texture_reads_uv(t->entries[i].texture, depth + 1) ||
+                pigment_reads_uv(t->entries[i].pigment, depth + 1) ||
+                normal_reads_uv(t->entries[i].normal, depth + 1))
+                return true;
+    }
+    return false;
+}
+
+static bool pigment_reads_uv(const iris_pigment *p, int depth)
+{
+    if (!p)
+        return false;
+    if (depth > MAX_DEPTH || p->pattern.uv_mapping)
+        return true;
+    for (int i = 0; i < p->n_entries && p->entries; i++)
+        if (pigment_reads_uv(p->entries[i].pigment, depth + 1))
+            return true;
+    return false;
+}
+
+static bool normal_reads_uv(const iris_normal *n, int depth)
+{
+    if (!n)
+        return false;
+    if (depth > MAX_DEPTH || n->pattern.uv_mapping)
+        return true;
+    for (int i = 0; i < n->n_entries && n->entries; i++)
+        if (normal_reads_uv(n->entries[i].normal, depth + 1))
             return true;
     return false;
 }
 
 /*
-** A sphere's uv costs an atan2 and an acos per hit; most spheres have a
-** plain texture, which never reads it. accel_intersect() computes it for
-** the spheres whose hits may be shaded with a texture that does: the
-** hit's texture (the leaf's own, else its top-level object's, else the
-** default plain one) or its interior_texture. Photons and shadow rays
-** shade the same textures.
+** A sphere's uv costs an atan2 and an acos per hit, a cylinder's or a
+** cone's side an atan2, a torus's two; few textures read it (only
+** uv_mapping patterns do: texture_reads_uv). The nearest-crossing paths
+** compute it (accel_intersect for spheres, node.c cone_nearest and
+** torus_nearest) only for the leaves whose hits may be shaded with a
+** texture that does:
+** the hit's texture (the leaf's own, else its top-level object's, else
+** the default plain one) or its interior_texture. Photons and shadow
+** rays shade the same textures.
 */
-static void sphere_uv_prepare(struct anode *n)
+static void uv_prepare(struct anode *n)
 {
-    if (n->kind != AN_SHAPE || !n->obj || n->obj->kind != IRIS_OBJ_SPHERE)
+    if (n->kind != AN_SHAPE || !n->obj)
         return;
     const iris_texture *t = n->obj->texture ? n->obj->texture
                             : n->top ? n->top->texture : NULL;
-    n->sphere_uv = texture_may_read_uv(t) ||
-                   (n->obj->interior_texture &&
-                    texture_may_read_uv(n->obj->interior_texture));
+    n->uv_read = texture_reads_uv(t, 0) ||
+                 texture_reads_uv(n->obj->interior_texture, 0);
+    n->sphere_uv = n->uv_read && n->obj->kind == IRIS_OBJ_SPHERE;
 }
 
 enum iris_status accel_build(const iris_scene *scene, struct accel **out,
@@ -1011,13 +1065,40 @@ enum iris_status accel_build(const iris_scene *scene, struct accel **out,
     }
     for (int i = 0; i < a->n_nodes; i++) {
         struct anode *n = a->nodes[i];
-        sphere_uv_prepare(n);
+        uv_prepare(n);
+        /* node.c cone_nearest's frame, taken once */
+        if (n->kind == AN_SHAPE && n->obj &&
+            (n->obj->kind == IRIS_OBJ_CYLINDER ||
+             n->obj->kind == IRIS_OBJ_CONE))
+            geom_cone_frame(n->obj, &n->cone);
         /* accel_intersect()'s choice for every hit, made once */
         n->texture = n->obj && n->obj->texture   ? n->obj->texture
                      : n->top && n->top->texture ? n->top->texture
                                                  : &a->default_texture;
     }
     a->linear = a->n_attached == 0 && a->n_user <= LINEAR_MAX;
+    for (int i = 0; a->linear && i < a->n_user; i++) {
+        const struct anode *n = a->user[i];
+        const double lo[3] = { n->lo.x, n->lo.y, n->lo.z },
+                     hi[3] = { n->hi.x, n->hi.y, n->hi.z };
+        for (int k = 0; k < 3; k++) {
+            /* An empty node's box (lo > hi: build() gives it 1..-1) is
+            ** the box between the two along k to box_may_hit(), which
+            ** orders each slab's pair; so it is here */
+            double l = lo[k] > hi[k] ? hi[k] : lo[k],
+                   h = lo[k] > hi[k] ? lo[k] : hi[k];
+            for (int sg = 0; sg < 8; sg++) {
+                bool neg = sg >> k & 1;
+                a->lin_box[sg][i][0][k] = neg ? h : l;
+                a->lin_box[sg][i][1][k] = neg ? l : h;
+            }
+            /* A bounded node's box is finite (build(): box_finite or
+            ** empty); one that is not a number would have no order, and
+            ** Embree's query would take it */
+            if (isnan(lo[k]) || isnan(hi[k]))
+                a->linear = false;
+        }
+    }
     a->has_bounds = !all.empty && !all.inf;
     if (a->has_bounds) {
         a->lo = all.lo;
@@ -1122,31 +1203,6 @@ static inline bool box_may_hit(vec3 lo, vec3 hi, vec3 o, vec3 inv, double t0,
     return true;
 }
 
-/* One axis of box_may_hit() with a finite 1/d, the same operations in the
-** same order, written as selections the compiler can make without
-** branches (whether a box's slab narrows the interval is as random as
-** the rays). */
-static inline bool slab_narrow(double lo, double hi, double o, double inv,
-                               double *a, double *b)
-{
-    double ta = (lo - o) * inv, tb = (hi - o) * inv;
-    double tn = ta > tb ? tb : ta, tf = ta > tb ? ta : tb;
-    *a = tn > *a ? tn : *a;
-    *b = tf < *b ? tf : *b;
-    return !(*a > *b + 1e-12 * (fabs(*a) + fabs(*b)));
-}
-
-/* box_may_hit() when no axis of 'inv' is infinite (the caller knows it
-** once for all boxes of a query). */
-static inline bool box_may_hit_finite(vec3 lo, vec3 hi, vec3 o, vec3 inv,
-                                      double t0, double t1)
-{
-    double a = t0, b = t1;
-    return slab_narrow(lo.x, hi.x, o.x, inv.x, &a, &b) &&
-           slab_narrow(lo.y, hi.y, o.y, inv.y, &a, &b) &&
-           slab_narrow(lo.z, hi.z, o.z, inv.z, &a, &b);
-}
-
 /*
 ** node_nearest() of a plane_fast leaf (plane_prepare): node.c
 ** plane_nearest() step for step, without its calls and with the normal
@@ -1183,27 +1239,78 @@ static inline bool plane_nearest(const struct anode *n, vec3 o, vec3 d,
 }
 
 /*
+** One axis of box_may_hit() with a finite 1/d, for a box whose sides
+** along the axis are ordered by the caller: 'near' the side a ray of this
+** sign of 1/d enters by (the lower one for 1/d > 0, the higher one for
+** 1/d < 0), 'far' the other. Rounding is monotone, so (near - o)·inv <=
+** (far - o)·inv, and these are box_may_hit()'s ta and tb after its swap
+** (a pair equal in value may differ in the sign of a zero, which no
+** comparison below sees). Its emptiness test is asked in two steps:
+** a <= b passes at once (the tolerance is >= 0; a, b are never NaN
+** here: the box is a number, o and 1/d finite), and most passing axes
+** need no tolerance. Hence box_may_hit()'s decision, without its
+** comparison and swap of the pair per axis, and with selections the
+** compiler makes without branches.
+*/
+static inline bool slab_ordered(double near, double far, double o,
+                                double inv, double *a, double *b)
+{
+    double tn = (near - o) * inv, tf = (far - o) * inv;
+    *a = tn > *a ? tn : *a;
+    *b = tf < *b ? tf : *b;
+    return !(*a > *b) || !(*a > *b + 1e-12 * (fabs(*a) + fabs(*b)));
+}
+
+/*
 ** The nearest crossing among the bounded primitives of a linear accel
 ** (a->linear), each box tested in turn, in (tmin, *tmax); *tmax shrinks
-** to each crossing kept. 'inv_finite' is a constant at each call (the
-** caller asks once per query whether 1/d has an infinite axis), so each
-** copy of the loop has one box test and keeps the origin, the interval
-** and 1/d in registers; the exact test reads the ray from 'r' (a copy
-** made for its call before the loop cost the queries that make none).
-** The loop over boxes is most of a query in a scene of a few objects:
-** 175_extents_stacking tests 1.6 M boxes in 175 k queries.
+** to each crossing kept. For a finite 1/d: the boxes are read from
+** a->lin_box's copy for the query's signs of 1/d, whose row 0 is each
+** box's near side along each axis and row 1 its far side
+** (slab_ordered), with the origin, the interval and 1/d kept in
+** registers; the exact test reads the ray from 'r' (a copy made for its
+** call before the loop cost the queries that make none). The loop over
+** boxes is most of a query in a scene of a few objects:
+** 175_extents_stacking tests 1.6 M boxes in 197 k queries, and choosing
+** each pair's order by a comparison cost it 5 % of its eye pass.
 */
 static inline __attribute__((always_inline)) bool
-linear_loop(const struct accel *a, const ray *r, vec3 inv, bool inv_finite,
-            double tmin, double *tmax, unsigned skip, struct ahit *best)
+linear_ordered(const struct accel *a, const ray *r, vec3 inv, double tmin,
+               double *tmax, unsigned skip, struct ahit *best)
 {
     bool found = false;
     double t1 = *tmax;
     vec3 o = r->o;
+    const double(*box)[2][3] =
+        a->lin_box[(inv.x < 0) | (inv.y < 0) << 1 | (inv.z < 0) << 2];
+    for (int i = 0; i < a->n_user; i++) {
+        const double(*bx)[3] = box[i];
+        double ta = tmin, tb = t1;
+        if (!(slab_ordered(bx[0][0], bx[1][0], o.x, inv.x, &ta, &tb) &&
+              slab_ordered(bx[0][1], bx[1][1], o.y, inv.y, &ta, &tb) &&
+              slab_ordered(bx[0][2], bx[1][2], o.z, inv.z, &ta, &tb)))
+            continue;
+        if (node_nearest_in_box(a->user[i], r->o, r->d, tmin, t1, skip,
+                                best)) {
+            t1 = best->t;
+            found = true;
+        }
+    }
+    *tmax = t1;
+    return found;
+}
+
+/* linear_ordered() for a ray along an axis (an infinite 1/d), rare:
+** box_may_hit() on each primitive's own box. */
+static bool linear_loop(const struct accel *a, const ray *r, vec3 inv,
+                        double tmin, double *tmax, unsigned skip,
+                        struct ahit *best)
+{
+    bool found = false;
+    double t1 = *tmax;
     for (int i = 0; i < a->n_user; i++) {
         const struct anode *n = a->user[i];
-        if (!(inv_finite ? box_may_hit_finite(n->lo, n->hi, o, inv, tmin, t1)
-                         : box_may_hit(n->lo, n->hi, o, inv, tmin, t1)))
+        if (!box_may_hit(n->lo, n->hi, r->o, inv, tmin, t1))
             continue;
         if (node_nearest_in_box(n, r->o, r->d, tmin, t1, skip, best)) {
             t1 = best->t;
@@ -1254,10 +1361,10 @@ intersect_body(const struct accel *a, const ray *r, double tmin, double tmax,
         vec3 inv = v3(1 / r->d.x, 1 / r->d.y, 1 / r->d.z);
         /* a direction along an axis has an infinite 1/d: asked once per
         ** query, not per box and axis */
-        if (finite_v(inv) ? linear_loop(a, r, inv, true, q.tmin, &q.tmax,
-                                        skip, &q.best)
-                          : linear_loop(a, r, inv, false, q.tmin, &q.tmax,
-                                        skip, &q.best))
+        if (finite_v(inv) ? linear_ordered(a, r, inv, q.tmin, &q.tmax, skip,
+                                           &q.best)
+                          : linear_loop(a, r, inv, q.tmin, &q.tmax, skip,
+                                        &q.best))
             q.found = true;
     } else {
         q.mode = Q_NEAREST;
@@ -1286,7 +1393,7 @@ intersect_body(const struct accel *a, const ray *r, double tmin, double tmax,
     h->texture = q.best.texture ? q.best.texture : leaf->texture;
     if (leaf->sphere_uv) { /* only sphere shape leaves have it */
         /* Asked once, for the hit kept (geom_sphere_uv), and only when
-        ** its texture may read it (sphere_uv_prepare) */
+        ** its texture may read it (uv_prepare) */
         const iris_object *o = leaf->obj;
         h->uv = geom_sphere_uv(o, o->has_transform
                                       ? xf_inv_point(&o->transform, h->p)

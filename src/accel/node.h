@@ -95,9 +95,11 @@ struct anode {
     bool plane_wn_ok;              /* plane_wn is valid (finite, nonzero
                                       length); if not, the plane is never
                                       crossed */
-    bool sphere_uv;                /* AN_SHAPE sphere: a texture of its
-                                      hits may read uv (accel_intersect
-                                      computes it only then) */
+    bool uv_read;                  /* AN_SHAPE: a texture of its hits may
+                                      read uv (the nearest-crossing fast
+                                      paths compute it only then) */
+    bool sphere_uv;                /* AN_SHAPE sphere with uv_read
+                                      (accel_intersect computes its uv) */
     const iris_texture *texture;   /* leaves: their hits' texture where
                                       the crossing has none of its own:
                                       obj's, else top's, else the
@@ -114,6 +116,9 @@ struct anode {
                                       centre (node_sphere_world_prepare) */
     vec3 sphere_wc;
     double sphere_wr;
+    struct geom_cone_frame cone;   /* AN_SHAPE cylinder, cone: its frame,
+                                      taken once (accel.c, for node.c
+                                      cone_nearest) */
 };
 
 /* A surface crossing in world space, before it becomes a 'struct hit'. */

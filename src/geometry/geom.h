@@ -261,6 +261,21 @@ struct geom_cone_cross {
 int geom_cone_crossings(const iris_object *o, vec3 ro, vec3 rd, double t0,
                         double t1, struct geom_cone_cross c[4]);
 iris_vec2 geom_cone_uv(const struct geom_cone_cross *c);
+/* The cone's (or cylinder's) frame: base 'a', unit axis 'w' and the
+** basis u, v about it, length 'len'; the radii ra (base), rb (cap) are
+** signed, 'empty' when there is none. A function of the object alone,
+** so a caller may take it once (accel/node.h 'cone'); the crossings
+** from it are geom_cone_crossings()' to the bit. */
+struct geom_cone_frame {
+    vec3 a, u, v, w;
+    double len, ra, rb;
+    bool empty;
+};
+void geom_cone_frame(const iris_object *o, struct geom_cone_frame *f);
+int geom_cone_crossings_in(const iris_object *o,
+                           const struct geom_cone_frame *f, vec3 ro,
+                           vec3 rd, double t0, double t1,
+                           struct geom_cone_cross c[4]);
 void geom_disc_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
                     double t1, struct isect_list *out);
 bool geom_cone_inside(const iris_object *o, vec3 p);
@@ -273,6 +288,25 @@ bool geom_cone_inside(const iris_object *o, vec3 p);
 */
 int geom_torus_roots(double R, double r, vec3 o, vec3 d, double t0,
                      double t1, double *s_out, vec3 *p_out, double u[4]);
+/*
+** geom_torus_hits() in parts, for a caller that wants only the nearest
+** crossing (accel/node.c): geom_torus_first() solves for the first root
+** only (the same value as the whole solve's first) and returns 1 with
+** its crossing in *c (t, normal as geom_torus_hits() pushes it), 0 when
+** there is no root, or -1 when that crossing is one isect_push() would
+** drop (the caller then takes geom_torus_hits(), which sees the next);
+** geom_torus_uv() is its uv, as pushed (its two atan2 only for the
+** crossing kept, and only when a texture reads it).
+*/
+struct geom_torus_cross {
+    double t;
+    vec3 n;
+    vec3 q;
+    double rxz, R;
+};
+int geom_torus_first(const iris_object *o, vec3 ro, vec3 rd, double t0,
+                     double t1, struct geom_torus_cross *c);
+iris_vec2 geom_torus_uv(const struct geom_torus_cross *c);
 void geom_torus_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
                      double t1, struct isect_list *out);
 void geom_poly_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,

@@ -191,14 +191,6 @@ void geom_box_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
     }
 }
 
-/* The cone (or cylinder) frame: base 'a', unit axis 'w', length 'len';
-** the radii ra (base), rb (cap) are signed, 'empty' when there is none. */
-struct cone_frame {
-    vec3 a, u, v, w;
-    double len, ra, rb;
-    bool empty;
-};
-
 /*
 ** A cone's radii as POV-Ray's Cone::Compute_Cone_Data takes them: the
 ** radius runs linearly from base to cap with its sign, and the surface
@@ -208,7 +200,7 @@ struct cone_frame {
 ** when it is negative that frame turns the cone into a cylinder of its
 ** size, and when it is 0 (the other negative) into nothing.
 */
-static void cone_radii(const iris_object *o, struct cone_frame *f)
+static void cone_radii(const iris_object *o, struct geom_cone_frame *f)
 {
     double ra = o->u.cone.base_radius, rb = o->u.cone.cap_radius;
     double hi = fmax(ra, rb);
@@ -224,7 +216,7 @@ static void cone_radii(const iris_object *o, struct cone_frame *f)
     f->rb = rb;
 }
 
-static void cone_frame(const iris_object *o, struct cone_frame *f)
+void geom_cone_frame(const iris_object *o, struct geom_cone_frame *f)
 {
     vec3 b;
     if (o->kind == IRIS_OBJ_CYLINDER) {
@@ -253,8 +245,17 @@ static bool normal_kept(vec3 n)
 int geom_cone_crossings(const iris_object *o, vec3 ro, vec3 rd, double t0,
                         double t1, struct geom_cone_cross c[4])
 {
-    struct cone_frame f;
-    cone_frame(o, &f);
+    struct geom_cone_frame f;
+    geom_cone_frame(o, &f);
+    return geom_cone_crossings_in(o, &f, ro, rd, t0, t1, c);
+}
+
+int geom_cone_crossings_in(const iris_object *o,
+                           const struct geom_cone_frame *fp, vec3 ro,
+                           vec3 rd, double t0, double t1,
+                           struct geom_cone_cross c[4])
+{
+    const struct geom_cone_frame f = *fp;
     if (f.empty)
         return 0;
     int nc = 0;
@@ -337,8 +338,8 @@ void geom_cone_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
 bool geom_cone_inside(const iris_object *o, vec3 p)
 {
     const double eps = 1e-10;  /* POV-Ray's EPSILON */
-    struct cone_frame f;
-    cone_frame(o, &f);
+    struct geom_cone_frame f;
+    geom_cone_frame(o, &f);
     if (f.empty)
         return false;
     double off = o->open ? eps : -eps;

@@ -40,6 +40,14 @@ int roots_in_interval(const double *c, int deg, double lo, double hi,
                       double *out);
 
 /*
+** The first min(cap, their count) of the roots roots_in_interval() stores,
+** the same values to the bit, without refining the others: for a caller
+** that keeps only the nearest crossing (accel/node.c, the torus).
+*/
+int roots_first_in_interval(const double *c, int deg, double lo, double hi,
+                            double *out, int cap);
+
+/*
 ** roots_in_interval(c, 3, lo, hi, out) for a cubic, the same contract,
 ** in closed form where that is accurate (POV-Ray's solve_cubic: the
 ** trigonometric form for three real roots, Cardano's for one), each root

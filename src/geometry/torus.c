@@ -52,8 +52,11 @@ static bool torus_missed(double R, double r, vec3 p, vec3 d, double lo,
     return xa * xa + za * za < hole * hole && xb * xb + zb * zb < hole * hole;
 }
 
-int geom_torus_roots(double R, double r, vec3 o, vec3 d, double t0,
-                     double t1, double *s_out, vec3 *p_out, double u[4])
+/* geom_torus_roots() storing at most 'cap' roots, the first ones
+** (roots_first_in_interval). */
+static int torus_roots(double R, double r, vec3 o, vec3 d, double t0,
+                       double t1, double *s_out, vec3 *p_out, double u[4],
+                       int cap)
 {
     /* Shift the origin to the closest approach; reject outside the
     ** bounding sphere of radius |R| + r */
@@ -83,7 +86,65 @@ int geom_torus_roots(double R, double r, vec3 o, vec3 d, double t0,
     c[0] = gamma * gamma - 4 * R * R * (p.x * p.x + p.z * p.z);
     *s_out = s;
     *p_out = p;
-    return roots_in_interval(c, 4, lo, hi, u);
+    return roots_first_in_interval(c, 4, lo, hi, u, cap);
+}
+
+int geom_torus_roots(double R, double r, vec3 o, vec3 d, double t0,
+                     double t1, double *s_out, vec3 *p_out, double u[4])
+{
+    return torus_roots(R, r, o, d, t0, t1, s_out, p_out, u, 4);
+}
+
+/*
+** The crossing at root u of the torus with the unit ray p + u·d (p the
+** closest approach, at s along the ray of length dl): its t, and the
+** point q and its distance rxz from the axis, from which come the normal
+** and the uv.
+*/
+static void torus_cross(double R, vec3 p, vec3 d, double s, double dl,
+                        double u, struct geom_torus_cross *c)
+{
+    vec3 q = v3_madd(p, d, u);
+    double rxz = sqrt(q.x * q.x + q.z * q.z);
+    /* Outward normal: from the nearest point of the core circle */
+    c->n = rxz > 0 ? v3(q.x - R * q.x / rxz, q.y, q.z - R * q.z / rxz)
+                   : v3(0, q.y, 0);
+    c->t = (s + u) / dl;
+    c->q = q;
+    c->rxz = rxz;
+    c->R = R;
+}
+
+iris_vec2 geom_torus_uv(const struct geom_torus_cross *c)
+{
+    double uu = atan2(c->q.z, c->q.x) / (2 * M_PI);
+    double vv = atan2(c->q.y, c->rxz - c->R) / (2 * M_PI);
+    uu = uu < 0 ? uu + 1 : uu;
+    vv = vv < 0 ? vv + 1 : vv;
+    /* isect_push()'s rule for a uv that is not finite */
+    iris_vec2 uv = { isfinite(uu) ? uu : 0, isfinite(vv) ? vv : 0 };
+    return uv;
+}
+
+int geom_torus_first(const iris_object *o, vec3 ro, vec3 rd, double t0,
+                     double t1, struct geom_torus_cross *c)
+{
+    double R = o->u.torus.major, r = o->u.torus.minor;
+    double dl = v3_len(rd);
+    if (!(dl > 0))
+        return 0;
+    vec3 d = v3_scale(rd, 1.0 / dl);
+    double s, u[4];
+    vec3 p;
+    if (torus_roots(R, r, ro, d, t0 * dl, t1 * dl, &s, &p, u, 1) == 0)
+        return 0;
+    torus_cross(R, p, d, s, dl, u[0], c);
+    /* isect_push() would drop this crossing: the caller must see the
+    ** others */
+    if (!isfinite(c->t) || !isfinite(c->n.x) || !isfinite(c->n.y) ||
+        !isfinite(c->n.z) || (c->n.x == 0 && c->n.y == 0 && c->n.z == 0))
+        return -1;
+    return 1;
 }
 
 void geom_torus_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
@@ -98,14 +159,9 @@ void geom_torus_hits(const iris_object *o, vec3 ro, vec3 rd, double t0,
     vec3 p;
     int n = geom_torus_roots(R, r, ro, d, t0 * dl, t1 * dl, &s, &p, u);
     for (int i = 0; i < n; i++) {
-        vec3 q = v3_madd(p, d, u[i]);
-        double rxz = sqrt(q.x * q.x + q.z * q.z);
-        /* Outward normal: from the nearest point of the core circle */
-        vec3 nn = rxz > 0 ? v3(q.x - R * q.x / rxz, q.y, q.z - R * q.z / rxz)
-                          : v3(0, q.y, 0);
-        double uu = atan2(q.z, q.x) / (2 * M_PI);
-        double vv = atan2(q.y, rxz - R) / (2 * M_PI);
-        isect_push(out, (s + u[i]) / dl, nn, uu < 0 ? uu + 1 : uu,
-                   vv < 0 ? vv + 1 : vv);
+        struct geom_torus_cross c;
+        torus_cross(R, p, d, s, dl, u[i], &c);
+        iris_vec2 uv = geom_torus_uv(&c);
+        isect_push(out, c.t, c.n, uv.u, uv.v);
     }
 }

@@ -24,6 +24,12 @@
 static iris_texture tex_b;
 static iris_interior glass;
 
+/* A texture that reads a hit's uv (a uv_mapping pattern): the fast paths
+** compute uv only for such textures (accel.c texture_reads_uv). */
+static iris_pigment uv_pig = { .pattern = { .kind = IRIS_PAT_CHECKER,
+                                            .uv_mapping = true } };
+static iris_texture uv_tex = { .pigment = &uv_pig };
+
 static void scene_free(iris_scene *sc)
 {
     arena_destroy(sc->arena);
@@ -1234,8 +1240,9 @@ static void test_fast_paths(void **state)
     scene_free(one);
 
     iris_scene *uvs = scene_new();
-    add(uvs, ellipsoid(uvs, v3(0, 0, 0), 1, v3(2, 2, 2), v3(0, 0, 0),
-                       v3(0, 1, 0)));
+    iris_object *us = add(uvs, ellipsoid(uvs, v3(0, 0, 0), 1, v3(2, 2, 2),
+                                         v3(0, 0, 0), v3(0, 1, 0)));
+    us->texture = &uv_tex;
     struct accel *au = build(uvs);
     struct hit h;
     assert_true(shoot(au, v3(10, 1, 0), v3(-1, 0, 0), &h));
@@ -1245,25 +1252,52 @@ static void test_fast_paths(void **state)
     accel_destroy(au);
     scene_free(uvs);
 
-    /* The uv is computed only where the texture may read it: a plain
-    ** pigment never does (uv stays 0), a checker pigment may (POV-Ray's
-    ** uv again: +x on the equator is (0, 1/2)) */
-    static iris_pigment plain_pig, checker_pig;
-    static iris_texture plain_tex, checker_tex;
+    /* The uv is computed only where the texture may read it, that is
+    ** where a pattern it reaches has uv_mapping: a plain pigment never
+    ** does (uv stays 0), nor a checker without uv_mapping; a uv_mapped
+    ** checker does (POV-Ray's uv again: +x on the equator is (0, 1/2)),
+    ** and so does one inside a pigment_map entry, or in a normal_map
+    ** entry of a later layer */
+    static iris_pigment plain_pig, checker_pig, xyz_pig, map_pig;
+    static iris_texture plain_tex, checker_tex, xyz_tex, map_tex, layer_tex;
+    static iris_normal bumps_n, nmap_n;
+    static iris_map_entry map_e[2], nmap_e[1];
     checker_pig.pattern.kind = IRIS_PAT_CHECKER;
     checker_pig.pattern.uv_mapping = true;
+    xyz_pig.pattern.kind = IRIS_PAT_CHECKER;
+    map_pig.pattern.kind = IRIS_PAT_GRADIENT;
+    map_pig.is_pigment_map = true;
+    map_pig.n_entries = 2;
+    map_pig.entries = map_e;
+    map_e[0].pigment = &xyz_pig;
+    map_e[1].pigment = &checker_pig;
+    bumps_n.pattern.kind = IRIS_PAT_GRADIENT;
+    bumps_n.pattern.uv_mapping = true;
+    nmap_n.pattern.kind = IRIS_PAT_GRADIENT;
+    nmap_n.n_entries = 1;
+    nmap_n.entries = nmap_e;
+    nmap_e[0].normal = &bumps_n;
     plain_tex.pigment = &plain_pig;
     checker_tex.pigment = &checker_pig;
-    for (int k = 0; k < 2; k++) {
+    xyz_tex.pigment = &xyz_pig;
+    map_tex.pigment = &map_pig;
+    layer_tex.pigment = &xyz_pig;
+    layer_tex.next = &xyz_tex;
+    const iris_texture *texs[5] = { &plain_tex, &checker_tex, &xyz_tex,
+                                    &map_tex, &layer_tex };
+    const bool reads[5] = { false, true, false, true, true };
+    for (int k = 0; k < 5; k++) {
+        if (k == 4)
+            xyz_tex.normal = &nmap_n; /* the layer below: a normal_map */
         iris_scene *ps = scene_new();
         iris_object *s = add(ps, ellipsoid(ps, v3(0, 0, 0), 1, v3(2, 2, 2),
                                            v3(0, 0, 0), v3(0, 1, 0)));
-        s->texture = k ? &checker_tex : &plain_tex;
+        s->texture = (iris_texture *)texs[k];
         struct accel *ap = build(ps);
         assert_true(shoot(ap, v3(10, 1, 0), v3(-1, 0, 0), &h));
         assert_near(h.t, 8, 1e-12);
         assert_ptr_equal(h.texture, s->texture);
-        if (k) {
+        if (reads[k]) {
             assert_near(h.uv.u, 0, 1e-12);
             assert_near(h.uv.v, 0.5, 1e-12);
         } else {
@@ -1521,6 +1555,7 @@ static void test_cone_fast_path(void **state)
                     o->u.cone.cap_radius = i % 3 == 2 ? 0 : r1;
                 }
                 o->inverse = i == 1;
+                o->texture = &uv_tex; /* the side's uv is compared */
                 xform x;
                 xf_scale(&x, v3(0.5 + rng_uniform(&g), 0.5 + rng_uniform(&g),
                                 0.5 + rng_uniform(&g)));
@@ -1596,6 +1631,114 @@ static void test_cone_fast_path(void **state)
     }
 }
 
+/*
+** Tori without clipping take node.c's torus_nearest(), which solves for
+** the first root of the quartic only; it must give the general path's
+** crossing (every root, geom_torus_hits' list, then shape_hits' world
+** normals) to the bit: t, normal and uv. As in test_cone_fast_path, the
+** same random tori (one inverted, one whose minor radius exceeds its
+** major, a spindle) are built plain and clipped by a sphere holding them
+** all, and rays are aimed from afar at points on their surfaces, through
+** the linear search (6 tori) and Embree (12). Their texture reads uv
+** (uv_tex), except one torus's plain texture, which reads none: its
+** hits on the fast path must carry uv 0 (its two atan2 are skipped),
+** and are left out of the uv comparison.
+*/
+static void test_torus_fast_path(void **state)
+{
+    (void)state;
+    static iris_pigment plain_pig;
+    static iris_texture plain_tex = { .pigment = &plain_pig };
+    const int counts[2] = { 6, 12 };
+    for (int k = 0; k < 2; k++) {
+        iris_scene *sc[2];
+        iris_object *sh[2][12];
+        rng g;
+        for (int v = 0; v < 2; v++) {
+            sc[v] = scene_new();
+            rng_seed(&g, 31, (uint64_t)k, 0); /* the same tori twice */
+            for (int i = 0; i < counts[k]; i++) {
+                iris_object *o = obj(sc[v], IRIS_OBJ_TORUS);
+                o->u.torus.major = 0.6 + rng_uniform(&g);
+                o->u.torus.minor = i == 4 ? o->u.torus.major * 1.2
+                                          : 0.1 + 0.4 * rng_uniform(&g);
+                o->inverse = i == 1;
+                /* uv compared; one torus's plain texture reads none */
+                o->texture = i == 2 ? &plain_tex : &uv_tex;
+                xform x;
+                xf_scale(&x, v3(0.5 + rng_uniform(&g), 0.5 + rng_uniform(&g),
+                                0.5 + rng_uniform(&g)));
+                apply(o, &x);
+                xf_rotate(&x, v3(360 * rng_uniform(&g), 360 * rng_uniform(&g),
+                                 360 * rng_uniform(&g)));
+                apply(o, &x);
+                xf_translate(&x, v3(12 * rng_uniform(&g) - 6,
+                                    12 * rng_uniform(&g) - 6,
+                                    12 * rng_uniform(&g) - 6));
+                apply(o, &x);
+                if (v == 1) {
+                    o->n_clipped_by = 1;
+                    o->clipped_by =
+                        arena_array(sc[v]->arena, 1, sizeof(iris_object *));
+                    o->clipped_by[0] = sphere(sc[v], v3(0, 0, 0), 100);
+                }
+                sh[v][i] = add(sc[v], o);
+            }
+        }
+        struct accel *a[2] = { build(sc[0]), build(sc[1]) };
+        int n_hits = 0, n_uv = 0, n_plain = 0;
+        for (int r = 0; r < 4000; r++) {
+            /* a point on a random torus, in its own frame */
+            int i = (int)(rng_u32(&g) % (uint32_t)counts[k]);
+            const iris_object *o = sh[0][i];
+            double R = o->u.torus.major, rm = o->u.torus.minor;
+            double pu = 2 * M_PI * rng_uniform(&g),
+                   pv = 2 * M_PI * rng_uniform(&g);
+            vec3 pl = v3((R + rm * cos(pv)) * cos(pu), rm * sin(pv),
+                         (R + rm * cos(pv)) * sin(pu));
+            vec3 p = xf_point(&o->transform, pl);
+            vec3 org = v3(40 * rng_uniform(&g) - 20, 40 * rng_uniform(&g) - 20,
+                          40 * rng_uniform(&g) - 20);
+            vec3 d = v3_norm(v3_sub(p, org));
+            ray ry = { org, d };
+            struct hit h[2];
+            bool got[2];
+            for (int v = 0; v < 2; v++)
+                got[v] = accel_intersect(a[v], &ry, accel_epsilon(a[v]),
+                                         INFINITY, 0, &h[v]);
+            assert_int_equal(got[0], got[1]);
+            if (!got[0])
+                continue;
+            n_hits++;
+            int j = 0;
+            while (j < counts[k] && sh[0][j] != h[0].obj)
+                j++;
+            assert_true(j < counts[k]);
+            assert_ptr_equal(h[1].obj, sh[1][j]);
+            assert_true(h[0].t == h[1].t);
+            assert_true(h[0].n.x == h[1].n.x && h[0].n.y == h[1].n.y &&
+                        h[0].n.z == h[1].n.z);
+            assert_near(v3_len(h[0].n), 1, 1e-12);
+            if (j == 2) { /* plain texture: no uv computed */
+                assert_true(h[0].uv.u == 0 && h[0].uv.v == 0);
+                n_plain++;
+                continue;
+            }
+            assert_true(h[0].uv.u == h[1].uv.u && h[0].uv.v == h[1].uv.v);
+            if (h[0].uv.u != 0 || h[0].uv.v != 0)
+                n_uv++;
+        }
+        /* most rays hit, with a uv of their own, some on the plain one */
+        assert_true(n_hits > 3000);
+        assert_true(n_uv > 2000);
+        assert_true(n_plain > 100);
+        for (int v = 0; v < 2; v++) {
+            accel_destroy(a[v]);
+            scene_free(sc[v]);
+        }
+    }
+}
+
 int main(void)
 {
     glass.ior = 1.5;
@@ -1623,6 +1766,7 @@ int main(void)
         cmocka_unit_test(test_fast_paths),
         cmocka_unit_test(test_box_fast_path),
         cmocka_unit_test(test_cone_fast_path),
+        cmocka_unit_test(test_torus_fast_path),
         cmocka_unit_test(test_csg_polytope),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

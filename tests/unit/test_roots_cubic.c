@@ -463,6 +463,70 @@ static void test_closed_random(void **state)
     assert_true(compared >= total * 9 / 10);
 }
 
+
+/*
+** roots_first_in_interval() (the torus's nearest crossing, accel/node.c)
+** must store exactly the first roots roots_in_interval() stores: the
+** same values to the bit, for every cap. Quartics from known roots (2 or
+** 4 in the interval, one pair nearly double), random quartics, and
+** degree-8 polynomials (Bernstein isolation) on random intervals; the
+** known quartics must report their roots in order, so the comparison is
+** not of two empty lists.
+*/
+static void test_first_roots(void **state)
+{
+    (void)state;
+    uint64_t s = 0x9e3779b97f4a7c15ULL;
+    int n_nonempty = 0;
+    for (int it = 0; it < 3000; it++) {
+        int deg = it % 3 == 2 ? 8 : 4;
+        double c[9], r[8];
+        if (it % 3 == 0) {
+            /* (t - r0)(t - r1)(t - r2)(t - r3), r ascending in (-3, 3) */
+            for (int k = 0; k < 4; k++)
+                r[k] = -3 + 6 * unit_rand(&s);
+            if (it % 7 == 0)
+                r[1] = r[0] + 1e-7;          /* a nearly double pair */
+            for (int i = 1; i < 4; i++)
+                for (int j = i; j > 0 && r[j] < r[j - 1]; j--) {
+                    double t = r[j];
+                    r[j] = r[j - 1];
+                    r[j - 1] = t;
+                }
+            c[0] = 1;
+            for (int i = 1; i <= 4; i++)
+                c[i] = 0;
+            for (int k = 0; k < 4; k++)      /* multiply by (t - r[k]) */
+                for (int i = k + 1; i >= 0; i--)
+                    c[i] = (i > 0 ? c[i - 1] : 0) - r[k] * c[i];
+        } else {
+            for (int i = 0; i <= deg; i++)
+                c[i] = 2 * unit_rand(&s) - 1;
+        }
+        double lo = -4 * unit_rand(&s), hi = 4 * unit_rand(&s);
+        double all[8];
+        int n = roots_in_interval(c, deg, lo, hi, all);
+        if (it % 3 == 0) {
+            int want = 0;
+            for (int k = 0; k < 4; k++)
+                if (r[k] > lo + 1e-6 && r[k] < hi - 1e-6 &&
+                    !(it % 7 == 0 && k < 2))
+                    want++;
+            assert_true(n >= want);
+        }
+        if (n > 0)
+            n_nonempty++;
+        for (int cap = 1; cap <= deg; cap++) {
+            double first[8];
+            int m = roots_first_in_interval(c, deg, lo, hi, first, cap);
+            assert_int_equal(m, n < cap ? n : cap);
+            for (int i = 0; i < m; i++)
+                assert_true(first[i] == all[i]);
+        }
+    }
+    assert_true(n_nonempty > 1000);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -472,6 +536,7 @@ int main(void)
         cmocka_unit_test(test_closed_known),
         cmocka_unit_test(test_closed_near_double),
         cmocka_unit_test(test_closed_random),
+        cmocka_unit_test(test_first_roots),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
