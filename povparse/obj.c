@@ -1979,15 +1979,19 @@ static void finalize(pp_state *ps, iris_object *o, iris_texture *tex,
         o->no_reflection |= parent->no_reflection;
         o->double_illuminate |= parent->double_illuminate;
         o->hollow |= parent->hollow;
-        if (parent->photon_target && !o->photon_target) {
+        /* POV-Ray's Post_Process: a target's children are targets with
+        ** its spacing, their own 'target S' overridden (each child of a
+        ** split union is shot at with it: src/photon/targets.c); the
+        ** parent's reflection/refraction on or off overrides theirs */
+        if (parent->photon_target) {
             o->photon_target = true;
             o->photon_density = parent->photon_density;
             o->photon_target_loc = parent->photon_target_loc;
         }
         o->photon_pass_through |= parent->photon_pass_through;
-        if (o->photon_refraction == IRIS_UNSET)
+        if (parent->photon_refraction != IRIS_UNSET)
             o->photon_refraction = parent->photon_refraction;
-        if (o->photon_reflection == IRIS_UNSET)
+        if (parent->photon_reflection != IRIS_UNSET)
             o->photon_reflection = parent->photon_reflection;
         if (!parent->photon_collect)
             o->photon_collect = false;

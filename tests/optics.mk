@@ -4,5 +4,6 @@
 check_PROGRAMS += tests/optics/imgprobe
 tests_optics_imgprobe_SOURCES = tests/optics/imgprobe.c
 tests_optics_imgprobe_LDADD = libiris_core.la $(IRIS_LIBS)
-TESTS += tests/optics/optics.sh
-EXTRA_DIST += tests/optics/optics.sh tests/optics/optics.awk tests/optics/scenes
+TESTS += tests/optics/optics.sh tests/optics/targets.sh
+EXTRA_DIST += tests/optics/optics.sh tests/optics/optics.awk tests/optics/scenes \
+	tests/optics/targets.sh

@@ -7,4 +7,5 @@ libiris_core_la_SOURCES += %reldir%/photon.h %reldir%/photon.c \
 	%reldir%/membudget.c %reldir%/membudget.h \
 	%reldir%/fastpath.c %reldir%/fastpath.h \
 	%reldir%/pmedia.c %reldir%/pmedia.h \
-	%reldir%/wavefront.c %reldir%/wavefront.h %reldir%/wf_kernel.h
+	%reldir%/wavefront.c %reldir%/wavefront.h %reldir%/wf_kernel.h \
+	%reldir%/targets.c %reldir%/targets.h

@@ -3,7 +3,8 @@
 ** shoot.c: emitting photons as POV-Ray 3.7 does, and building the map.
 **
 ** DESIGN. Every light x target pair that the shooting rule allows (a
-** "combo") aims at the target's bounding sphere (centre of the world
+** "combo"; the targets found as POV-Ray finds them, also inside CSG:
+** targets.c) aims at the target's bounding sphere (centre of the world
 ** bounding box, radius half its diagonal) in rings of constant polar angle
 ** theta about the light->centre axis, dtheta = atan(spacing·density/dist)
 ** apart, each ring holding n_phi = round(2·pi·sin(theta)/dtheta) photons
@@ -130,6 +131,9 @@ struct shoot {
     const struct photon_options *opts;
     struct combo *combos;
     int n_combos;
+    struct ptargets targets;   /* the objects shot at (targets.c) */
+    struct ptargets *leaves;   /* leaves[i]: targets.o[i]'s, for
+                                  ptrace_in_target() */
     struct ring *rings;
     int64_t n_rings, n_photons;
     double jitter;
@@ -263,11 +267,33 @@ static bool scene_none_dispersive(const iris_scene *sc)
     return true;
 }
 
-/* Collects the combos and their bounding spheres. */
+/* The targets of the scene (POV-Ray's, targets.c) and the leaves of
+** those inside a CSG. */
+static enum iris_status find_targets(struct shoot *s)
+{
+    enum iris_status rc = ptargets_find(s->scene, &s->targets);
+    if (rc != IRIS_OK || s->targets.n == 0)
+        return rc;
+    s->leaves = iris_calloc((size_t)s->targets.n, sizeof *s->leaves);
+    if (!s->leaves)
+        return IRIS_ENOMEM;
+    /* a first hit on a top-level target is known by its top-level
+    ** object (ptrace_in_target): no leaves needed */
+    for (int i = 0; i < s->targets.n && rc == IRIS_OK; i++)
+        if (!s->targets.top[i])
+            rc = ptargets_leaves(s->targets.o[i], &s->leaves[i]);
+    return rc;
+}
+
+/* Collects the combos and their bounding spheres: every light x target
+** pair in POV-Ray's order (lights, then targets, targets.c). */
 static enum iris_status find_combos(struct shoot *s)
 {
     const iris_scene *sc = s->scene;
-    int cap = sc->n_lights * sc->n_objects;
+    enum iris_status rc = find_targets(s);
+    if (rc != IRIS_OK)
+        return rc;
+    int cap = sc->n_lights * s->targets.n;
     if (cap <= 0)
         return IRIS_OK;
     s->combos = iris_calloc((size_t)cap, sizeof *s->combos);
@@ -281,8 +307,8 @@ static enum iris_status find_combos(struct shoot *s)
     bool none_dispersive = scene_none_dispersive(sc);
     for (int li = 0; li < sc->n_lights; li++) {
         const iris_light *l = sc->lights[li];
-        for (int oi = 0; oi < sc->n_objects; oi++) {
-            const iris_object *t = sc->objects[oi];
+        for (int ti = 0; ti < s->targets.n; ti++) {
+            const iris_object *t = s->targets.o[ti];
             vec3 lo, hi;
             if (!pmap_shoots(l, t) ||
                 !s->w->object_bounds(s->w->ctx, t, &lo, &hi))
@@ -290,6 +316,8 @@ static enum iris_status find_combos(struct shoot *s)
             struct combo *c = &s->combos[s->n_combos++];
             c->tc.light = l;
             c->tc.target = t;
+            c->tc.target_leaves = s->leaves[ti].o;
+            c->tc.n_target_leaves = s->leaves[ti].n;
             c->tc.parallel = light_parallel(l);
             c->tc.fade_distance = l->fade_distance;
             c->tc.fade_power = l->fade_power;
@@ -1027,6 +1055,11 @@ static void shoot_fini(struct shoot *s, int64_t n_batches)
     iris_free(s->outs);
     iris_free(s->rings);
     iris_free(s->combos);
+    for (int i = 0; s->leaves && i < s->targets.n; i++)
+        iris_free(s->leaves[i].o);
+    iris_free(s->leaves);
+    iris_free(s->targets.o);
+    iris_free(s->targets.top);
 }
 
 enum iris_status pmap_concat(struct ptrace_out *outs, int64_t n,

@@ -40,8 +40,9 @@
 ** rays" for this purpose), but NOT through no_image objects, although
 ** POV-Ray 3.7 lets them pass (photons are launched as primary rays, so
 ** IsImageRay() is true for them: POV-Ray/povray#373, a bug). The first
-** hit must be the target (or a pass_through object); photons are stored
-** only after at least one bounce, on collecting surfaces with diffuse > 0.
+** surface hit that is not pass_through must be in the target
+** (ptrace_in_target); photons are stored only on surfaces met after it
+** (and in media beyond it), on collecting surfaces with diffuse > 0.
 */
 #include "config.h"
 
@@ -742,6 +743,12 @@ void ptrace_photon_sibs(const struct pmap_world *w,
     double tmin = accel_origin_epsilon(o, w->epsilon);
     int max_level = c->global ? PTRACE_GLOBAL_MAX_LEVEL : c->max_level;
     int n_diffuse = 0;         /* global: diffuse bounces so far */
+    /* a caustic photon has met its target: the first surface it hit that
+    ** is not pass_through (POV-Ray's passThruPrev). Until then every hit
+    ** must be the target or pass_through, and nothing is stored, also in
+    ** media (before, a photon through a pass_through cloud that missed
+    ** the target was stored on the floor beyond, as caustic light) */
+    bool met = c->global;
     bool landed = false;       /* global: D^2 and fade applied */
     struct ior_memo im = { NULL, 1.0 };
     for (int level = 1; level <= max_level && sib_alive(s); level++) {
@@ -754,7 +761,8 @@ void ptrace_photon_sibs(const struct pmap_world *w,
         /* Media on the segment just crossed: extinction, media photons
         ** (pmedia.h; nothing when the scene has no media) */
         if (c->media.scene)
-            pmedia_segment(c, stack, n_stack, o, d, h.t, depth, level, s,
+            pmedia_segment(c, stack, n_stack, o, d, h.t, depth,
+                           met ? level : 1, s,
                            &chroma, r, out);
         depth += h.t;
         /* Absorption in the medium just crossed */
@@ -774,9 +782,12 @@ void ptrace_photon_sibs(const struct pmap_world *w,
         }
         const iris_object *obj = h.obj;
         /* The first surface must belong to the target */
-        if (!c->global && level == 1 && h.top != c->target &&
-            obj != c->target && !obj->photon_pass_through)
+        if (!met && !obj->photon_pass_through &&
+            !ptrace_in_target(c, obj, h.top))
             return;
+        /* stored here only when the target was met before this hit */
+        bool stores = met && !c->global;
+        met = met || !obj->photon_pass_through;
         bool entering = v3_dot(d, h.n) < 0.0;
         vec3 nf = entering ? h.n : v3_neg(h.n); /* facing the photon */
         /* a dispersive medium on either side: n(lambda) decides the path
@@ -810,7 +821,7 @@ void ptrace_photon_sibs(const struct pmap_world *w,
             }
         }
         /* Store caustic photons (after at least one bounce) */
-        if (!c->global && level > 1 && obj->photon_collect && diffusive) {
+        if (stores && obj->photon_collect && diffusive) {
             deposit_sibs(out, h.p, s, landing_factor(c, depth), chroma,
                          v3_neg(d));
             if (out->failed)

@@ -10,6 +10,7 @@
 
 #include "photon/pmap.h"
 #include "photon/pmedia.h"
+#include "photon/targets.h"
 #include "util/rng.h"
 
 #define PTRACE_MAX_STACK 16
@@ -18,6 +19,12 @@
 struct ptrace_combo {
     const iris_light *light;
     const iris_object *target;
+    /* the target's leaves when it is a CSG that is not one of the
+    ** scene's top-level objects (a child of a split union, or of a CSG
+    ** that is no target: targets.c), sorted for ptrace_in_target();
+    ** else NULL, 0 */
+    const iris_object *const *target_leaves;
+    int n_target_leaves;
     bool parallel;             /* no D^2 in the stored power */
     double fade_distance, fade_power; /* the light's fade */
     int max_level;             /* photon max_trace_level */
@@ -41,6 +48,20 @@ struct ptrace_combo {
     int n_stack;               /* interiors containing the light */
     const iris_object *stack[PTRACE_MAX_STACK];
 };
+
+/*
+** Whether a first hit on leaf 'obj' of top-level object 'top' is on the
+** pair's target, as POV-Ray's Trace::IsObjectInCSG asks (targets.c): the
+** target is 'top' itself, or 'obj', or a CSG holding 'obj'.
+*/
+static inline bool ptrace_in_target(const struct ptrace_combo *c,
+                                    const iris_object *obj,
+                                    const iris_object *top)
+{
+    return top == c->target || obj == c->target ||
+           (c->n_target_leaves > 0 &&
+            ptargets_has(c->target_leaves, c->n_target_leaves, obj));
+}
 
 /*
 ** What a surface whose texture is one colour everywhere (solid pigments,

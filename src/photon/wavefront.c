@@ -865,6 +865,16 @@ static bool build_pair(const iris_scene *sc, const struct pmap_world *w,
         *why = "light fade";
         return false;
     }
+    /* the lanes know the scene's top-level objects, and a first hit is
+    ** on the target when it is on its top-level object: not so for a
+    ** target inside a CSG (targets.c), left to trace.c */
+    bool top_level = false;
+    for (int i = 0; i < sc->n_objects && !top_level; i++)
+        top_level = sc->objects[i] == c->target;
+    if (!top_level) {
+        *why = "a target inside a CSG";
+        return false;
+    }
     const iris_light *l = c->light;
     if (L->atten != WF_ATTEN_ONE && l->tightness > 0.0) {
         *why = "light tightness";
