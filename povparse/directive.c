@@ -964,6 +964,9 @@ void pp_default_block(pp_state *ps)
     }
 }
 
+static void run_directive(pp_state *ps, pp_token kw, pp_token at,
+                          const pp_token *hash);
+
 void pp_directive(pp_state *ps, const pp_token *hash)
 {
     pp_token kw;
@@ -973,6 +976,26 @@ void pp_directive(pp_state *ps, const pp_token *hash)
     at.len = kw.off + kw.len - hash->off;
     if (kw.file != hash->file)
         at = kw;
+    run_directive(ps, kw, at, hash);
+}
+
+/* 'declare', 'include' and 'version' written without their '#' among a
+** scene's items: POV-Ray's Parse_Frame runs them, with a warning (old
+** scenes, POV-Ray 2's syntax). */
+bool pp_bare_directive(pp_state *ps, const pp_token *kw)
+{
+    if (kw->kind != T_DECLARE && kw->kind != T_INCLUDE &&
+        kw->kind != T_VERSION)
+        return false;
+    pp_warning(ps, kw, "should have '#' before '%s'",
+               lex_keyword_name(kw->kind));
+    run_directive(ps, *kw, *kw, kw);
+    return true;
+}
+
+static void run_directive(pp_state *ps, pp_token kw, pp_token at,
+                          const pp_token *hash)
+{
     switch (kw.kind) {
     case T_DECLARE: do_declare(ps, false); return;
     case T_LOCAL: do_declare(ps, true); return;

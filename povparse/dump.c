@@ -150,6 +150,8 @@ static void pigment(FILE *o, int d, const iris_pigment *p)
     fputc('\n', o);
     if (p->pattern.kind != IRIS_PAT_NONE)
         pattern(o, d + 1, &p->pattern);
+    if (p->entry_xf)
+        xform(o, d + 1, "entry transform", p->entry_xf);
     entries(o, d + 1, p->entries, p->n_entries, p->is_pigment_map ? 1 : 0);
 }
 

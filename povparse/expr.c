@@ -495,7 +495,14 @@ static pp_value colour_body(pp_state *ps)
                 for (int i = 0; i < n; i++)
                     c.v[i] = e.v[0];
             } else {
-                for (int i = 0; i < n && i < e.dim; i++)
+                /* POV-Ray's Parse_Colour takes every term the expression
+                ** has, with a warning: 'rgb <0.1, 0.1, 0.1, 1>' filters
+                ** (2-complex's domino floor) */
+                if (e.dim != n)
+                    pp_warning(ps, &at, "suspicious expression after %s: "
+                               "%d components, not %d", lex_keyword_name(k),
+                               e.dim, n);
+                for (int i = 0; i < e.dim && i < 5; i++)
                     c.v[i] = e.v[i];
             }
             if (terms == -4) {
@@ -1458,7 +1465,21 @@ double pp_float(pp_state *ps)
     return finite_float(ps, &at, &v);
 }
 
+static iris_vec3 vector_value(pp_state *ps, double bound);
+
 iris_vec3 pp_vector(pp_state *ps)
+{
+    return vector_value(ps, 0);
+}
+
+iris_vec3 pp_vector_clamped(pp_state *ps, double bound)
+{
+    return vector_value(ps, bound);
+}
+
+/* A vector; with 'bound' > 0 an infinite component becomes +-bound (a
+** NaN is still refused). */
+static iris_vec3 vector_value(pp_state *ps, double bound)
 {
     pp_next(ps);
     pp_token at = ps->tok;
@@ -1473,6 +1494,9 @@ iris_vec3 pp_vector(pp_state *ps)
     if (v.dim == 1 && v.leftover)
         v.dim = 3;
     pp_value_promote(&v, 3);
+    for (int i = 0; bound > 0 && i < 3; i++)
+        if (isinf(v.v[i]))
+            v.v[i] = v.v[i] > 0 ? bound : -bound;
     need_finite(ps, &at, &v);
     iris_vec3 r = { v.v[0], v.v[1], v.v[2] };
     return r;

@@ -120,6 +120,45 @@ static int args(fnc *c)
     return n;
 }
 
+/*
+** select '(' expr ',' expr ',' expr [ ',' expr ] ')' ; the current token
+** is 'select'. select(a, b, c[, d]) is b for a < 0, else c (three
+** arguments), or c for a = 0 and d for a > 0 (four). Only the arm chosen
+** is evaluated, as POV-Ray compiles it to branches: users' functions
+** (t-o-k's complex functions) call costly functions in every arm.
+*/
+static void select_arms(fnc *c, const pp_token *at)
+{
+    pp_state *ps = c->ps;
+    pp_expect(ps, T_LPAREN, "'('");
+    cexpr(c);
+    int br = c->n;
+    emit(c, IRIS_FN_BRANCH, 0, 0, 0, -1);
+    int d0 = c->depth;
+    if (!pp_accept(ps, T_COMMA))
+        pp_error(ps, at, "select takes 3 or 4 arguments");
+    cexpr(c);                              /* a < 0 */
+    int jump1 = c->n;
+    emit(c, IRIS_FN_JUMP, 0, 0, 0, 0);
+    if (!pp_accept(ps, T_COMMA))
+        pp_error(ps, at, "select takes 3 or 4 arguments");
+    c->code[br].arg = c->code[br].nargs = c->n;
+    c->depth = d0;
+    cexpr(c);                              /* a = 0 (and a > 0 of three) */
+    if (pp_accept(ps, T_COMMA)) {
+        int jump2 = c->n;
+        emit(c, IRIS_FN_JUMP, 0, 0, 0, 0);
+        c->code[br].nargs = c->n;
+        c->depth = d0;
+        cexpr(c);                          /* a > 0 */
+        c->code[jump2].arg = c->n;
+    }
+    c->code[jump1].arg = c->n;
+    if (pp_accept(ps, T_COMMA))
+        pp_error(ps, at, "select takes 3 or 4 arguments");
+    pp_expect(ps, T_RPAREN, "')'");
+}
+
 /* The arguments internal(N) takes, N = 0..78 (x, y, z and the
 ** parameters of functions.inc's f_* names): measured with POV-Ray 3.7.0,
 ** which accepts a call of function { internal(N) } with exactly this many
@@ -302,13 +341,9 @@ static void cfactor(fnc *c)
         pp_leave(ps);
         pp_expect(ps, T_RPAREN, "')'");
         return;
-    case T_SELECT: {
-        int n = args(c);
-        if (n != 3 && n != 4)
-            pp_error(ps, &at, "select takes 3 or 4 arguments");
-        emit(c, n == 3 ? IRIS_FN_SELECT3 : IRIS_FN_SELECT4, 0, n, 0, 1 - n);
+    case T_SELECT:
+        select_arms(c, &at);
         return;
-    }
     case T_INTERNAL: {
         pp_expect(ps, T_LPAREN, "'('");
         int n = pp_int(ps);
@@ -496,15 +531,24 @@ static void cor(fnc *c)
     }
 }
 
+/* expr: or [ '?' expr ':' expr ] ; the arm not chosen is jumped over,
+** as in POV-Ray's compiled functions. */
 static void cexpr(fnc *c)
 {
     int op;
     cor(c);
     if (op_next(c, T_QUESTION, T_QUESTION, &op)) {
+        int br = c->n;
+        emit(c, IRIS_FN_BRANCH_ZERO, 0, 0, 0, -1);
+        int d0 = c->depth;
         cexpr(c);
         pp_expect(c->ps, T_COLON, "':'");
+        int jump = c->n;
+        emit(c, IRIS_FN_JUMP, 0, 0, 0, 0);
+        c->code[br].arg = c->n;
+        c->depth = d0;
         cexpr(c);
-        emit(c, IRIS_FN_COND, 0, 3, 0, -2);
+        c->code[jump].arg = c->n;
     }
 }
 

@@ -246,6 +246,10 @@ uint32_t lex_scan(pp_state *ps, uint32_t f, uint32_t pos, pp_token *t)
             q++;
         t->len = q - p;
         int kw = kw_find(ps, s + p, q - p);
+        /* 'tau' is a word of POV-Ray 3.8: 3.7 scenes declare their own
+        ** (#declare tau = ...; aelnonym's camlight.inc) */
+        if (kw == T_TAU && !(ps->version_set && ps->version >= 3.8))
+            kw = 0;
         t->kind = kw ? kw : T_IDENT;
         return q;
     }

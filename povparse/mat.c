@@ -480,10 +480,46 @@ static void function_image(pp_state *ps, iris_image_ref *img)
     img->pixels_h = h;
 }
 
+const char *const *pp_image_exts(int kind)
+{
+    /* POV-Ray 3.7's gPOV_File_Extensions (fileutil.cpp) */
+#define EXTS(n, ...) static const char *const n[] = { __VA_ARGS__, NULL }
+    EXTS(tga, ".tga", ".TGA");
+    EXTS(png, ".png", ".PNG");
+    EXTS(ppm, ".ppm", ".PPM");
+    EXTS(pgm, ".pgm", ".PGM");
+    EXTS(gif, ".gif", ".GIF");
+    EXTS(iff, ".iff", ".IFF");
+    EXTS(jpeg, ".jpg", ".JPG", ".jpeg", ".JPEG");
+    EXTS(tiff, ".tif", ".TIF", ".tiff", ".TIFF");
+    EXTS(bmp, ".bmp", ".BMP");
+    EXTS(exr, ".exr", ".EXR");
+    EXTS(hdr, ".hdr", ".HDR");
+#undef EXTS
+    switch (kind) {
+    case T_TGA: return tga;
+    case T_PNG: return png;
+    case T_PPM: return ppm;
+    case T_PGM: return pgm;
+    case T_GIF: return gif;
+    case T_IFF: return iff;
+    case T_JPEG: return jpeg;
+    case T_TIFF: return tiff;
+    case T_BMP: return bmp;
+    case T_EXR: return exr;
+    case T_HDR: return hdr;
+    default: return NULL;
+    }
+}
+
 static iris_image_ref *image_file(pp_state *ps)
 {
     iris_image_ref *img = pp_alloc(ps, sizeof *img);
+    img->as_stored = pp_image_as_stored(ps);
     pp_next(ps);
+    /* the type's extensions are tried too: 'png "linux"' reads
+    ** linux.png, as POV-Ray's FindFile does */
+    const char *const *exts = pp_image_exts(ps->tok.kind);
     if (is_image_type(ps->tok.kind))
         pp_next(ps);
     if (ps->tok.kind == T_FUNCTION) {
@@ -493,7 +529,7 @@ static iris_image_ref *image_file(pp_state *ps)
     pp_unget(ps);
     pp_token at = ps->tok;
     const char *name = pp_string(ps);
-    img->path = pp_require_file(ps, &at, name, NULL, "image file");
+    img->path = pp_require_file(ps, &at, name, exts, "image file");
     return img;
 }
 
@@ -514,7 +550,12 @@ static iris_image_ref *image_block(pp_state *ps, double *bump_size)
         case T_USE_ALPHA: img->use_alpha = true; break;
         case T_USE_COLOR: img->use_index = false; break;
         case T_USE_INDEX: img->use_index = true; break;
-        case T_GAMMA: img->gamma = pp_float(ps); break;
+        case T_GAMMA:
+            /* 'gamma srgb' (POV-Ray's Parse_Gamma): the sRGB curve, which
+            ** is how iris_image_read decodes a file without its own
+            ** gamma already (0: the file's own) */
+            img->gamma = pp_accept(ps, T_SRGB) ? 0 : pp_float(ps);
+            break;
         case T_PREMULTIPLIED: pp_bool_opt(ps); break;
         case T_BUMP_SIZE: {
             double b = pp_float(ps);
@@ -1168,6 +1209,46 @@ static iris_map_entry *entries_in_map_space(pp_state *ps,
 ** in the surface's uv space, which no transform from outside it (the
 ** texture's, the object's) moves: only its 'own' transforms, written in
 ** its body, reach it (POV-Ray's UV_MAP_PATTERN ignores the others). */
+/* Whether the pigments under 'p' (its pigment entries, theirs, ...) may
+** share one entry transform: none evaluates at the surface's uv point
+** (which no outer transform moves) or reads the world point itself
+** (slope's point_at). */
+static bool entries_shareable(const iris_pigment *p, int depth)
+{
+    if (!p->n_entries || !p->is_pigment_map)
+        return true;
+    if (depth > 64)
+        return false;
+    for (int i = 0; i < p->n_entries; i++) {
+        const iris_pigment *e = p->entries[i].pigment;
+        if (e && (e->pattern.uv_mapping || e->pattern.kind == IRIS_PAT_SLOPE ||
+                  !entries_shareable(e, depth + 1)))
+            return false;
+    }
+    return true;
+}
+
+static iris_pigment *pig_xf(pp_state *ps, const iris_pigment *p,
+                            const iris_transform *xf, bool own);
+
+/* 'p' with its entry transform given to copies of its entries, as the
+** parser did before the entries were shared: for the uv-mapped, which
+** the transform must reach in pattern space. */
+static iris_pigment *pig_flat(pp_state *ps, const iris_pigment *p)
+{
+    if (!p || !p->entry_xf)
+        return (iris_pigment *)p;
+    iris_pigment *n = pp_alloc(ps, sizeof *n);
+    *n = *p;
+    n->entry_xf = NULL;
+    n->entries = pp_alloc(ps, (size_t)n->n_entries * sizeof *n->entries);
+    memcpy(n->entries, p->entries, (size_t)n->n_entries * sizeof *n->entries);
+    for (int i = 0; i < n->n_entries; i++)
+        n->entries[i].pigment = pig_xf(ps, p->entries[i].pigment,
+                                       p->entry_xf, true);
+    return n;
+}
+
 static iris_pigment *pig_xf(pp_state *ps, const iris_pigment *p,
                             const iris_transform *xf, bool own)
 {
@@ -1176,6 +1257,28 @@ static iris_pigment *pig_xf(pp_state *ps, const iris_pigment *p,
     iris_pigment *n = pp_alloc(ps, sizeof *n);
     *n = *p;
     pattern_xf(&n->pattern, xf);
+    /*
+    ** The entries, often a deep tree shared by many pigments (a declared
+    ** pigment_map used by every object), stay shared: the transform is
+    ** kept beside them, composed after the one they have. Copying the
+    ** tree per transform made memory grow with the copies (mscharrer's
+    ** tree_of_squares_v4: 63 pigments x 5 transforms x 32768 boxes).
+    */
+    if (n->n_entries && n->is_pigment_map && !p->pattern.uv_mapping &&
+        entries_shareable(p, 0)) {
+        iris_transform *x = pp_alloc(ps, sizeof *x);
+        if (p->entry_xf)
+            xf_compose(x, p->entry_xf, xf);
+        else
+            *x = *xf;
+        n->entry_xf = x;
+        return n;
+    }
+    if (n->entry_xf) {
+        p = pig_flat(ps, p);
+        *n = *p;
+        pattern_xf(&n->pattern, xf);
+    }
     if (n->n_entries && n->is_pigment_map) {
         n->entries = pp_alloc(ps, (size_t)n->n_entries * sizeof *n->entries);
         memcpy(n->entries, p->entries, (size_t)n->n_entries * sizeof *n->entries);
@@ -1261,6 +1364,7 @@ static void set_pigment_map(pp_state *ps, iris_pigment *p, const pp_map *m,
                  "a %s", pp_kind_name(m->kind));
     p->n_entries = m->n;
     p->entries = entries_in_map_space(ps, &p->pattern, m->e, m->n, m->kind);
+    p->entry_xf = NULL;
     p->is_pigment_map = m->kind == V_PIGMENT_MAP;
 }
 
@@ -1342,6 +1446,7 @@ static void pigment_list(pp_state *ps, iris_pigment *p, int max)
     p->n_entries = n;
     p->entries = e;
     p->is_pigment_map = pigments;
+    p->entry_xf = NULL;
 }
 
 static iris_pigment *pigment_body(pp_state *ps, const iris_pigment *base,
@@ -1915,6 +2020,7 @@ static iris_pigment *pig_uv(pp_state *ps, const iris_pigment *p)
 {
     if (!p)
         return NULL;
+    p = pig_flat(ps, p);
     iris_pigment *n = pp_alloc(ps, sizeof *n);
     *n = *p;
     n->pattern.uv_mapping = true;

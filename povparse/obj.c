@@ -57,12 +57,13 @@ iris_object *pp_object_copy(pp_state *ps, const iris_object *o)
     pp_obj *po = pp_alloc(ps, sizeof *po);
     *po = *src;
     iris_object *n = &po->o;
-    if (is_csg(o) && o->u.csg.n_children) {
-        n->u.csg.children = pp_alloc(ps, (size_t)o->u.csg.n_children *
-                                             sizeof *n->u.csg.children);
-        for (int i = 0; i < o->u.csg.n_children; i++)
-            n->u.csg.children[i] = pp_object_copy(ps, o->u.csg.children[i]);
-    }
+    /* A CSG's children stay shared until something changes them
+    ** (own_children): a union redeclared from itself, '#declare A =
+    ** union { object { A } ... }' 1365 times (GonzalMZ's arosFractal),
+    ** then costs a node per step, not a copy of the whole tree (quadratic:
+    ** over 1 GB; POV-Ray, which frees the old value, needs 22 MB). */
+    if (is_csg(o) && o->u.csg.n_children)
+        po->shared_children = true;
     if (o->n_clipped_by) {
         n->clipped_by = pp_alloc(ps, (size_t)o->n_clipped_by *
                                          sizeof *n->clipped_by);
@@ -80,6 +81,21 @@ iris_object *pp_object_copy(pp_state *ps, const iris_object *o)
     }
     *tail = NULL;
     return n;
+}
+
+/* Gives CSG 'o' its own copies of its children if they are still those
+** of the object it was copied from, before they are changed. */
+static void own_children(pp_state *ps, iris_object *o)
+{
+    pp_obj *po = (pp_obj *)o;
+    if (!po->shared_children)
+        return;
+    po->shared_children = false;
+    int n = o->u.csg.n_children;
+    iris_object **ch = pp_alloc(ps, (size_t)n * sizeof *ch);
+    for (int i = 0; i < n; i++)
+        ch[i] = pp_object_copy(ps, o->u.csg.children[i]);
+    o->u.csg.children = ch;
 }
 
 void pp_light_transform(iris_light *l, const iris_transform *xf)
@@ -142,9 +158,11 @@ static void transform_rec(pp_state *ps, iris_object *o,
         if (o->interior_texture)
             o->interior_texture = pp_tex_transform(ps, o->interior_texture, xf);
     }
-    if (is_csg(o))
+    if (is_csg(o)) {
+        own_children(ps, o);
         for (int i = 0; i < o->u.csg.n_children; i++)
             transform_rec(ps, o->u.csg.children[i], xf, textures, fold);
+    }
     for (int i = 0; i < o->n_clipped_by; i++)
         transform_rec(ps, o->clipped_by[i], xf, textures, fold);
     if (o->bounded_by)
@@ -1331,8 +1349,10 @@ static void shape_body(pp_state *ps, iris_object *o, int kw, const pp_token *at)
         o->u.sphere.radius = pp_float(ps);
         break;
     case T_BOX:
-        o->u.box.lo = pp_vector(ps); comma(ps);
-        o->u.box.hi = pp_vector(ps);
+        /* an infinite corner: POV-Ray's rays leave the box at
+        ** BOUND_HUGE (box.cpp's tmax), iris's at POV_MAX_DISTANCE */
+        o->u.box.lo = pp_vector_clamped(ps, POV_MAX_DISTANCE); comma(ps);
+        o->u.box.hi = pp_vector_clamped(ps, POV_MAX_DISTANCE);
         break;
     case T_PLANE:
         o->u.plane.normal = pp_vector(ps); comma(ps);
@@ -1458,6 +1478,7 @@ static void shape_body(pp_state *ps, iris_object *o, int kw, const pp_token *at)
             if (ps->tok.kind == T_IDENT && ps->tok.val.kind == V_FUNCTION)
                 pp_error(ps, &ps->tok, "height_field from a function "
                          "identifier: write function W, H { F(x,y,0) }");
+            const char *const *exts = pp_image_exts(ps->tok.kind);
             if (ps->tok.kind < T_KW_FIRST)
                 pp_unget(ps);
             pp_token st = ps->tok;
@@ -1465,7 +1486,7 @@ static void shape_body(pp_state *ps, iris_object *o, int kw, const pp_token *at)
             st = ps->tok;
             pp_unget(ps);
             const char *name = pp_string(ps);
-            img->path = pp_require_file(ps, &st, name, NULL, "image file");
+            img->path = pp_require_file(ps, &st, name, exts, "image file");
             o->u.height_field.image = img;
         }
         for (;;) {
@@ -2013,6 +2034,7 @@ static void finalize(pp_state *ps, iris_object *o, iris_texture *tex,
     if (o->interior == NULL && in)
         o->interior = in;
     if (is_csg(o)) {
+        own_children(ps, o);
         iris_texture *cut = cutaway_texture(o, t);
         for (int i = 0; i < o->u.csg.n_children; i++)
             finalize(ps, o->u.csg.children[i], i > 0 && cut ? cut : t, in, o);
@@ -2049,12 +2071,14 @@ void pp_finalize_object(pp_state *ps, iris_object *o)
 
 /* Drops the light_sources a CSG copy carries (recursively): a copy made
 ** for a geometry query must not add lights to the scene. */
-static void strip_lights(iris_object *o)
+static void strip_lights(pp_state *ps, iris_object *o)
 {
     ((pp_obj *)o)->lights = NULL;
-    if (is_csg(o))
+    if (is_csg(o)) {
+        own_children(ps, o);
         for (int i = 0; i < o->u.csg.n_children; i++)
-            strip_lights(o->u.csg.children[i]);
+            strip_lights(ps, o->u.csg.children[i]);
+    }
 }
 
 const iris_object *pp_query_object(pp_state *ps, const iris_object *o)
@@ -2063,7 +2087,7 @@ const iris_object *pp_query_object(pp_state *ps, const iris_object *o)
         if (ps->query_src[i] == o && ps->query_obj[i])
             return ps->query_obj[i];
     iris_object *c = pp_object_copy(ps, o);
-    strip_lights(c);
+    strip_lights(ps, c);
     finalize(ps, c, NULL, NULL, NULL);
     int slot = ps->query_next++ % PP_QUERY_CACHE;
     ps->query_src[slot] = o;

@@ -265,6 +265,9 @@ typedef struct pp_obj {
     ** matrix, a transform or an uneven scale): its box is then the
     ** transformed box, no longer the tight one */
     bool sphere_trans;
+    /* a CSG copy's children are still the original's (pp_object_copy):
+    ** own_children() copies them before anything changes them */
+    bool shared_children;
 } pp_obj;
 
 struct pp_state {
@@ -460,6 +463,10 @@ void pp_pop_frame(pp_state *ps);
 void pp_raw(pp_state *ps, pp_token *t);
 /* Runs the directive whose keyword follows '#' (directive.c). */
 void pp_directive(pp_state *ps, const pp_token *hash);
+/* 'declare', 'include' or 'version' without '#' at a scene's top level
+** ('kw', just read): runs it with a warning, as POV-Ray does; false for
+** any other token. */
+bool pp_bare_directive(pp_state *ps, const pp_token *kw);
 void pp_call_macro(pp_state *ps, const pp_macro *m, const pp_token *call);
 void pp_default_block(pp_state *ps);   /* after #default or default */
 
@@ -500,6 +507,16 @@ int pp_int(pp_state *ps);             /* a float in the int range */
 long pp_clamp_long(double v);
 double pp_full_float(pp_state *ps);         /* a full expression as a float */
 iris_vec3 pp_vector(pp_state *ps);
+/* pp_vector, an infinite component taken as +-bound: a box's corners
+** ('Count / clock' at clock 0), which POV-Ray's box takes as they are,
+** its intersection then stopping at BOUND_HUGE. */
+iris_vec3 pp_vector_clamped(pp_state *ps, double bound);
+/* Where an infinite box corner is put: POV-Ray's MAX_DISTANCE
+** (configcore.h), far beyond any scene's objects. Not POV-Ray's
+** BOUND_HUGE (2e10): iris's box and shadow arithmetic lose precision
+** there (tests/render/scenes/253: 1e7 gives 65 dB to inf against POV-Ray,
+** 1e9 32 dB, 2e10 25 dB). */
+#define POV_MAX_DISTANCE 1.0e7
 iris_vec2 pp_vector2(pp_state *ps);
 void pp_vector4(pp_state *ps, double out[4]);
 iris_colour pp_colour(pp_state *ps);
@@ -591,6 +608,9 @@ const char *pp_find_file(pp_state *ps, const pp_token *at, const char *name);
 ** order (a font "cyrvetic" is found as cyrvetic.ttf); not finding it is a
 ** located error, as it is fatal in POV-Ray ("Cannot find image file",
 ** "Cannot open font file"). 'what' names the kind of file. */
+/* The extensions POV-Ray tries for image type token 'kind' (T_PNG...),
+** NULL-ended; NULL for any other token. */
+const char *const *pp_image_exts(int kind);
 const char *pp_require_file(pp_state *ps, const pp_token *at,
                             const char *name, const char *const *exts,
                             const char *what);
@@ -611,6 +631,16 @@ void pp_add_atmosphere_media(pp_state *ps, iris_media *m);
 static inline double pp_effective_version(const pp_state *ps)
 {
     return ps->version_set ? ps->version : 3.62;
+}
+
+/* An image's POV-Ray gamma mode, fixed when the image is parsed
+** (iris_image_ref.as_stored): each #version sets POV-Ray's gammaMode
+** anew (tokenize.cpp), 3.6's modes (None, AssumedGamma36) below 3.7,
+** which read the texels as stored; 3.7's decode them. An image parsed
+** before the scene's #version 3.7 (in an include file) keeps 3.6's. */
+static inline signed char pp_image_as_stored(const pp_state *ps)
+{
+    return pp_effective_version(ps) < 3.7 ? 1 : -1;
 }
 
 /* ---- obj.c: objects ----------------------------------------------- */

@@ -360,12 +360,18 @@ resolve:
             c->up = v3_scale(v3_cross(dn, r), ulen);
             c->right = v3_scale(r, handed > 0 ? rlen : -rlen);
         }
-        /* orthographic cameras without explicit size cover the view */
-        if (c->kind == IRIS_CAM_ORTHOGRAPHIC &&
-            ((!has_up && !has_right) || has_angle) && dlen > 0) {
-            double s = v3_len(d) / dlen;
-            c->right = v3_scale(c->right, s);
-            c->up = v3_scale(c->up, s);
+    }
+    /* orthographic cameras without explicit size (or with an angle) cover
+    ** the view at the look_at point, also without a look_at: then the
+    ** default one, <0, 0, 1>, or the copied camera's (POV-Ray's
+    ** Parse_Camera; t-o-k's Icosahedron: location -24*z angle 15) */
+    if (c->kind == IRIS_CAM_ORTHOGRAPHIC &&
+        ((!has_up && !has_right) || has_angle)) {
+        double k1 = v3_len(v3_sub(c->look_at, c->location));
+        double k2 = v3_len(c->direction);
+        if (k1 > 1e-10 && k2 > 1e-10) {
+            c->right = v3_scale(c->right, k1 / k2);
+            c->up = v3_scale(c->up, k1 / k2);
         }
     }
     /* POV-Ray renders a zero direction black without a word: say so */
@@ -716,6 +722,9 @@ void pp_scene_items(pp_state *ps)
             break;
         case T_DEFAULT:
             pp_default_block(ps);
+            break;
+        case T_DECLARE: case T_INCLUDE: case T_VERSION:
+            pp_bare_directive(ps, &at);
             break;
         default: {
             pp_unget(ps);

@@ -42,6 +42,13 @@ enum iris_fn_op {
                           argument (nargs 0) or 1 popped (nargs 1) */
     IRIS_FN_TRANSFORM, /* component 'arg' of 'xform' applied to (x,y,z):
                           the arguments (nargs 0) or 3 popped (nargs 3) */
+    /* select() and a ? b : c, lazily as POV-Ray compiles them (only the
+    ** arm chosen is evaluated: users' functions put costly calls in every
+    ** arm). Targets are insn indices after the branch, at most n_code. */
+    IRIS_FN_BRANCH,    /* pops a: a < 0 goes on, a == 0 jumps to 'arg',
+                          a > 0 to 'nargs' */
+    IRIS_FN_BRANCH_ZERO, /* pops a: jumps to 'arg' when a == 0 */
+    IRIS_FN_JUMP,      /* jumps to 'arg' */
     IRIS_FN_OP_COUNT
 };
 

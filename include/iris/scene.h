@@ -142,6 +142,10 @@ typedef struct iris_image_ref {
     int n_palette_ft;
     struct iris_palette_ft { int index, which; double value; } *palette_ft;
     bool use_index;        /* bump_map use_index: palette indices as heights */
+    /* POV-Ray's gamma mode when the image was parsed: 1 = texels as the
+    ** file stores them (#version below 3.7 there), -1 = decoded to the
+    ** working space, 0 = from the scene's final version */
+    signed char as_stored;
 } iris_image_ref;
 
 /*
@@ -207,6 +211,11 @@ typedef struct iris_pigment {
     iris_map_entry *entries;   /* sorted by value; colour or pigment set */
     bool is_pigment_map;       /* entries hold pigments, not colours */
     iris_colour quick_colour;
+    /* Transforms of this pigment that its pigment entries have not got:
+    ** they are evaluated at the point moved back by them (NULL: none).
+    ** The parser shares a transformed pigment's entries instead of
+    ** copying its map tree per transform (POV-Ray shares blend maps). */
+    const iris_transform *entry_xf;
 } iris_pigment;
 
 /* A normal{} perturbation. */

@@ -14,6 +14,7 @@
 */
 #include "config.h"
 
+#include <float.h>
 #include <math.h>
 #include <string.h>
 
@@ -22,9 +23,10 @@
 #include "iris/scene.h"
 #include "material/material.h"
 
-static double finite_or_0(double v)
+static inline double finite_or_0(double v)
 {
-    return isfinite(v) ? v : 0.0;
+    /* (false for NaN too; cheaper than isfinite() where it is a call) */
+    return fabs(v) <= DBL_MAX ? v : 0.0;
 }
 
 /* A double as an integer without undefined conversions. */
@@ -137,7 +139,7 @@ static double sum_loop(const iris_fn_insn *in, const double *args,
     if (slot < 0 || slot > SUM_MAX_ARGS || !(a <= b) || !isfinite(a))
         return in->arg ? 1 : 0;
     for (int k = 0; k < slot; k++)
-        buf[k] = args && k < n_args ? args[k] : 0;
+        buf[k] = args && k < n_args ? finite_or_0(args[k]) : 0;
     double r = in->arg ? 1 : 0;
     long n = 0;
     for (double i = a; i <= b && n < SUM_MAX_TERMS; i += 1, n++) {
@@ -155,40 +157,54 @@ static double eval(const iris_fn *fn, const double *args, int n_args,
     int sp = 0;
     if (!fn || depth > IRIS_FN_MAX_DEPTH || fn->max_stack > IRIS_FN_MAX_STACK)
         return 0;
-    for (int pc = 0; pc < fn->n_code; pc++) {
-        const iris_fn_insn *in = &fn->code[pc];
-        double r = 0;
+    if (!args || n_args < 0)
+        n_args = 0;
+    /* (a parameter is one unsigned comparison: users' function meshes
+    ** run millions of these at parse time) */
+    const unsigned n_par = (unsigned)n_args;
+    const iris_fn_insn *const end = fn->code + fn->n_code;
+    for (const iris_fn_insn *in = fn->code; in < end; in++) {
+        double r;
         int pop = 0;
         switch (in->op) {
         case IRIS_FN_CONST: r = in->value; break;
         case IRIS_FN_PARAM:
-            r = in->arg >= 0 && in->arg < n_args && args ? args[in->arg] : 0;
-            break;
-        case IRIS_FN_ADD: case IRIS_FN_SUB: case IRIS_FN_MUL: case IRIS_FN_DIV:
-        case IRIS_FN_POW: case IRIS_FN_LT: case IRIS_FN_LE: case IRIS_FN_GT:
-        case IRIS_FN_GE: case IRIS_FN_EQ: case IRIS_FN_NE: case IRIS_FN_AND:
-        case IRIS_FN_OR: {
-            if (sp < 2)
-                return 0;
-            double a = st[sp - 2], b = st[sp - 1];
-            pop = 2;
-            switch (in->op) {
-            case IRIS_FN_ADD: r = a + b; break;
-            case IRIS_FN_SUB: r = a - b; break;
-            case IRIS_FN_MUL: r = a * b; break;
-            case IRIS_FN_DIV: r = b != 0 ? a / b : 0; break;
-            case IRIS_FN_POW: r = pow(a, b); break;
-            case IRIS_FN_LT: r = a < b; break;
-            case IRIS_FN_LE: r = a <= b; break;
-            case IRIS_FN_GT: r = a > b; break;
-            case IRIS_FN_GE: r = a >= b; break;
-            case IRIS_FN_EQ: r = a == b; break;
-            case IRIS_FN_NE: r = a != b; break;
-            case IRIS_FN_AND: r = a != 0 && b != 0; break;
-            default: r = a != 0 || b != 0; break;
+            if ((unsigned)in->arg < n_par) {
+                /* arguments reach here finite (iris_fn_eval's callers
+                ** and the pushes below), except the top level's */
+                r = args[in->arg];
+                if (sp >= IRIS_FN_MAX_STACK)
+                    return 0;
+                st[sp++] = depth ? r : finite_or_0(r);
+                continue;
             }
+            r = 0;
             break;
+        /* two operands, one result: the stack shrinks, so no bound to
+        ** test; each operator its own case (one dispatch, not two) */
+#define BINARY(OP, EXPR)                                                  \
+        case OP: {                                                        \
+            if (sp < 2)                                                   \
+                return 0;                                                 \
+            double a = st[sp - 2], b = st[sp - 1];                        \
+            sp--;                                                         \
+            st[sp - 1] = (EXPR);                                          \
+            continue;                                                     \
         }
+        BINARY(IRIS_FN_ADD, finite_or_0(a + b))
+        BINARY(IRIS_FN_SUB, finite_or_0(a - b))
+        BINARY(IRIS_FN_MUL, finite_or_0(a * b))
+        BINARY(IRIS_FN_DIV, b != 0 ? finite_or_0(a / b) : 0)
+        BINARY(IRIS_FN_POW, finite_or_0(pow(a, b)))
+        BINARY(IRIS_FN_LT, a < b)
+        BINARY(IRIS_FN_LE, a <= b)
+        BINARY(IRIS_FN_GT, a > b)
+        BINARY(IRIS_FN_GE, a >= b)
+        BINARY(IRIS_FN_EQ, a == b)
+        BINARY(IRIS_FN_NE, a != b)
+        BINARY(IRIS_FN_AND, a != 0 && b != 0)
+        BINARY(IRIS_FN_OR, a != 0 || b != 0)
+#undef BINARY
         case IRIS_FN_NEG: case IRIS_FN_NOT:
             if (sp < 1)
                 return 0;
@@ -207,6 +223,25 @@ static double eval(const iris_fn *fn, const double *args, int n_args,
             pop = k;
             break;
         }
+        case IRIS_FN_BRANCH: case IRIS_FN_BRANCH_ZERO: {
+            if (sp < 1)
+                return 0;
+            double a = st[--sp];
+            int to = in->op == IRIS_FN_BRANCH_ZERO ? (a == 0 ? in->arg : -1)
+                     : a < 0 ? -1 : a == 0 ? in->arg : in->nargs;
+            if (to < 0)
+                continue;
+            /* forward only, so that every function ends */
+            if (to <= in - fn->code || to > fn->n_code)
+                return 0;
+            in = fn->code + to - 1;
+            continue;
+        }
+        case IRIS_FN_JUMP:
+            if (in->arg <= in - fn->code || in->arg > fn->n_code)
+                return 0;
+            in = fn->code + in->arg - 1;
+            continue;
         case IRIS_FN_COND:
             if (sp < 3)
                 return 0;

@@ -18,6 +18,7 @@
 #include "image/srgb8.h"
 #include "iris/image.h"
 #include "material/mat_internal.h"
+#include "math/transform.h"
 
 static void image_to_working(const struct mat_ctx *ctx,
                              const iris_image_ref *ref, iris_colour *c);
@@ -310,6 +311,12 @@ static bool eval_pigment(const struct mat_ctx *ctx, const iris_pigment *pig,
         pat->n_warps > 0) {
         wpt = *pt;
         wpt.p = pat_warp_world(ctx, pat, pat_input(pat, pt->p, pt));
+        ept = &wpt;
+    }
+    /* ...and the pigment's transforms the shared entries lack */
+    if (pig->entry_xf && pig->n_entries > 0) {
+        wpt = *ept;
+        wpt.p = xf_inv_point(pig->entry_xf, wpt.p);
         ept = &wpt;
     }
     if (pat->kind == IRIS_PAT_AVERAGE)
@@ -632,6 +639,15 @@ void mat_texel_memo_forget(void)
     atomic_fetch_add_explicit(&ctx_epoch, 1, memory_order_release);
 }
 
+/* Texels as stored (POV-Ray's gamma modes before 3.7), as the parser
+** found the mode where the image was read, else from the version. */
+static bool image_as_stored(const iris_scene *sc, const iris_image_ref *ref)
+{
+    if (ref->as_stored)
+        return ref->as_stored > 0;
+    return sc->version > 0 && sc->version < 3.7;
+}
+
 /* What texel_as() converts with, the same for every texel of a sample:
 ** the conversion ('working', as image_to_working, and/or 'stored', as
 ** to_stored) and the memo's key besides the texel's address. */
@@ -652,7 +668,7 @@ static void texel_conv_key_of(const struct mat_ctx *working,
     /* everything the two conversions read besides the texel */
     const iris_scene *sc = working ? working->scene : NULL;
     k->mode = (working ? 1u : 0u) | (stored ? 2u : 0u) | (sc ? 4u : 0u) |
-              (sc && sc->version > 0 && sc->version < 3.7 ? 8u : 0u);
+              (sc && image_as_stored(sc, ref) ? 8u : 0u);
     double wg = sc ? sc->settings.assumed_gamma : 0.0;
     k->working_gamma = wg;
     /* without 'stored', only image_to_working() converts, and it changes
@@ -865,7 +881,7 @@ static void image_to_working(const struct mat_ctx *ctx,
     if (!sc)
         return;
     double g = sc->settings.assumed_gamma;
-    bool legacy = sc->version > 0 && sc->version < 3.7;
+    bool legacy = image_as_stored(sc, ref);
     double *ch[3] = { &c->r, &c->g, &c->b };
     for (int k = 0; k < 3; k++) {
         double v = *ch[k];

@@ -94,6 +94,53 @@ static void test_select_call(void **state)
     assert_near(iris_fn_eval(&rec, NULL, 0), 0, 0);
 }
 
+/* select(x, 10, 20, 30) as the compiler emits it: a branch and jumps.
+** Only the arm chosen runs: each other arm holds an ADD on an empty
+** stack, which would make the whole function 0. Jumps backwards or past
+** the end are refused (0), so that every function ends. */
+static void test_branch(void **state)
+{
+    (void)state;
+    iris_fn_insn s[] = {
+        ins(IRIS_FN_PARAM, 0, 0, 0),
+        ins(IRIS_FN_BRANCH, 5, 9, 0),     /* == 0: 5, > 0: 9 */
+        ins(IRIS_FN_CONST, 0, 0, 10),
+        ins(IRIS_FN_JUMP, 12, 0, 0),
+        ins(IRIS_FN_ADD, 0, 0, 0),        /* never reached */
+        ins(IRIS_FN_CONST, 0, 0, 20),
+        ins(IRIS_FN_JUMP, 12, 0, 0),
+        ins(IRIS_FN_ADD, 0, 0, 0),
+        ins(IRIS_FN_ADD, 0, 0, 0),
+        ins(IRIS_FN_CONST, 0, 0, 30),
+        ins(IRIS_FN_JUMP, 12, 0, 0),
+        ins(IRIS_FN_ADD, 0, 0, 0),
+    };
+    iris_fn sel = { 1, NULL, 12, s, 1, 1 };
+    double m = -1, z = 0, p = 1;
+    assert_near(iris_fn_eval(&sel, &m, 1), 10, 0);
+    assert_near(iris_fn_eval(&sel, &z, 1), 20, 0);
+    assert_near(iris_fn_eval(&sel, &p, 1), 30, 0);
+    /* x ? 7 : 8 */
+    iris_fn_insn c[] = {
+        ins(IRIS_FN_PARAM, 0, 0, 0), ins(IRIS_FN_BRANCH_ZERO, 4, 0, 0),
+        ins(IRIS_FN_CONST, 0, 0, 7), ins(IRIS_FN_JUMP, 5, 0, 0),
+        ins(IRIS_FN_CONST, 0, 0, 8),
+    };
+    iris_fn cond = { 1, NULL, 5, c, 1, 1 };
+    assert_near(iris_fn_eval(&cond, &p, 1), 7, 0);
+    assert_near(iris_fn_eval(&cond, &z, 1), 8, 0);
+    /* a jump to itself, and one past the end: 0 */
+    iris_fn_insn loop[] = {
+        ins(IRIS_FN_CONST, 0, 0, 5), ins(IRIS_FN_JUMP, 1, 0, 0),
+    };
+    iris_fn lf = { 0, NULL, 2, loop, 1, 1 };
+    assert_near(iris_fn_eval(&lf, NULL, 0), 0, 0);
+    loop[1].arg = 3;
+    assert_near(iris_fn_eval(&lf, NULL, 0), 0, 0);
+    loop[1].arg = 2;  /* to the end: the 5 stays */
+    assert_near(iris_fn_eval(&lf, NULL, 0), 5, 0);
+}
+
 /* functions.inc internals against their definitions: f_sphere = |p| - r,
 ** f_torus = distance to the tube circle - minor, f_r = |p|,
 ** f_th = atan2(x, z), f_ph = atan2(sqrt(x^2 + z^2), y). */
@@ -161,6 +208,7 @@ int main(void)
         cmocka_unit_test(test_arith),
         cmocka_unit_test(test_no_nan),
         cmocka_unit_test(test_select_call),
+        cmocka_unit_test(test_branch),
         cmocka_unit_test(test_internals),
         cmocka_unit_test(test_sum),
         cmocka_unit_test(test_internal_limits),
