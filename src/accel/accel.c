@@ -1554,6 +1554,12 @@ bool accel_object_bounds(const struct accel *a, const iris_object *obj,
             n = a->roots[i];
     if (!n)
         n = find_node(a, obj);
+    /* a difference's subtracted child (built under an inverse, so not in
+    ** the map): its own surface's box (a photon target there, POV-Ray
+    ** aims at its box as well) */
+    for (int i = 0; i < a->n_nodes && !n; i++)
+        if (a->nodes[i]->obj == obj && a->nodes[i]->under_inverse)
+            n = a->nodes[i];
     if (!n || !n->bounded || n->lo.x > n->hi.x)
         return false;
     *lo = n->lo;

@@ -8,4 +8,5 @@ libiris_core_la_SOURCES += %reldir%/photon.h %reldir%/photon.c \
 	%reldir%/fastpath.c %reldir%/fastpath.h \
 	%reldir%/pmedia.c %reldir%/pmedia.h \
 	%reldir%/wavefront.c %reldir%/wavefront.h %reldir%/wf_kernel.h \
-	%reldir%/targets.c %reldir%/targets.h
+	%reldir%/targets.c %reldir%/targets.h \
+	%reldir%/povbox.c %reldir%/povbox.h

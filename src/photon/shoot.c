@@ -75,6 +75,7 @@
 #include <unistd.h>
 
 #include "photon/membudget.h"
+#include "photon/povbox.h"
 #include "photon/trace.h"
 #include "photon/wavefront.h"
 #include "spectrum/ior.h"
@@ -340,6 +341,11 @@ static enum iris_status find_combos(struct shoot *s)
             c->ctr = v3_scale(v3_add(lo, hi), 0.5);
             c->rad = 0.5 * v3_len(v3_sub(hi, lo));
             c->est_rad = c->rad;
+            /* the count estimate takes POV-Ray's wider box of a target
+            ** holding a blob (povbox.c); the rings keep iris's */
+            vec3 plo, phi;
+            if (povbox_target(t, s->w->object_bounds, s->w->ctx, &plo, &phi))
+                c->est_rad = 0.5 * v3_len(v3_sub(phi, plo));
             c->origin = l->location;
             if (c->tc.parallel) {
                 c->axis = v3_norm(v3_sub(l->point_at, l->location));

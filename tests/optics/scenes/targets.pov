@@ -22,8 +22,20 @@
 //  12 case 2 with a ball's own 'reflection off' (the union's wins)
 //  13 a flagged ball under a clear plate with 'pass_through' (a cloud):
 //     photons through the plate that miss the ball are not stored
+// Cases 14-16 ask for 'count 20000' photons, whose spacing comes from the
+// target's bounding sphere: POV-Ray bounds a blob by its components'
+// bounding spheres (src/photon/povbox.c), wider than iris's box:
+//  14 a mirror blob of one upright cylinder component
+//  15 lights/glassthing.pov's glass at half size: a blob in a merge, cut
+//     by a plane
+//  16 a turned blob: a squashed sphere, a slanted cylinder and a
+//     negative sphere component
+//  17 a flagged ball subtracted from a box in a difference that is not
+//     flagged: a mirror bowl in the box's top
 #ifndef (CASE) #declare CASE = 1; #end
-global_settings { assumed_gamma 1 photons { spacing 0.02 autostop 1 jitter 0 } }
+global_settings { assumed_gamma 1 photons {
+  #if (CASE >= 14 & CASE <= 16) count 20000 #else spacing 0.02 #end
+  autostop 1 jitter 0 } }
 camera { location <0, 6, -8> look_at <0, 0.5, 0> angle 40 }
 light_source { <3, 10, -4> color rgb 1 }
 plane { y, 0 pigment { rgb 1 } finish { ambient 0 diffuse 1 } }
@@ -59,5 +71,34 @@ plane { y, 0 pigment { rgb 1 } finish { ambient 0 diffuse 1 } }
   object { Ball2 Flag() }
   box { <-3, 3, -3>, <3, 3.1, 3> pigment { rgbf <1, 1, 1, 0.8> } finish { diffuse 0 }
     photons { collect off pass_through } }
+#break
+#case (14)
+  blob { threshold 0.25 cylinder { <0, 0.3, 0>, <0, 1.7, 0>, 0.5, 1 }
+    texture { Mirror } Flag() }
+#break
+#case (15)
+  intersection {
+    merge {
+      blob { threshold 0.25
+        cylinder { -1.2*y, 1.2*y, 0.35, 1 }
+        cylinder { <0, 1, 0.3>, <0, 1, -0.3>, 0.125, 1 }
+        cylinder { <0.25, 1.2, 0>, <-0.25, 1.2, 0>, 0.2, -1 } }
+      box { <-0.75, 0, -0.15>, <0.75, 0.6, 0.15> }
+      cylinder { <-0.75, 0.6, 0>, <0.75, 0.6, 0>, 0.15 }
+    }
+    plane { -y, 0.001 }
+    texture { Mirror } Flag()
+  }
+#break
+#case (16)
+  blob { threshold 0.3
+    sphere { 0, 0.6, 1 scale <1, 0.5, 1> }
+    cylinder { <-0.5, 0, -0.3>, <0.5, 0.4, 0.3>, 0.3, 1 }
+    sphere { <0.3, 0, 0>, 0.2, -1 }
+    rotate 30*z translate y
+    texture { Mirror } Flag() }
+#break
+#case (17)
+  difference { box { <-2, 0.2, -2>, <2, 1, 2> pigment { rgb 1 } } object { Ball1 Flag() } }
 #break
 #end
