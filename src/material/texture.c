@@ -409,6 +409,35 @@ static void eval_list(const struct mat_ctx *ctx, const iris_texture *tex,
                       const struct mat_point *pt, struct mat_eval *out,
                       int depth, vec3 *pn);
 
+/* One map entry, 'tex', taken whole (weight 1) over the layers 'rest':
+** combine() of it alone. Where 'rest' is empty (the map is the bottom
+** layer, as usual) and the entry gives one stack of weight 1 from its
+** first layer, combine() would give that stack as it is (its weight
+** 1 x 1 x 1, divided by itself: 1), so the entry is evaluated straight
+** into 'out' without the copies (the whole of combine() was a third of
+** a material_map scene's texture work). */
+static void eval_entry_whole(const struct mat_ctx *ctx,
+                             const iris_texture *tex,
+                             const struct mat_point *pt,
+                             const struct mat_eval *rest,
+                             struct mat_eval *out, int depth, vec3 *pn)
+{
+    struct mat_eval alt;
+    const struct mat_eval *alts[1] = { &alt };
+    double w[1] = { 1.0 };
+    if (rest->n_layers == 0 && rest->n_stacks == 1 &&
+        rest->stacks[0].weight == 1.0) {
+        eval_list(ctx, tex, pt, out, depth + 1, pn);
+        if (out->n_stacks == 1 && out->stacks[0].weight == 1.0 &&
+            out->stacks[0].first == 0)
+            return;
+        copy_used(&alt, out);
+    } else {
+        eval_list(ctx, tex, pt, &alt, depth + 1, pn);
+    }
+    combine(alts, w, 1, rest, out);
+}
+
 /* The most entries of an 'average' texture_map that are shaded. */
 #define MAX_AVERAGE 16
 
@@ -474,14 +503,9 @@ static void eval_material_map(const struct mat_ctx *ctx,
         k %= n;
     if (k > n - 1)
         k = n - 1;
-    /* on the stack, as in eval_map() */
-    struct mat_eval alt;
     struct mat_point wpt = *pt;
     wpt.p = pat_warp_world(ctx, pat, pt->p);
-    eval_list(ctx, t->entries[k].texture, &wpt, &alt, depth + 1, pn);
-    const struct mat_eval *alts[1] = { &alt };
-    double w[1] = { 1.0 };
-    combine(alts, w, 1, rest, out);
+    eval_entry_whole(ctx, t->entries[k].texture, &wpt, rest, out, depth, pn);
 }
 
 /* A texture_map layer: the two neighbouring entries and their weights. */
@@ -527,14 +551,16 @@ static void eval_map(const struct mat_ctx *ctx, const iris_texture *t,
     struct mat_point wpt = *pt;
     wpt.p = pat_warp_world(ctx, &t->map_pattern, pt->p);
     pt = &wpt;
+    if (p == c) {              /* one entry, weight 1 */
+        eval_entry_whole(ctx, e[c].texture, pt, rest, out, depth, pn);
+        return;
+    }
     eval_list(ctx, e[c].texture, pt, &alt[0], depth + 1, pn);
     alts[n_alts] = &alt[0];
     w[n_alts++] = frac;
-    if (p != c) {
-        eval_list(ctx, e[p].texture, pt, &alt[1], depth + 1, pn);
-        alts[n_alts] = &alt[1];
-        w[n_alts++] = 1.0 - frac;
-    }
+    eval_list(ctx, e[p].texture, pt, &alt[1], depth + 1, pn);
+    alts[n_alts] = &alt[1];
+    w[n_alts++] = 1.0 - frac;
     combine(alts, w, n_alts, rest, out);
 }
 

@@ -38,12 +38,20 @@ static vec3 rotate_about(vec3 p, vec3 axis, double angle)
 ** right and v in [0, 1) upwards. They work with unit right, up and
 ** direction vectors; the lengths only set the aspect ratio.
 */
-static bool angular_ray(const iris_camera *cam, double u, double v, ray *r,
-                        double np[2])
+void camera_axes(const iris_camera *cam, struct cam_axes *a)
 {
-    double lr = v3_len(cam->right), lu = v3_len(cam->up);
-    vec3 R = unit_or_self(cam->right), U = unit_or_self(cam->up),
-         D = unit_or_self(cam->direction);
+    a->lr = v3_len(cam->right);
+    a->lu = v3_len(cam->up);
+    a->R = unit_or_self(cam->right);
+    a->U = unit_or_self(cam->up);
+    a->D = unit_or_self(cam->direction);
+}
+
+static bool angular_ray(const iris_camera *cam, const struct cam_axes *ax,
+                        double u, double v, ray *r, double np[2])
+{
+    const double lr = ax->lr, lu = ax->lu;
+    const vec3 R = ax->R, U = ax->U, D = ax->D;
     double x0 = u - 0.5, y0 = v - 0.5;
     double deg = M_PI / 180.0;
     vec3 d;
@@ -168,14 +176,22 @@ static void perturb_ray(const iris_camera *cam, double x0, double y0, ray *r,
     *raw = v3_scale(r->d, raw_len > 0 ? raw_len : 1.0);
 }
 
-static bool base_ray(const iris_camera *cam, int width, int height,
-                     double x, double y, ray *r, vec3 *raw, double np[2]);
+static bool base_ray(const iris_camera *cam, const struct cam_axes *ax,
+                     int width, int height, double x, double y, ray *r,
+                     vec3 *raw, double np[2]);
 
 bool camera_ray_raw(const iris_camera *cam, int width, int height, double x,
                     double y, ray *r, vec3 *raw)
 {
+    return camera_ray_axes(cam, NULL, width, height, x, y, r, raw);
+}
+
+bool camera_ray_axes(const iris_camera *cam, const struct cam_axes *ax,
+                     int width, int height, double x, double y, ray *r,
+                     vec3 *raw)
+{
     double np[2] = { 0.0, 0.0 };
-    if (!base_ray(cam, width, height, x, y, r, raw, np))
+    if (!base_ray(cam, ax, width, height, x, y, r, raw, np))
         return false;
     /* the mesh camera leaves np at <0, 0>: POV-Ray's x0 and y0 keep
     ** their initial 0 there, so its normal{} moves every ray alike */
@@ -188,8 +204,9 @@ bool camera_ray_raw(const iris_camera *cam, int width, int height, double x,
 ** image plane where POV-Ray evaluates that normal: x0 and y0 as its
 ** CreateCameraRay leaves them, i.e. in [-0.5, 0.5] for the perspective
 ** and orthographic cameras, scaled to angles by the angular ones. */
-static bool base_ray(const iris_camera *cam, int width, int height,
-                     double x, double y, ray *r, vec3 *raw, double np[2])
+static bool base_ray(const iris_camera *cam, const struct cam_axes *ax,
+                     int width, int height, double x, double y, ray *r,
+                     vec3 *raw, double np[2])
 {
     if (cam->kind == IRIS_CAM_MESH) {
         if (!meshcam_ray(cam, width, height, x, y, 0, r))
@@ -244,11 +261,17 @@ static bool base_ray(const iris_camera *cam, int width, int height,
     case IRIS_CAM_ULTRA_WIDE:
     case IRIS_CAM_CYLINDER:
     case IRIS_CAM_OMNIMAX:
-    case IRIS_CAM_SPHERICAL:
-        if (!angular_ray(cam, x / w, ((h - 1) - y) / h, r, np))
+    case IRIS_CAM_SPHERICAL: {
+        struct cam_axes own;  /* camera_ray_raw(): worked out here */
+        if (!ax) {
+            camera_axes(cam, &own);
+            ax = &own;
+        }
+        if (!angular_ray(cam, ax, x / w, ((h - 1) - y) / h, r, np))
             return false;
         *raw = r->d;
         return true;
+    }
     default: { /* perspective */
         struct cam_pinhole p = { cam->location, cam->direction, cam->right,
                                  cam->up, w, h };

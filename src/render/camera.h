@@ -38,4 +38,21 @@ bool camera_ray_numbered(const iris_camera *cam, int width, int height,
                          double x, double y, int ray_number, ray *r,
                          vec3 *raw);
 
+/* What the angular cameras (ultra_wide_angle, cylinder, omnimax,
+** spherical) take of the camera's vectors: right, up and direction made
+** unit, and the lengths of right and up (their aspect ratio).
+** camera_ray_raw() works them out per ray; the eye pass once per render
+** (camera_axes()) and passes them to camera_ray_axes(), which gives the
+** same ray to the bit (the same numbers, computed once; they were a
+** third of such a camera's ray). camera_ray_axes() with 'ax' NULL is
+** camera_ray_raw(); neither is for the mesh camera's numbered rays. */
+struct cam_axes {
+    vec3 R, U, D;
+    double lr, lu;
+};
+void camera_axes(const iris_camera *cam, struct cam_axes *a);
+bool camera_ray_axes(const iris_camera *cam, const struct cam_axes *ax,
+                     int width, int height, double x, double y, ray *r,
+                     vec3 *raw);
+
 #endif

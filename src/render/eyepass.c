@@ -57,8 +57,20 @@ struct job {
     struct interior_stack cam_stack;
     struct cam_pinhole pinhole; /* perspective camera without normal{} */
     bool has_pinhole;
+    struct cam_axes axes;      /* the other cameras' (camera_ray_axes) */
     bool ortho;
     bool blur;                 /* focal blur (fb) */
+    bool one_ray;              /* a sample is one ray: no blur, no mesh
+                                  camera (trace_sample) */
+    bool px_linear;            /* pixels in linear light as they are: no
+                                  legacy or working gamma (put_pixel) */
+    /* A pinhole ray's tmin: trace_ray() takes accel_origin_epsilon() of
+    ** a ray with tmin 0, and for rays from the camera's location, every
+    ** pinhole ray without focal blur, that is one number per render.
+    ** Given as the ray's tmin it comes back unchanged (leave_eps(): it
+    ** is positive and at most the scene's epsilon; a value that is not,
+    ** and every other camera's rays, 0: trace_ray() asks as before). */
+    double pin_tmin;
     struct focal_blur fb;
     struct containing_list blur_cl; /* the objects that may hold a blur
                                        (orthographic, mesh camera) ray's
@@ -103,6 +115,23 @@ static uint64_t pos_key(double x, double y)
     return ((uint64_t)ix << 32) ^ (uint64_t)iy ^ ((uint64_t)iy << 17);
 }
 
+/* The ray of any camera but the pinhole (cam_pinhole_ray): the mesh
+** camera's numbered ray, or camera_ray_raw()'s with the axes worked out
+** once (j->axes). Out of trace_one(): there its second call made the
+** pinhole's every sample dearer (01_sphere_plane +0.3 %). */
+static __attribute__((noinline)) bool other_camera_ray(const struct job *j,
+                                                      double x, double y,
+                                                      int nr, ray *r,
+                                                      vec3 *raw)
+{
+    const iris_camera *cam = &j->scene->camera;
+    if (cam->kind == IRIS_CAM_MESH)
+        return camera_ray_numbered(cam, j->opts->width, j->opts->height, x,
+                                   y, nr, r, raw);
+    return camera_ray_axes(cam, &j->axes, j->opts->width, j->opts->height, x,
+                           y, r, raw);
+}
+
 /* Traces one camera ray through image point (x, y): the pinhole ray, or
 ** with focal blur blur ray 'nr' of the sample at (bx, by). Returns whether
 ** it split into wavelengths (then rgb may lie outside the sRGB gamut). */
@@ -118,16 +147,13 @@ static bool trace_one(struct job *j, struct trace_ctx *c, double x,
     struct tray r;
     r.reflected = false;
     r.lambda = 0.0;
-    r.tmin = 0.0;
+    r.tmin = j->pin_tmin;
     rgb[0] = rgb[1] = rgb[2] = 0.0;
     rgb[3] = 1.0;              /* no ray: transparent, as POV-Ray has it */
     c->spectral = false;
     vec3 raw;
     if (j->has_pinhole ? !cam_pinhole_ray(&j->pinhole, x, y, &r.r, &raw)
-                       : !camera_ray_numbered(&j->scene->camera,
-                                              j->opts->width,
-                                              j->opts->height, x, y, nr,
-                                              &r.r, &raw))
+                       : !other_camera_ray(j, x, y, nr, &r.r, &raw))
         return false;
     if (j->blur) {
         focal_blur_ray(&j->fb, &j->scene->camera, bx, by, nr, raw, &r.r);
@@ -190,16 +216,19 @@ static bool meshcam_sample(struct job *j, struct trace_ctx *c, double x,
     return spectral;
 }
 
-/* The image sample at (x, y): one pinhole ray, or POV-Ray's focal blur
-** loop (focalblur.h): batches of blur rays, each at its own sub-pixel
-** position, until the confidence test passes or blur_samples are in. */
-static bool trace_sample(struct job *j, struct trace_ctx *c, double x,
-                         double y, double rgb[NCH])
+/* trace_sample() of a mesh camera or with focal blur: the mesh camera's
+** rays, or POV-Ray's focal blur loop (focalblur.h): batches of blur
+** rays, each at its own sub-pixel position, until the confidence test
+** passes or blur_samples are in. A call of its own: its locals made
+** every sample's call of trace_sample() save and restore them (29
+** instructions a sample, 1.5 % of a simple scene's eye pass). */
+static __attribute__((noinline)) bool trace_sample_multi(struct job *j,
+                                                        struct trace_ctx *c,
+                                                        double x, double y,
+                                                        double rgb[NCH])
 {
-    if (!j->blur && j->scene->camera.kind == IRIS_CAM_MESH)
-        return meshcam_sample(j, c, x, y, rgb);
     if (!j->blur)
-        return trace_one(j, c, x, y, 0, x, y, rgb);
+        return meshcam_sample(j, c, x, y, rgb);
     const struct focal_blur *fb = &j->fb;
     int seed = focal_blur_seed(x, y);
     double sum[NCH] = { 0, 0, 0, 0 }, s2[NCH] = { 0, 0, 0, 0 };
@@ -223,6 +252,17 @@ static bool trace_sample(struct job *j, struct trace_ctx *c, double x,
     for (int k = 0; k < NCH; k++)
         rgb[k] = sum[k] / nr;
     return spectral;
+}
+
+/* The image sample at (x, y): one camera ray (j->one_ray), else
+** trace_sample_multi()'s rays. Returns whether a ray split into
+** wavelengths. */
+static inline bool trace_sample(struct job *j, struct trace_ctx *c, double x,
+                                double y, double rgb[NCH])
+{
+    if (j->one_ray)
+        return trace_one(j, c, x, y, 0, x, y, rgb);
+    return trace_sample_multi(j, c, x, y, rgb);
 }
 
 /* A traced sample of the AA buffers: its colour and, once, the colour the
@@ -283,10 +323,29 @@ static inline bool aa_lut(const struct eye_aa_gamma *a, double v, double *g)
     return true;
 }
 
-double eye_aa_gamma_apply(const struct eye_aa_gamma *a, const double c[3],
-                          double g[3])
+/* eye_aa_gamma_apply(), inline in px_gamma() (once or twice a pixel: its
+** call and the reloads of 'a' per channel were a third of its cost) */
+static inline double aa_gamma_apply(const struct eye_aa_gamma *a,
+                                    const double c[3], double g[3])
 {
     double err = 0.0;
+    if (a->lut) {
+        /* the usual exponent, 0 < e < 1: the tests below come down to
+        ** v = 0 and the table (the others only off the table's range) */
+        bool all = true;
+        for (int k = 0; k < 3; k++) {
+            double v = c[k] > 0.0 ? c[k] : 0.0;
+            if (v == 0.0)
+                g[k] = v;
+            else if (aa_lut(a, v, &g[k]))
+                err += g[k] * a->lut_rel;
+            else
+                all = false;
+        }
+        if (all)
+            return err;
+        err = 0.0;             /* some channel off the table: all again */
+    }
     for (int k = 0; k < 3; k++) {
         double v = c[k] > 0.0 ? c[k] : 0.0; /* fmax(c, 0): no call */
         if (a->e == 1.0 || (v == 0.0 && a->e > 0.0)) {
@@ -301,6 +360,12 @@ double eye_aa_gamma_apply(const struct eye_aa_gamma *a, const double c[3],
         }
     }
     return err;
+}
+
+double eye_aa_gamma_apply(const struct eye_aa_gamma *a, const double c[3],
+                          double g[3])
+{
+    return aa_gamma_apply(a, c, g);
 }
 
 /* g(v) = ((v + 0.055) / 1.055)^2.4, iris_srgb_decode() above 0.04045.
@@ -365,7 +430,7 @@ float eye_srgb_decode(const struct eye_srgb *s, double v)
 ** time). */
 static void px_gamma(const struct job *j, struct px *p)
 {
-    p->gerr = eye_aa_gamma_apply(&j->gam, p->c, p->g);
+    p->gerr = aa_gamma_apply(&j->gam, p->c, p->g);
 }
 
 static void px_gamma_exact(const struct job *j, struct px *p)
@@ -463,20 +528,15 @@ static bool stratified(struct job *j, struct trace_ctx *c, int x, int y,
     return spectral;
 }
 
-/* Writes pixel (x, y) from the mean of its samples. The samples were
-** summed unclipped; only here does the colour enter the gamut: a pixel
-** with spectral samples keeps its luminance (eye_gamut_map), an RGB one
-** has its negative channels clipped to 0 as POV-Ray does. Under +UA the
-** alpha is 1 - the mean transmit, and the colour stays premultiplied by
-** it (a transparent background contributes no colour). */
-static void put_pixel(struct job *j, int x, int y, const double in[NCH],
-                      bool spectral)
+/* put_pixel()'s colour, every case: the samples were summed unclipped;
+** only here does the colour enter the gamut: a pixel with spectral
+** samples keeps its luminance (eye_gamut_map), an RGB one has its
+** negative channels clipped to 0 as POV-Ray does. */
+static __attribute__((noinline)) void pixel_colour(struct job *j,
+                                                   const double in[NCH],
+                                                   bool spectral, float *px)
 {
     const struct tracer *t = j->tracer;
-    /* interrupted: the pixel's rays may have stopped (trace_stopped) */
-    if (t->interrupt && *t->interrupt)
-        return;
-    float *px = &j->out->pixels[((size_t)y * j->out->width + x) * 4];
     double col[3] = { in[0], in[1], in[2] };
     if (!isfinite(col[0]) || !isfinite(col[1]) || !isfinite(col[2])) {
         col[0] = col[1] = col[2] = 0.0;
@@ -497,6 +557,38 @@ static void put_pixel(struct job *j, int x, int y, const double in[NCH],
         if (t->working_gamma != 1.0)
             v = pow(v, t->working_gamma);
         px[k] = (float)v;
+    }
+}
+
+/* Writes pixel (x, y) from the mean of its samples (pixel_colour). Under
+** +UA the alpha is 1 - the mean transmit, and the colour stays
+** premultiplied by it (a transparent background contributes no colour).
+** The usual pixels (finite, RGB, in a linear working space, j->px_linear,
+** or a legacy scene's, j->srgb) are pixel_colour()'s work done here
+** without its other tests: they cost about half of this function's
+** instructions per pixel. */
+static void put_pixel(struct job *j, int x, int y, const double in[NCH],
+                      bool spectral)
+{
+    const struct tracer *t = j->tracer;
+    /* interrupted: the pixel's rays may have stopped (trace_stopped) */
+    if (t->interrupt && *t->interrupt)
+        return;
+    float *px = &j->out->pixels[((size_t)y * j->out->width + x) * 4];
+    /* v * 0 is 0 for finite v, NaN for an infinity or NaN */
+    if (j->px_linear && !spectral &&
+        in[0] * 0.0 + in[1] * 0.0 + in[2] * 0.0 == 0.0) {
+        for (int k = 0; k < 3; k++)
+            px[k] = (float)(in[k] < 0.0 ? 0.0 : in[k]);
+    } else if (j->srgb && !spectral &&
+               in[0] * 0.0 + in[1] * 0.0 + in[2] * 0.0 == 0.0) {
+        /* a legacy scene's pixel, likewise */
+        for (int k = 0; k < 3; k++) {
+            double v = in[k] < 0.0 ? 0.0 : in[k];
+            px[k] = eye_srgb_decode(j->srgb, v < 1.0 ? v : 1.0);
+        }
+    } else {
+        pixel_colour(j, in, spectral, px);
     }
     double a = isfinite(in[3]) ? 1.0 - in[3] : 1.0;
     px[3] = j->opts->alpha ? (float)(a < 0.0 ? 0.0 : a > 1.0 ? 1.0 : a) : 1.0f;
@@ -816,6 +908,7 @@ enum iris_status eyepass_run(const struct tracer *tr,
               scene->camera.kind == IRIS_CAM_MESH;
     j.has_pinhole = cam_pinhole_setup(&j.pinhole, &scene->camera,
                                       opts->width, opts->height);
+    camera_axes(&scene->camera, &j.axes);
     if (threads < 1)
         threads = 1;
     trace_containing(tr, scene->camera.location, &j.cam_stack);
@@ -824,6 +917,12 @@ enum iris_status eyepass_run(const struct tracer *tr,
     struct tracer gt = *tr;
     tr = j.tracer = &gt;
     j.blur = focal_blur_wanted(&scene->camera);
+    j.one_ray = !j.blur && scene->camera.kind != IRIS_CAM_MESH;
+    j.px_linear = !tr->gamma_off && tr->working_gamma == 1.0;
+    if (j.has_pinhole && !j.blur) {
+        double e = accel_origin_epsilon(j.pinhole.location, tr->q.eps);
+        j.pin_tmin = e > 0.0 && e <= tr->q.eps ? e : 0.0;
+    }
     if (j.blur && !focal_blur_init(&j.fb, &scene->camera))
         return IRIS_ENOMEM;
     if (j.blur)

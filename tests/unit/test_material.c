@@ -289,6 +289,177 @@ static void test_colour_map(void **state)
     assert_near(c.g, 1, 0);
 }
 
+/*
+** checker() takes its floors by truncation to an integer (pattern.c
+** checker_floor): the pattern must be POV-Ray's definition, the parity of
+** floor(x + 1e-10) + floor(y + 1e-10) + floor(z + 1e-10) with libm's
+** floor, at every point: cell edges and the points a hair either side
+** (where truncation and floor part for negatives), -0, magnitudes up to
+** 2^52 (the last with fractions), past it (integers only) and past 2^62
+** (floor() itself), and a pseudo-random sweep over 40 octaves.
+*/
+static double checker_def(vec3 p)
+{
+    double s = floor(p.x + 1e-10) + floor(p.y + 1e-10) + floor(p.z + 1e-10);
+    return ((long long)s & 1) ? 1.0 : 0.0;
+}
+
+static void test_checker_exact(void **state)
+{
+    (void)state;
+    const double edge[] = { 0.0, -0.0, 1.0, -1.0, 2.0, -3.0, 1e-10, -1e-10,
+                            0.5, -0.5, 1e6 + 0.5, -1e6 - 0.5,
+                            0x1p52, -0x1p52, 0x1p52 - 0.5, -0x1p52 + 0.5,
+                            0x1p53 + 2.0, -0x1p53 - 2.0, 1e17, -1e17,
+                            0x1p62, -0x1p62, 0x1p61 + 1024.0, 5e18, -5e18 };
+    const int ne = (int)(sizeof edge / sizeof edge[0]);
+    int ones = 0, n = 0;
+    for (int a = 0; a < ne; a++)
+        for (int b = 0; b < ne; b++) {
+            /* the sum of the three stays inside long long's range */
+            if (fabs(edge[a]) > 1e18 && fabs(edge[b]) > 1e18)
+                continue;
+            bool big = fabs(edge[a]) > 1e18 || fabs(edge[b]) > 1e18;
+            for (int k = -1; k <= 1; k++) {
+                /* a hair below, at and above the value: the epsilon
+                ** moves the cell edge to -1e-10 */
+                double x = edge[a] + k * 1e-10 - 1e-10;
+                vec3 p = v3(x, edge[b], big ? 0.25 : -7.75);
+                double want = checker_def(p);
+                assert_true(simple(IRIS_PAT_CHECKER, p) == want);
+                p = v3(nextafter(edge[b] - 1e-10, -INFINITY), x, 0.5);
+                assert_true(simple(IRIS_PAT_CHECKER, p) == checker_def(p));
+                ones += want == 1.0;
+                n++;
+            }
+        }
+    /* both values occur (21 % ones: most edges are even) */
+    assert_true(ones > n / 10 && ones < 9 * n / 10);
+    uint64_t r = 88172645463325252u;
+    for (int i = 0; i < 200000; i++) {
+        double c[3];
+        for (int k = 0; k < 3; k++) {
+            r ^= r << 13;
+            r ^= r >> 7;
+            r ^= r << 17;
+            double u = (double)(r >> 11) * 0x1p-53;
+            int oct = (int)(r % 40) - 8;      /* 2^-8 .. 2^31 */
+            c[k] = ldexp(u, oct) * ((r >> 5) & 1 ? -1.0 : 1.0);
+        }
+        vec3 p = v3(c[0], c[1], c[2]);
+        assert_true(simple(IRIS_PAT_CHECKER, p) == checker_def(p));
+    }
+}
+
+/*
+** A texture_map whose value falls on an entry, or a material_map, takes
+** that entry whole (texture.c eval_entry_whole): over no layers the
+** entry's own evaluation is the result, one stack of weight 1 holding its
+** layers top first; an entry that blends (a texture_map of its own) keeps
+** its two stacks and weights; with a plain layer on top of the map that
+** layer heads every stack. Expectations from the texture_map rules
+** (entry value v: weight 1 at v exactly, (v - v0) / (v1 - v0) between).
+*/
+static void test_map_entry_whole(void **state)
+{
+    (void)state;
+    iris_finish f;
+    memset(&f, 0, sizeof f);
+    f.diffuse = 0.6;
+    iris_pigment pr, pg, pb, pt_top;
+    memset(&pr, 0, sizeof pr);
+    memset(&pg, 0, sizeof pg);
+    memset(&pb, 0, sizeof pb);
+    memset(&pt_top, 0, sizeof pt_top);
+    pr.colour = rgb(1, 0, 0);
+    pr.colour.t = 0.5;          /* see-through: the layer below counts */
+    pg.colour = rgb(0, 1, 0);
+    pb.colour = rgb(0, 0, 1);
+    pt_top.colour.f = 0.25;
+    iris_texture tr, tg, tb, inner, map, top;
+    memset(&tr, 0, sizeof tr);
+    memset(&tg, 0, sizeof tg);
+    memset(&tb, 0, sizeof tb);
+    memset(&inner, 0, sizeof inner);
+    memset(&map, 0, sizeof map);
+    memset(&top, 0, sizeof top);
+    tr.pigment = &pr; tr.finish = &f; tr.next = &tg; /* 2 plain layers */
+    tg.pigment = &pg; tg.finish = &f;
+    tb.pigment = &pb; tb.finish = &f;
+    /* inner: gradient y, green at 0, blue at 1 */
+    iris_map_entry ie[2];
+    memset(ie, 0, sizeof ie);
+    ie[0].value = 0; ie[0].texture = &tg;
+    ie[1].value = 1; ie[1].texture = &tb;
+    inner.map_pattern.kind = IRIS_PAT_GRADIENT;
+    inner.map_pattern.vector = v3(0, 1, 0);
+    inner.n_entries = 2;
+    inner.entries = ie;
+    /* map: gradient x, the 2-layer list at 0, inner at 0.5, blue at 1 */
+    iris_map_entry e[3];
+    memset(e, 0, sizeof e);
+    e[0].value = 0; e[0].texture = &tr;
+    e[1].value = 0.5; e[1].texture = &inner;
+    e[2].value = 1; e[2].texture = &tb;
+    map.map_pattern.kind = IRIS_PAT_GRADIENT;
+    map.map_pattern.vector = v3(1, 0, 0);
+    map.n_entries = 3;
+    map.entries = e;
+    struct mat_point pt;
+    memset(&pt, 0, sizeof pt);
+    pt.n = v3(0, 1, 0);
+    struct mat_eval ev;
+
+    /* x = 0: the list entry whole, red over green */
+    pt.p = v3(0, 0.3, 0);
+    mat_eval_texture(NULL, &map, &pt, &ev);
+    assert_int_equal(ev.n_stacks, 1);
+    assert_true(ev.stacks[0].weight == 1.0);
+    assert_int_equal(ev.stacks[0].first, 0);
+    assert_int_equal(ev.stacks[0].n, 2);
+    assert_int_equal(ev.n_layers, 2);
+    assert_true(ev.layers[0].pigment.r == 1 && ev.layers[0].pigment.t == 0.5);
+    assert_true(ev.layers[1].pigment.g == 1);
+    assert_true(ev.layers[0].finish == &f && ev.layers[0].valid);
+
+    /* x = 0.5: the inner map whole, at y = 0.3 green 0.7, blue 0.3 */
+    pt.p = v3(0.5, 0.3, 0);
+    mat_eval_texture(NULL, &map, &pt, &ev);
+    assert_int_equal(ev.n_stacks, 2);
+    double wg = 0, wb = 0;
+    for (int s = 0; s < 2; s++) {
+        assert_int_equal(ev.stacks[s].n, 1);
+        const struct mat_layer *l = &ev.layers[ev.stacks[s].first];
+        if (l->pigment.g == 1) wg = ev.stacks[s].weight;
+        if (l->pigment.b == 1) wb = ev.stacks[s].weight;
+    }
+    assert_near(wg, 0.7, 1e-12);
+    assert_near(wb, 0.3, 1e-12);
+    assert_near(ev.stacks[0].weight, 0.7, 1e-12); /* heaviest first */
+
+    /* a plain layer over the map: on top of the entry's layers */
+    top.pigment = &pt_top; top.finish = &f; top.next = &map;
+    pt.p = v3(0, 0.3, 0);
+    mat_eval_texture(NULL, &top, &pt, &ev);
+    assert_int_equal(ev.n_stacks, 1);
+    assert_true(ev.stacks[0].weight == 1.0);
+    assert_int_equal(ev.stacks[0].n, 3);
+    assert_true(ev.layers[ev.stacks[0].first].pigment.f == 0.25);
+    assert_true(ev.layers[ev.stacks[0].first + 1].pigment.r == 1);
+    assert_true(ev.layers[ev.stacks[0].first + 2].pigment.g == 1);
+
+    /* and between two entries both are kept: x = 0.75, inner 0.5 and
+    ** blue 0.5, the inner one split 0.7 / 0.3 */
+    pt.p = v3(0.75, 0.3, 0);
+    mat_eval_texture(NULL, &map, &pt, &ev);
+    assert_int_equal(ev.n_stacks, 3);
+    double sum = 0;
+    for (int s = 0; s < 3; s++)
+        sum += ev.stacks[s].weight;
+    assert_near(sum, 1.0, 1e-12);
+    assert_near(ev.stacks[0].weight, 0.5, 1e-12);
+}
+
 /* A texture_map splits into two weighted stacks; layers stack on top. */
 static void test_texture_stacks(void **state)
 {
@@ -740,10 +911,12 @@ int main(void)
         cmocka_unit_test(test_noise_patterns),
         cmocka_unit_test(test_cells_crackle),
         cmocka_unit_test(test_list_patterns),
+        cmocka_unit_test(test_checker_exact),
         cmocka_unit_test(test_value_patterns),
         cmocka_unit_test(test_pattern_transform),
         cmocka_unit_test(test_colour_map),
         cmocka_unit_test(test_texture_stacks),
+        cmocka_unit_test(test_map_entry_whole),
         cmocka_unit_test(test_plain_layers),
         cmocka_unit_test(test_fmax_fmin),
         cmocka_unit_test(test_fresnel),
