@@ -229,6 +229,8 @@ static void texture(FILE *o, int d, const iris_texture *t)
                                         : pattern_name(t->normal->pattern.kind),
                     t->normal->amount);
             pattern(o, d + 2, &t->normal->pattern);
+            if (t->normal->entry_xf)
+                xform(o, d + 2, "entry transform", t->normal->entry_xf);
             entries(o, d + 2, t->normal->entries, t->normal->n_entries,
                     t->normal->is_slope_map ? 4 : 2);
         }

@@ -229,6 +229,20 @@ static void rparen(pp_state *ps) { pp_expect(ps, T_RPAREN, "')'"); }
 ** only min/max insist on theirs). */
 static void comma(pp_state *ps) { pp_accept(ps, T_COMMA); }
 
+/* A float argument that may be infinite or NaN (min, max). */
+static double any_float(pp_state *ps)
+{
+    pp_next(ps);
+    pp_token at = ps->tok;
+    pp_unget(ps);
+    pp_value v = expr_add(ps);
+    need_numeric(ps, &at, &v);
+    if (v.dim != 1)
+        pp_error(ps, &at, "expected a float, found a %d-component vector",
+                 v.dim);
+    return v.v[0];
+}
+
 static double arg1(pp_state *ps)
 {
     lparen(ps);
@@ -866,10 +880,13 @@ static pp_value factor(pp_state *ps)
         return fval((double)r);
     }
     case T_MAX: case T_MIN: {
+        /* the arguments may be infinite (POV-Ray's x / 0 is HUGE_VAL):
+        ** min(1 / 0, 4) is 4 there; only the result must be finite
+        ** where it is used */
         lparen(ps);
-        double r = pp_float(ps);
+        double r = any_float(ps);
         while (pp_accept(ps, T_COMMA)) {
-            double x = pp_float(ps);
+            double x = any_float(ps);
             r = k == T_MAX ? fmax(r, x) : fmin(r, x);
         }
         rparen(ps);

@@ -1294,7 +1294,45 @@ iris_pigment *pp_pig_transform(pp_state *ps, const iris_pigment *p,
     return pig_xf(ps, p, xf, false);
 }
 
-/* pig_xf for normals. */
+/* entries_shareable for normals: a normal_map's entries (not a
+** slope_map's, which hold numbers). */
+static bool nor_entries_shareable(const iris_normal *p, int depth)
+{
+    if (!p->n_entries || p->is_slope_map)
+        return true;
+    if (depth > 64)
+        return false;
+    for (int i = 0; i < p->n_entries; i++) {
+        const iris_normal *e = p->entries[i].normal;
+        if (e && (e->pattern.uv_mapping || e->pattern.kind == IRIS_PAT_SLOPE ||
+                  !nor_entries_shareable(e, depth + 1)))
+            return false;
+    }
+    return true;
+}
+
+static iris_normal *nor_xf(pp_state *ps, const iris_normal *p,
+                           const iris_transform *xf, bool own);
+
+/* pig_flat for normals. */
+static iris_normal *nor_flat(pp_state *ps, const iris_normal *p)
+{
+    if (!p || !p->entry_xf)
+        return (iris_normal *)p;
+    iris_normal *n = pp_alloc(ps, sizeof *n);
+    *n = *p;
+    n->entry_xf = NULL;
+    n->entries = pp_alloc(ps, (size_t)n->n_entries * sizeof *n->entries);
+    memcpy(n->entries, p->entries, (size_t)n->n_entries * sizeof *n->entries);
+    for (int i = 0; i < n->n_entries; i++)
+        n->entries[i].normal = nor_xf(ps, p->entries[i].normal,
+                                      p->entry_xf, true);
+    return n;
+}
+
+/* pig_xf for normals: a normal_map's entries stay shared too, the
+** transform kept beside them (normal.c's perturb() moves the point and
+** the normal by it around them, as the pushed transform would). */
 static iris_normal *nor_xf(pp_state *ps, const iris_normal *p,
                            const iris_transform *xf, bool own)
 {
@@ -1303,6 +1341,21 @@ static iris_normal *nor_xf(pp_state *ps, const iris_normal *p,
     iris_normal *n = pp_alloc(ps, sizeof *n);
     *n = *p;
     pattern_xf(&n->pattern, xf);
+    if (n->n_entries && !n->is_slope_map && !p->pattern.uv_mapping &&
+        nor_entries_shareable(p, 0)) {
+        iris_transform *x = pp_alloc(ps, sizeof *x);
+        if (p->entry_xf)
+            xf_compose(x, p->entry_xf, xf);
+        else
+            *x = *xf;
+        n->entry_xf = x;
+        return n;
+    }
+    if (n->entry_xf) {
+        p = nor_flat(ps, p);
+        *n = *p;
+        pattern_xf(&n->pattern, xf);
+    }
     if (n->n_entries && !n->is_slope_map) {
         n->entries = pp_alloc(ps, (size_t)n->n_entries * sizeof *n->entries);
         memcpy(n->entries, p->entries, (size_t)n->n_entries * sizeof *n->entries);
@@ -1691,6 +1744,7 @@ static iris_normal *normal_body(pp_state *ps, const iris_normal *base,
                                               at.val.u.map->e,
                                               at.val.u.map->n, at.val.kind);
             n->is_slope_map = at.val.kind == V_SLOPE_MAP;
+            n->entry_xf = NULL;
             continue;
         }
         if (k == T_NORMAL_MAP || k == T_SLOPE_MAP) {
@@ -1700,6 +1754,7 @@ static iris_normal *normal_body(pp_state *ps, const iris_normal *base,
             n->entries = entries_in_map_space(ps, &n->pattern, m->e, m->n,
                                               m->kind);
             n->is_slope_map = k == T_SLOPE_MAP;
+            n->entry_xf = NULL;
             continue;
         }
         if (k == T_BUMP_SIZE) {
@@ -1764,6 +1819,7 @@ static iris_normal *normal_body(pp_state *ps, const iris_normal *base,
                 if (cnt) {
                     n->n_entries = cnt;
                     n->entries = e;
+                    n->entry_xf = NULL;
                     continue;
                 }
             }
@@ -2038,6 +2094,7 @@ static iris_normal *nor_uv(pp_state *ps, const iris_normal *p)
 {
     if (!p)
         return NULL;
+    p = nor_flat(ps, p);
     iris_normal *n = pp_alloc(ps, sizeof *n);
     *n = *p;
     n->pattern.uv_mapping = true;

@@ -233,6 +233,10 @@ typedef struct iris_normal {
     ** inherit it */
     bool no_bump_scale;
     iris_image_ref *bump_map;
+    /* As iris_pigment.entry_xf, for a normal_map's entries: they are
+    ** perturbed at the point moved back by it, the normal taken to its
+    ** space and back (NULL: none). */
+    const iris_transform *entry_xf;
 } iris_normal;
 
 /* A finish{} with POV-Ray's defaults (scene.c: iris_finish_defaults). */

@@ -221,6 +221,26 @@ static bool is_normal_map(const iris_normal *nrm)
     return nrm->n_entries > 0 && !nrm->is_slope_map;
 }
 
+static vec3 perturb(const struct mat_ctx *ctx, const iris_normal *nrm,
+                    const struct mat_point *pt, vec3 n, bool keep);
+
+/* Entry 'e' of normal_map 'map' at 'pt' (already through the map's
+** warps): with the map's entry_xf (shared entries, scene.h), the point
+** moved back by it and the normal taken to its space and back, as the
+** entry's own transform would have done had the parser pushed it in. */
+static vec3 perturb_entry(const struct mat_ctx *ctx, const iris_normal *map,
+                          const iris_normal *e, const struct mat_point *pt,
+                          vec3 n, bool keep)
+{
+    if (!map->entry_xf || !e || e->pattern.kind == IRIS_PAT_NONE)
+        return perturb(ctx, e, pt, n, keep);
+    struct mat_point ept = *pt;
+    ept.p = xf_inv_point(map->entry_xf, pt->p);
+    vec3 r = perturb(ctx, e, &ept, normal_to_pattern(map->entry_xf, n), keep);
+    r = normal_to_world(map->entry_xf, r);
+    return keep ? r : v3_norm(r);
+}
+
 /* Perturb_Normal; 'keep' is no_bump_scale, set on the normal or handed
 ** down from a normal_map holding it (POV-Ray's NormalBlendMap::Post). */
 static vec3 perturb(const struct mat_ctx *ctx, const iris_normal *nrm,
@@ -247,10 +267,12 @@ static vec3 perturb(const struct mat_ctx *ctx, const iris_normal *nrm,
         /* the entries see the map pattern's warps (pat_warp_world) */
         struct mat_point wpt = *pt;
         wpt.p = pat_warp_world(ctx, pat, pat_input(pat, pt->p, pt));
-        vec3 nc = perturb(ctx, nrm->entries[c].normal, &wpt, n, keep);
+        vec3 nc = perturb_entry(ctx, nrm, nrm->entries[c].normal, &wpt, n,
+                                keep);
         if (p == c)
             return v3_norm(nc);
-        vec3 np = perturb(ctx, nrm->entries[p].normal, &wpt, n, keep);
+        vec3 np = perturb_entry(ctx, nrm, nrm->entries[p].normal, &wpt, n,
+                                keep);
         double t = (v - nrm->entries[p].value) /
                    (nrm->entries[c].value - nrm->entries[p].value);
         return v3_norm(v3_add(v3_scale(np, 1 - t), v3_scale(nc, t)));
@@ -262,8 +284,8 @@ static vec3 perturb(const struct mat_ctx *ctx, const iris_normal *nrm,
         wpt.p = pat_warp_world(ctx, pat, pat_input(pat, pt->p, pt));
         for (int i = 0; i < nrm->n_entries; i++) {
             double w = nrm->entries[i].value != 0 ? nrm->entries[i].value : 1;
-            sum = v3_madd(sum, perturb(ctx, nrm->entries[i].normal, &wpt,
-                                       n, keep), w);
+            sum = v3_madd(sum, perturb_entry(ctx, nrm, nrm->entries[i].normal,
+                                             &wpt, n, keep), w);
             total += w;
         }
         return total > 0 ? v3_norm(sum) : n;
