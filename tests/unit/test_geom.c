@@ -712,7 +712,8 @@ static void test_superellipsoid(void **state)
 ** is the same). Rays from outside, and from inside the box with t0 past
 ** the entry (a secondary ray), over superellipsoids (whole powers by
 ** squaring and pow) and julia_fractal sets (quaternion sqr and cube,
-** hypercomplex sqr).
+** hypercomplex sqr, exp and reciprocal: the complex functions' march
+** steps with one iteration and bisects with POV-Ray 3.7's other one).
 */
 static int first_only_multi; /* checks where the full search found more */
 
@@ -755,19 +756,25 @@ static void test_first_only(void **state)
     se[1].u.superellipsoid.n = 2.5;
     se[2].u.superellipsoid.e = 1;      /* powers 2 and 1: the sphere */
     se[2].u.superellipsoid.n = 1;
-    iris_object ju[3] = { mk(IRIS_OBJ_JULIA_FRACTAL),
+    iris_object ju[5] = { mk(IRIS_OBJ_JULIA_FRACTAL),
+                          mk(IRIS_OBJ_JULIA_FRACTAL),
+                          mk(IRIS_OBJ_JULIA_FRACTAL),
                           mk(IRIS_OBJ_JULIA_FRACTAL),
                           mk(IRIS_OBJ_JULIA_FRACTAL) };
-    const double c[3][4] = { { -0.083, 0.0, -0.83, -0.025 },
+    const double c[5][4] = { { -0.083, 0.0, -0.83, -0.025 },
                              { -0.2, 0.0, 0.5, 0.0 },
-                             { 0.2, 0.1, 0.59, -0.2 } };
-    for (int j = 0; j < 3; j++) {
+                             { 0.2, 0.1, 0.59, -0.2 },
+                             { -0.3, 0.5, 0.1, 0.1 },
+                             { -0.2, 0.6, 0.2, -0.1 } };
+    const int fn[5] = { IRIS_JULIA_SQR, IRIS_JULIA_CUBE, IRIS_JULIA_SQR,
+                        IRIS_JULIA_EXP, IRIS_JULIA_RECIPROCAL };
+    for (int j = 0; j < 5; j++) {
         for (int k = 0; k < 4; k++)
             ju[j].u.julia.data[k] = c[j][k];
         ju[j].u.julia.iterations = 8;
         ju[j].u.julia.precision = 20;
-        ju[j].u.julia.fn = j == 1 ? IRIS_JULIA_CUBE : IRIS_JULIA_SQR;
-        ju[j].u.julia.type = j == 2;   /* 1: hypercomplex */
+        ju[j].u.julia.fn = fn[j];
+        ju[j].u.julia.type = j >= 2;   /* 1: hypercomplex */
     }
     uint64_t r = 12345;
     for (int i = 0; i < 200; i++) {
@@ -780,14 +787,16 @@ static void test_first_only(void **state)
         vec3 rd = v3_sub(v3(0.8 * u[3], 0.8 * u[4], 0.8 * u[5]), ro);
         for (int j = 0; j < 3; j++) {
             check_first_only(&se[j], ro, rd, 0);
-            check_first_only(&ju[j], ro, rd, 0);
             /* a ray starting inside the box, past a first crossing */
             check_first_only(&se[j], ro, rd, 0.99);
+        }
+        for (int j = 0; j < 5; j++) {
+            check_first_only(&ju[j], ro, rd, 0);
             check_first_only(&ju[j], ro, rd, 0.99);
         }
     }
     /* not vacuous: many rays cross a shape more than once */
-    print_message("# %d of 2400 checks had several crossings\n",
+    print_message("# %d of 3200 checks had several crossings\n",
                   first_only_multi);
     assert_true(first_only_multi >= 200);
     /* <0.05, 0.05> along x: |x|^40 = 1 at x = -1 exactly, t = 4 (the
