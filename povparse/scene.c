@@ -166,6 +166,9 @@ iris_camera *pp_camera(pp_state *ps, const iris_camera *base)
     bool has_right = false, has_dir = false, has_angle = false;
     bool has_up = false, has_sky = false, has_loc = false, has_look = false;
     bool has_focal = false;
+    /* copied from a declared camera (POV-Ray 3.5+ then takes only
+    ** transforms: its Parse_Camera 'only_mods' path, no resizing) */
+    bool copied = false;
     iris_vec3 right = c->right, dir = c->direction, up = c->up;
     iris_vec3 sky = c->sky, loc = c->location, look = c->look_at;
     double angle = 0;
@@ -184,6 +187,7 @@ iris_camera *pp_camera(pp_state *ps, const iris_camera *base)
                 *c = *at.val.u.cam;
                 right = c->right; dir = c->direction; up = c->up;
                 sky = c->sky; loc = c->location; look = c->look_at;
+                copied = true;
                 break;
             }
             goto bad;
@@ -364,8 +368,15 @@ resolve:
     /* orthographic cameras without explicit size (or with an angle) cover
     ** the view at the look_at point, also without a look_at: then the
     ** default one, <0, 0, 1>, or the copied camera's (POV-Ray's
-    ** Parse_Camera; t-o-k's Icosahedron: location -24*z angle 15) */
-    if (c->kind == IRIS_CAM_ORTHOGRAPHIC &&
+    ** Parse_Camera; t-o-k's Icosahedron: location -24*z angle 15). A
+    ** copy of a declared camera with nothing but transforms is not
+    ** resized again: it was sized when it was declared (POV-Ray's
+    ** 'only_mods' path; templates/Basic_Scenes/Orthographic_isometric.pov,
+    ** 'camera { Camera_1 }', was 13 dB after the rule above took the
+    ** default look_at into account) */
+    bool only_copied = copied && !has_angle && !has_up && !has_right &&
+                       !has_look && !has_dir && !has_loc;
+    if (c->kind == IRIS_CAM_ORTHOGRAPHIC && !only_copied &&
         ((!has_up && !has_right) || has_angle)) {
         double k1 = v3_len(v3_sub(c->look_at, c->location));
         double k2 = v3_len(c->direction);
