@@ -274,3 +274,13 @@ bool povbox_target(const iris_object *t, povbox_leaf_fn leaf,
     *hi = b.hi;
     return true;
 }
+
+bool povbox_blob(const iris_object *o, vec3 *lo, vec3 *hi)
+{
+    struct box b;
+    if (!o || o->kind != IRIS_OBJ_BLOB || !blob_box(o, &b))
+        return false;
+    *lo = b.lo;
+    *hi = b.hi;
+    return true;
+}

@@ -26,4 +26,12 @@ typedef bool (*povbox_leaf_fn)(const void *ctx, const iris_object *o,
 bool povbox_target(const iris_object *t, povbox_leaf_fn leaf,
                    const void *ctx, vec3 *lo, vec3 *hi);
 
+/*
+** POV-Ray's world box of blob 'o' (Blob::Compute_BBox: its positive
+** components' bounding spheres, then the blob's transform by the box's
+** corners): what POV-Ray's min_extent/max_extent return for a blob.
+** False when 'o' is not a blob or has no positive component.
+*/
+bool povbox_blob(const iris_object *o, vec3 *lo, vec3 *hi);
+
 #endif
