@@ -1394,6 +1394,33 @@ static double brute_box(const iris_object *b, vec3 o, vec3 d, double tmin,
 }
 
 /*
+** Moves 'o' by a random scale (0.5-1.5 on each axis), rotation and
+** translation (within 6 of the origin), drawn from 'g' in that order, and
+** in the clipped variant clips it by a sphere holding the whole scene:
+** the fast-path tests below build each scene twice, plain and clipped
+** (the clipped one takes the general path), and compare hit for hit.
+*/
+static void place_randomly(iris_scene *sc, iris_object *o, rng *g,
+                           bool clipped)
+{
+    xform x;
+    xf_scale(&x, v3(0.5 + rng_uniform(g), 0.5 + rng_uniform(g),
+                    0.5 + rng_uniform(g)));
+    apply(o, &x);
+    xf_rotate(&x, v3(360 * rng_uniform(g), 360 * rng_uniform(g),
+                     360 * rng_uniform(g)));
+    apply(o, &x);
+    xf_translate(&x, v3(12 * rng_uniform(g) - 6, 12 * rng_uniform(g) - 6,
+                        12 * rng_uniform(g) - 6));
+    apply(o, &x);
+    if (clipped) {
+        o->n_clipped_by = 1;
+        o->clipped_by = arena_array(sc->arena, 1, sizeof(iris_object *));
+        o->clipped_by[0] = sphere(sc, v3(0, 0, 0), 100);
+    }
+}
+
+/*
 ** A box leaf without clipping takes node.c's box_nearest(), which must
 ** give what the general path (the crossing list of geom_box_hits, then
 ** shape_hits' world normals) gives: the same crossing, t, normal and uv
@@ -1424,23 +1451,7 @@ static void test_box_fast_path(void **state)
                              rng_uniform(&g) + 0.2);
                 iris_object *b = box_object(sc[v], lo, hi);
                 b->inverse = i == 1;
-                xform x;
-                xf_scale(&x, v3(0.5 + rng_uniform(&g), 0.5 + rng_uniform(&g),
-                                0.5 + rng_uniform(&g)));
-                apply(b, &x);
-                xf_rotate(&x, v3(360 * rng_uniform(&g), 360 * rng_uniform(&g),
-                                 360 * rng_uniform(&g)));
-                apply(b, &x);
-                xf_translate(&x, v3(12 * rng_uniform(&g) - 6,
-                                    12 * rng_uniform(&g) - 6,
-                                    12 * rng_uniform(&g) - 6));
-                apply(b, &x);
-                if (v == 1) {
-                    b->n_clipped_by = 1;
-                    b->clipped_by =
-                        arena_array(sc[v]->arena, 1, sizeof(iris_object *));
-                    b->clipped_by[0] = sphere(sc[v], v3(0, 0, 0), 100);
-                }
+                place_randomly(sc[v], b, &g, v == 1);
                 bx[v][i] = add(sc[v], b);
             }
         }
@@ -1556,23 +1567,7 @@ static void test_cone_fast_path(void **state)
                 }
                 o->inverse = i == 1;
                 o->texture = &uv_tex; /* the side's uv is compared */
-                xform x;
-                xf_scale(&x, v3(0.5 + rng_uniform(&g), 0.5 + rng_uniform(&g),
-                                0.5 + rng_uniform(&g)));
-                apply(o, &x);
-                xf_rotate(&x, v3(360 * rng_uniform(&g), 360 * rng_uniform(&g),
-                                 360 * rng_uniform(&g)));
-                apply(o, &x);
-                xf_translate(&x, v3(12 * rng_uniform(&g) - 6,
-                                    12 * rng_uniform(&g) - 6,
-                                    12 * rng_uniform(&g) - 6));
-                apply(o, &x);
-                if (v == 1) {
-                    o->n_clipped_by = 1;
-                    o->clipped_by =
-                        arena_array(sc[v]->arena, 1, sizeof(iris_object *));
-                    o->clipped_by[0] = sphere(sc[v], v3(0, 0, 0), 100);
-                }
+                place_randomly(sc[v], o, &g, v == 1);
                 sh[v][i] = add(sc[v], o);
             }
         }
@@ -1665,23 +1660,7 @@ static void test_torus_fast_path(void **state)
                 o->inverse = i == 1;
                 /* uv compared; one torus's plain texture reads none */
                 o->texture = i == 2 ? &plain_tex : &uv_tex;
-                xform x;
-                xf_scale(&x, v3(0.5 + rng_uniform(&g), 0.5 + rng_uniform(&g),
-                                0.5 + rng_uniform(&g)));
-                apply(o, &x);
-                xf_rotate(&x, v3(360 * rng_uniform(&g), 360 * rng_uniform(&g),
-                                 360 * rng_uniform(&g)));
-                apply(o, &x);
-                xf_translate(&x, v3(12 * rng_uniform(&g) - 6,
-                                    12 * rng_uniform(&g) - 6,
-                                    12 * rng_uniform(&g) - 6));
-                apply(o, &x);
-                if (v == 1) {
-                    o->n_clipped_by = 1;
-                    o->clipped_by =
-                        arena_array(sc[v]->arena, 1, sizeof(iris_object *));
-                    o->clipped_by[0] = sphere(sc[v], v3(0, 0, 0), 100);
-                }
+                place_randomly(sc[v], o, &g, v == 1);
                 sh[v][i] = add(sc[v], o);
             }
         }
