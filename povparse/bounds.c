@@ -28,27 +28,12 @@ static void axial_bounds(const iris_object *o, vec3 base, vec3 cap, double r,
 {
     vec3 d = v3_sub(cap, base);
     double len = v3_len(d);
-    vec3 u = v3(1, 0, 0), w = v3(0, 1, 0);
-    if (len > 0) {
-        d = v3_scale(d, 1 / len);
-        if (fabs(d.z) <= 1 - 1e-10) {
-            /* Rodrigues: rotate x and y about k by acos(d.z) */
-            double kl = sqrt(d.x * d.x + d.y * d.y);
-            vec3 k = v3(-d.y / kl, d.x / kl, 0);
-            double c = d.z, sn = kl;
-            vec3 e[2] = { v3(1, 0, 0), v3(0, 1, 0) };
-            for (int i = 0; i < 2; i++) {
-                vec3 v = e[i];
-                vec3 kv = v3(k.y * v.z - k.z * v.y, k.z * v.x - k.x * v.z,
-                             k.x * v.y - k.y * v.x);
-                double kd = k.x * v.x + k.y * v.y + k.z * v.z;
-                e[i] = v3_add(v3_add(v3_scale(v, c), v3_scale(kv, sn)),
-                              v3_scale(k, kd * (1 - c)));
-            }
-            u = e[0];
-            w = e[1];
-        }
-    }
+    vec3 e[3] = { v3(1, 0, 0), v3(0, 1, 0), v3(0, 0, 1) };
+    if (len > 0)
+        xf_axis_frame(v3_scale(d, 1 / len), e);
+    /* the box is symmetric in the frame's x and y: a half turn of the
+    ** frame (an axis along -z) gives the same corners */
+    vec3 u = e[0], w = e[1];
     *lo = v3(1e30, 1e30, 1e30);
     *hi = v3(-1e30, -1e30, -1e30);
     for (int i = 0; i < 8; i++) {

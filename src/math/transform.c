@@ -203,3 +203,26 @@ vec3 xf_normal(const xform *t, vec3 n)
               m[0][1] * n.x + m[1][1] * n.y + m[2][1] * n.z,
               m[0][2] * n.x + m[1][2] * n.y + m[2][2] * n.z);
 }
+
+void xf_axis_frame(vec3 d, vec3 e[3])
+{
+    e[0] = v3(1, 0, 0);
+    e[1] = v3(0, 1, 0);
+    e[2] = v3(0, 0, 1);
+    if (fabs(d.z) > 1 - 1e-10) {
+        if (d.z < 0) {
+            e[1] = v3(0, -1, 0);
+            e[2] = v3(0, 0, -1);
+        }
+        return;
+    }
+    /* Rodrigues: each axis turned about k by the angle of cosine d.z */
+    double kl = sqrt(d.x * d.x + d.y * d.y);
+    vec3 k = v3(-d.y / kl, d.x / kl, 0);
+    double c = d.z, sn = kl;
+    for (int i = 0; i < 3; i++) {
+        vec3 v = e[i];
+        e[i] = v3_add(v3_add(v3_scale(v, c), v3_scale(v3_cross(k, v), sn)),
+                      v3_scale(k, v3_dot(k, v) * (1 - c)));
+    }
+}

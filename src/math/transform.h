@@ -39,4 +39,12 @@ vec3 xf_inv_dir(const xform *t, vec3 d);
 /* Transforms a surface normal from local to world (not normalised). */
 vec3 xf_normal(const xform *t, vec3 n);
 
+/*
+** The frame POV-Ray gives an axis along unit 'd' (its
+** Compute_Coordinate_Transform, for cylinders, cones and a blob's
+** cylinder components): x, y and z turned about z x d by the angle
+** between z and d, so that e[2] = d; along -z a half turn about x.
+*/
+void xf_axis_frame(vec3 d, vec3 e[3]);
+
 #endif

@@ -74,13 +74,6 @@ static double element_radius(double r, vec3 ex, vec3 ey, vec3 ez)
     return r * fmax(sx, fmax(sy, sz));
 }
 
-/* Rodrigues: 'v' turned about unit 'k' by the angle of cosine c, sine s. */
-static vec3 turn(vec3 v, vec3 k, double c, double s)
-{
-    return v3_add(v3_add(v3_scale(v, c), v3_scale(v3_cross(k, v), s)),
-                  v3_scale(k, v3_dot(k, v) * (1.0 - c)));
-}
-
 /* Adds a blob component's elements (in the blob's space) to *b. */
 static void add_component(struct box *b, const iris_blob_component *bc)
 {
@@ -112,20 +105,10 @@ static void add_component(struct box *b, const iris_blob_component *bc)
     if (!(len > 0.0))
         return;
     vec3 up = v3_scale(axis, 1.0 / len);
-    /* The cylinder's frame (Compute_Coordinate_Transform): local z turned
-    ** onto 'up' about z x up, base at the origin */
-    vec3 e[3] = { v3(1, 0, 0), v3(0, 1, 0), v3(0, 0, 1) };
-    if (fabs(up.z) > 1.0 - 1e-10) {
-        if (up.z < 0.0) { /* a half turn about x */
-            e[1] = v3(0, -1, 0);
-            e[2] = v3(0, 0, -1);
-        }
-    } else {
-        vec3 k = v3_norm(v3(-up.y, up.x, 0.0));
-        double s = sqrt(fmax(0.0, 1.0 - up.z * up.z));
-        for (int i = 0; i < 3; i++)
-            e[i] = turn(e[i], k, up.z, s);
-    }
+    /* The cylinder's frame (Compute_Coordinate_Transform), base at the
+    ** origin */
+    vec3 e[3];
+    xf_axis_frame(up, e);
     for (int i = 0; i < 3; i++)
         e[i] = lin(cx, e[i]);
     /* element centres along local z: base, middle, apex */
