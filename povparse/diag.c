@@ -244,8 +244,20 @@ _Noreturn void pp_error(pp_state *ps, const pp_token *at, const char *fmt,
     longjmp(ps->jb, 1);
 }
 
+/*
+** Warnings kept in the list. Past this many they are only counted: a
+** #while that warns on each turn (a stray '#' in its body) would
+** otherwise spend its time filling copies of one warning (3 KB each;
+** libFuzzer found one that took over 10 s).
+*/
+#define MAX_KEPT_WARNINGS 1000
+
 void pp_warning(pp_state *ps, const pp_token *at, const char *fmt, ...)
 {
+    if (ps->diags && ps->diags->n_warnings >= MAX_KEPT_WARNINGS) {
+        ps->diags->n_warnings++;
+        return;
+    }
     iris_diag d;
     va_list ap;
     va_start(ap, fmt);

@@ -117,6 +117,28 @@ static void pattern(FILE *o, int d, const iris_pattern *p)
 
 static void pigment(FILE *o, int d, const iris_pigment *p);
 
+/*
+** Pigments and textures a dump still shows. Objects share declared map
+** trees, each up to IRIS_MAX_MAP_TREE pigments, and the dump writes a
+** tree out for each: past this many the rest are elided, so that a dump
+** (the fuzz targets write one for every input) stays short.
+*/
+#define DUMP_MAX_NODES 100000
+static _Thread_local unsigned long nodes_left;
+
+/* false (and a line saying so) once the dump has shown its share */
+static bool node_shown(FILE *o, int d, const char *what)
+{
+    if (nodes_left == 0) {
+        ind(o, d);
+        fprintf(o, "%s (not shown: past %d in this dump)\n", what,
+                DUMP_MAX_NODES);
+        return false;
+    }
+    nodes_left--;
+    return true;
+}
+
 static void entries(FILE *o, int d, const iris_map_entry *e, int n, int what)
 {
     for (int i = 0; i < n; i++) {
@@ -141,6 +163,8 @@ static void entries(FILE *o, int d, const iris_map_entry *e, int n, int what)
 
 static void pigment(FILE *o, int d, const iris_pigment *p)
 {
+    if (!node_shown(o, d, "pigment"))
+        return;
     ind(o, d);
     fprintf(o, "pigment %s", pattern_name(p->pattern.kind));
     if (p->pattern.kind == IRIS_PAT_NONE) {
@@ -204,6 +228,8 @@ static void texture(FILE *o, int d, const iris_texture *t)
 {
     int layer = 0;
     for (; t; t = t->next, layer++) {
+        if (!node_shown(o, d, "texture"))
+            return;
         ind(o, d);
         fprintf(o, "texture layer %d", layer);
         if (t->n_entries)
@@ -492,6 +518,7 @@ void iris_scene_dump(const iris_scene *s, FILE *o)
     static const char *const cams[] = { "perspective", "orthographic",
         "fisheye", "panoramic", "ultra_wide_angle", "omnimax", "cylinder",
         "spherical", "mesh_camera" };
+    nodes_left = DUMP_MAX_NODES;
     fprintf(o, "version %.6g\n", s->version);
     const iris_camera *c = &s->camera;
     fprintf(o, "camera %s%s\n", cams[c->kind], s->has_camera ? "" : " (default)");

@@ -4,4 +4,4 @@ libiris_core_la_SOURCES += %reldir%/pp.h %reldir%/pp_test.h %reldir%/tokens.def 
 	%reldir%/symtab.c %reldir%/expr.c %reldir%/bounds.c %reldir%/rvalue.c \
 	%reldir%/fnc.c %reldir%/mat.c %reldir%/obj.c %reldir%/scene.c \
 	%reldir%/parse.c %reldir%/dump.c %reldir%/gamma.c %reldir%/access.c \
-	%reldir%/media.c %reldir%/memfile.c
+	%reldir%/media.c %reldir%/memfile.c %reldir%/maptree.c

@@ -1212,20 +1212,13 @@ static iris_map_entry *entries_in_map_space(pp_state *ps,
 /* Whether the pigments under 'p' (its pigment entries, theirs, ...) may
 ** share one entry transform: none evaluates at the surface's uv point
 ** (which no outer transform moves) or reads the world point itself
-** (slope's point_at). */
-static bool entries_shareable(const iris_pigment *p, int depth)
+** (slope's point_at). Read from the entries' flags (maptree.c), not by
+** a walk: a map of maps sharing one map is a tree far larger than its
+** memory. */
+static bool entries_shareable(const iris_pigment *p)
 {
-    if (!p->n_entries || !p->is_pigment_map)
-        return true;
-    if (depth > 64)
-        return false;
-    for (int i = 0; i < p->n_entries; i++) {
-        const iris_pigment *e = p->entries[i].pigment;
-        if (e && (e->pattern.uv_mapping || e->pattern.kind == IRIS_PAT_SLOPE ||
-                  !entries_shareable(e, depth + 1)))
-            return false;
-    }
-    return true;
+    return !p->n_entries || !p->is_pigment_map ||
+           !pp_pig_entries_pointwise(p);
 }
 
 static iris_pigment *pig_xf(pp_state *ps, const iris_pigment *p,
@@ -1265,7 +1258,7 @@ static iris_pigment *pig_xf(pp_state *ps, const iris_pigment *p,
     ** tree_of_squares_v4: 63 pigments x 5 transforms x 32768 boxes).
     */
     if (n->n_entries && n->is_pigment_map && !p->pattern.uv_mapping &&
-        entries_shareable(p, 0)) {
+        entries_shareable(p)) {
         iris_transform *x = pp_alloc(ps, sizeof *x);
         if (p->entry_xf)
             xf_compose(x, p->entry_xf, xf);
@@ -1296,19 +1289,9 @@ iris_pigment *pp_pig_transform(pp_state *ps, const iris_pigment *p,
 
 /* entries_shareable for normals: a normal_map's entries (not a
 ** slope_map's, which hold numbers). */
-static bool nor_entries_shareable(const iris_normal *p, int depth)
+static bool nor_entries_shareable(const iris_normal *p)
 {
-    if (!p->n_entries || p->is_slope_map)
-        return true;
-    if (depth > 64)
-        return false;
-    for (int i = 0; i < p->n_entries; i++) {
-        const iris_normal *e = p->entries[i].normal;
-        if (e && (e->pattern.uv_mapping || e->pattern.kind == IRIS_PAT_SLOPE ||
-                  !nor_entries_shareable(e, depth + 1)))
-            return false;
-    }
-    return true;
+    return !p->n_entries || p->is_slope_map || !pp_nor_entries_pointwise(p);
 }
 
 static iris_normal *nor_xf(pp_state *ps, const iris_normal *p,
@@ -1342,7 +1325,7 @@ static iris_normal *nor_xf(pp_state *ps, const iris_normal *p,
     *n = *p;
     pattern_xf(&n->pattern, xf);
     if (n->n_entries && !n->is_slope_map && !p->pattern.uv_mapping &&
-        nor_entries_shareable(p, 0)) {
+        nor_entries_shareable(p)) {
         iris_transform *x = pp_alloc(ps, sizeof *x);
         if (p->entry_xf)
             xf_compose(x, p->entry_xf, xf);
@@ -1520,6 +1503,7 @@ static iris_pigment *pigment_body(pp_state *ps, const iris_pigment *base,
         int k = at.kind;
         if (k == end) {
             default_map(ps, p);
+            pp_pig_map_tree(ps, p, &open);
             return p;
         }
         if (k == T_EOF)
@@ -1729,8 +1713,10 @@ static iris_normal *normal_body(pp_state *ps, const iris_normal *base,
         pp_next(ps);
         pp_token at = ps->tok;
         int k = at.kind;
-        if (k == end)
+        if (k == end) {
+            pp_nor_map_tree(ps, n, &open);
             return n;
+        }
         if (k == T_EOF)
             pp_error(ps, &open, "normal without its closing bracket");
         if (k == T_IDENT && at.val.kind == V_NORMAL) {
@@ -2085,6 +2071,7 @@ static iris_pigment *pig_uv(pp_state *ps, const iris_pigment *p)
         memcpy(n->entries, p->entries, (size_t)n->n_entries * sizeof *n->entries);
         for (int i = 0; i < n->n_entries; i++)
             n->entries[i].pigment = pig_uv(ps, p->entries[i].pigment);
+        n->map_tree_pointwise = true; /* the entries read the uv point */
     }
     return n;
 }
@@ -2103,6 +2090,7 @@ static iris_normal *nor_uv(pp_state *ps, const iris_normal *p)
         memcpy(n->entries, p->entries, (size_t)n->n_entries * sizeof *n->entries);
         for (int i = 0; i < n->n_entries; i++)
             n->entries[i].normal = nor_uv(ps, p->entries[i].normal);
+        n->map_tree_pointwise = true; /* the entries read the uv point */
     }
     return n;
 }
@@ -2232,7 +2220,10 @@ static iris_texture *texture_body(pp_state *ps, int end)
         if (k == end) {
             if (no_bump_scale)
                 t = tex_no_bump_scale(ps, t);
-            return uv ? uv_texture(ps, t) : t;
+            if (uv)
+                t = uv_texture(ps, t);
+            pp_tex_map_tree(ps, t, &open);
+            return t;
         }
         if (k == T_NO_BUMP_SCALE) {
             no_bump_scale = pp_bool_opt(ps) || no_bump_scale;

@@ -836,6 +836,7 @@ static iris_texture *face_blend_texture(pp_state *ps, const pp_token *at,
         t->entries[k].value = 1.0;
         t->entries[k].texture = tex[k];
     }
+    pp_tex_map_tree(ps, t, at);
     return t;
 }
 

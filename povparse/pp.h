@@ -593,6 +593,16 @@ iris_pigment *pp_pig_transform(pp_state *ps, const iris_pigment *p,
                                const iris_transform *xf);
 iris_normal *pp_nor_transform(pp_state *ps, const iris_normal *n,
                               const iris_transform *xf);
+/* Count a completed pigment's, normal's or texture's map tree
+** (maptree.c); an error at 'at' past IRIS_MAX_MAP_TREE. */
+void pp_pig_map_tree(pp_state *ps, iris_pigment *p, const pp_token *at);
+void pp_nor_map_tree(pp_state *ps, iris_normal *n, const pp_token *at);
+void pp_tex_map_tree(pp_state *ps, iris_texture *t, const pp_token *at);
+/* Whether a pigment's (normal's) map entries, or any map entry under
+** them, read the uv point or the world point (uv_mapping, slope): from
+** the entries' flags, one level down; also while 'p' is being parsed. */
+bool pp_pig_entries_pointwise(const iris_pigment *p);
+bool pp_nor_entries_pointwise(const iris_normal *n);
 iris_texture *pp_texture_new(pp_state *ps, const pp_token *at);
 iris_pigment *pp_pigment_new(pp_state *ps, const pp_token *at);
 iris_fog *pp_fog(pp_state *ps);

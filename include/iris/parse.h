@@ -40,7 +40,7 @@ typedef struct iris_diag {
 typedef struct iris_diag_list {
     int n, cap;
     iris_diag *items;
-    int n_errors, n_warnings;
+    int n_errors, n_warnings;  /* counted; warnings past the first 1000 are not kept */
 } iris_diag_list;
 
 void iris_diag_list_init(iris_diag_list *list);

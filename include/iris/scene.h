@@ -203,6 +203,16 @@ typedef struct iris_map_entry {
 } iris_map_entry;
 
 /* A pigment: a solid colour, or a pattern with a map. */
+/*
+** The most pigments, normals or textures one map tree may hold, counted
+** as a tree. Maps whose entries are maps sharing one declared map double
+** at each level ('#declare P = pigment { checker P P }' in a loop):
+** every walk over such a tree, and POV-Ray's evaluation of a blend in it,
+** takes time in proportion to this count, so the parser refuses it
+** rather than hang.
+*/
+#define IRIS_MAX_MAP_TREE (1u << 18)
+
 typedef struct iris_pigment {
     iris_loc loc;
     iris_pattern pattern;      /* kind NONE = solid 'colour' */
@@ -216,6 +226,14 @@ typedef struct iris_pigment {
     ** The parser shares a transformed pigment's entries instead of
     ** copying its map tree per transform (POV-Ray shares blend maps). */
     const iris_transform *entry_xf;
+    /* The size of the map tree under this one, counted as a tree (an
+    ** entry shared by several maps counts each time it occurs; this one
+    ** included; 0 = not counted), and whether a pigment under the entries
+    ** reads the uv point or the world point (uv_mapping, slope), so that
+    ** they cannot share an entry transform. Set by the parser
+    ** (povparse/maptree.c), which refuses a tree past IRIS_MAX_MAP_TREE. */
+    uint32_t map_tree;
+    bool map_tree_pointwise;
 } iris_pigment;
 
 /* A normal{} perturbation. */
@@ -237,6 +255,9 @@ typedef struct iris_normal {
     ** perturbed at the point moved back by it, the normal taken to its
     ** space and back (NULL: none). */
     const iris_transform *entry_xf;
+    /* As iris_pigment's, over the normal_map's normals. */
+    uint32_t map_tree;
+    bool map_tree_pointwise;
 } iris_normal;
 
 /* A finish{} with POV-Ray's defaults (scene.c: iris_finish_defaults). */
@@ -354,6 +375,9 @@ typedef struct iris_texture {
     iris_pattern map_pattern;  /* kind NONE = plain texture */
     int n_entries;
     iris_map_entry *entries;
+    /* As iris_pigment's: this texture, its pigment's and normal's
+    ** trees and its texture_map entries' (not the layers below). */
+    uint32_t map_tree;
 } iris_texture;
 
 /* ------------------------------------------------------------------ */

@@ -62,6 +62,12 @@ static int print_diags(const iris_diag_list *d, bool quiet)
             continue;
         iris_diag_format(&d->items[i], stderr);
     }
+    int kept = 0;
+    for (int i = 0; i < d->n; i++)
+        kept += d->items[i].sev == IRIS_SEV_WARNING;
+    if (!quiet && d->n_warnings > kept)
+        fprintf(stderr, "iris: %d more warnings not shown\n",
+                d->n_warnings - kept);
     return d->n_errors;
 }
 

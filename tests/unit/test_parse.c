@@ -597,6 +597,71 @@ static void test_gamma(void **state)
 ** the scene's directory (a subdirectory is inside; ".." is not). The
 ** scene lives in a fresh temporary directory so that nothing else is
 ** touched; what was written is read back from the file system. */
+/*
+** Map trees are counted as trees when built (maptree.c): a pigment_map
+** whose entries share one declared map counts that map each time. A
+** doubling chain of L levels over a colour-map leaf holds 2^(L+1) - 1
+** pigments: 17 levels (262143) fit under IRIS_MAX_MAP_TREE = 2^18, 18
+** levels are refused at the map that passed it. The flag that keeps uv
+** entries from sharing a transform is read one level down.
+*/
+static void test_map_tree(void **state)
+{
+    (void)state;
+    iris_scene *sc = scene_of(
+        "#declare P = pigment { checker rgb 0 rgb 1 }\n"
+        "#declare Q = pigment { checker P P }\n"
+        "sphere { 0, 1 pigment { checker Q Q rotate 30*y } }\n"
+        "sphere { 0, 1 pigment { checker pigment { P uv_mapping } Q } }\n"
+        "sphere { 0, 1 pigment { checker Q pigment { checker P "
+        "pigment { Q uv_mapping } } scale 2 } }\n"
+        "sphere { 0, 1 texture { checker texture { pigment { Q } }"
+        " texture { pigment { P } } } }\n");
+    const iris_texture *t = sc->objects[0]->texture;
+    assert_int_equal(t->pigment->map_tree, 7);  /* 1 + 2 (1 + 2) */
+    assert_false(t->pigment->map_tree_pointwise);
+    /* an uv-mapped entry, one level down and two */
+    assert_true(sc->objects[1]->texture->pigment->map_tree_pointwise);
+    assert_true(sc->objects[2]->texture->pigment->map_tree_pointwise);
+    /* the transform reached the uv entries' map by copy: no entry transform */
+    assert_null(sc->objects[2]->texture->pigment->entry_xf);
+    assert_int_equal(sc->objects[2]->texture->pigment->map_tree,
+                     1 + 3 + (1 + 1 + 3));
+    /* a texture_map: itself, its (default) pigment, each entry texture
+    ** and its pigment's tree */
+    assert_int_equal(sc->objects[3]->texture->map_tree,
+                     1 + 1 + (1 + 3) + (1 + 1));
+    iris_scene_destroy(sc);
+
+    char sdl[256];
+    for (int levels = 17; levels <= 18; levels++) {
+        snprintf(sdl, sizeof sdl,
+                 "#declare P = pigment { checker rgb 0 rgb 1 }\n"
+                 "#for (I, 1, %d)\n"
+                 "  #declare P = pigment { checker P P scale 0.5 }\n"
+                 "#end\n"
+                 "sphere { 0, 1 pigment { P } }\n", levels);
+        iris_scene *s2 = NULL;
+        iris_diag_list d;
+        iris_diag_list_init(&d);
+        enum iris_status st = iris_parse_string("t.pov", sdl, strlen(sdl),
+                                                NULL, &s2, &d);
+        if (levels == 17) {
+            assert_int_equal(st, IRIS_OK);
+            assert_int_equal(s2->objects[0]->texture->pigment->map_tree,
+                             (1u << 18) - 1);
+        } else {
+            assert_int_equal(st, IRIS_EPARSE);
+            assert_true(d.n > 0);
+            assert_int_equal(d.items[d.n - 1].line, 3);
+            assert_int_equal(d.items[d.n - 1].col, 26);
+            assert_non_null(strstr(d.items[d.n - 1].message, "map tree"));
+        }
+        iris_scene_destroy(s2);
+        iris_diag_list_fini(&d);
+    }
+}
+
 static void test_write_policy(void **state)
 {
     (void)state;
@@ -672,6 +737,7 @@ int main(void)
         cmocka_unit_test(test_materials),
         cmocka_unit_test(test_gamma),
         cmocka_unit_test(test_write_policy),
+        cmocka_unit_test(test_map_tree),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
