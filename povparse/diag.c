@@ -11,6 +11,8 @@
 */
 #include "config.h"
 
+#include <limits.h>
+
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
@@ -255,7 +257,8 @@ _Noreturn void pp_error(pp_state *ps, const pp_token *at, const char *fmt,
 void pp_warning(pp_state *ps, const pp_token *at, const char *fmt, ...)
 {
     if (ps->diags && ps->diags->n_warnings >= MAX_KEPT_WARNINGS) {
-        ps->diags->n_warnings++;
+        if (ps->diags->n_warnings < INT_MAX)
+            ps->diags->n_warnings++;
         return;
     }
     iris_diag d;

@@ -202,7 +202,6 @@ typedef struct iris_map_entry {
     double slope, height;      /* slope_map */
 } iris_map_entry;
 
-/* A pigment: a solid colour, or a pattern with a map. */
 /*
 ** The most pigments, normals or textures one map tree may hold, counted
 ** as a tree. Maps whose entries are maps sharing one declared map double
@@ -213,6 +212,7 @@ typedef struct iris_map_entry {
 */
 #define IRIS_MAX_MAP_TREE (1u << 18)
 
+/* A pigment: a solid colour, or a pattern with a map. */
 typedef struct iris_pigment {
     iris_loc loc;
     iris_pattern pattern;      /* kind NONE = solid 'colour' */
