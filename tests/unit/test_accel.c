@@ -1420,6 +1420,43 @@ static void place_randomly(iris_scene *sc, iris_object *o, rng *g,
     }
 }
 
+/* A ray from a random point of the cube [-20, 20]^3 through 'p'. */
+static ray ray_from_afar(rng *g, vec3 p)
+{
+    vec3 org = v3(40 * rng_uniform(g) - 20, 40 * rng_uniform(g) - 20,
+                  40 * rng_uniform(g) - 20);
+    ray ry = { org, v3_norm(v3_sub(p, org)) };
+    return ry;
+}
+
+/*
+** The nearest hits of 'ry' in a[0] (shapes sh[0], the fast path) and
+** a[1] (the same shapes sh[1], clipped: the general path), which must
+** agree: on whether there is one, on the shape, and to the bit on t and
+** the normal, a unit vector. Returns the shape's index, -1 for no hit.
+*/
+static int same_nearest(struct accel *const a[2], const ray *ry,
+                        iris_object *const sh[2][12], int n, struct hit h[2])
+{
+    bool got[2];
+    for (int v = 0; v < 2; v++)
+        got[v] = accel_intersect(a[v], ry, accel_epsilon(a[v]), INFINITY, 0,
+                                 &h[v]);
+    assert_int_equal(got[0], got[1]);
+    if (!got[0])
+        return -1;
+    int j = 0;
+    while (j < n && sh[0][j] != h[0].obj)
+        j++;
+    assert_true(j < n);
+    assert_ptr_equal(h[1].obj, sh[1][j]);
+    assert_true(h[0].t == h[1].t);
+    assert_true(h[0].n.x == h[1].n.x && h[0].n.y == h[1].n.y &&
+                h[0].n.z == h[1].n.z);
+    assert_near(v3_len(h[0].n), 1, 1e-12);
+    return j;
+}
+
 /*
 ** A box leaf without clipping takes node.c's box_nearest(), which must
 ** give what the general path (the crossing list of geom_box_hits, then
@@ -1588,31 +1625,12 @@ static void test_cone_fast_path(void **state)
             }
             vec3 p = xf_point(&o->transform,
                               v3(rad * cos(phi), y, rad * sin(phi)));
-            vec3 org = v3(40 * rng_uniform(&g) - 20, 40 * rng_uniform(&g) - 20,
-                          40 * rng_uniform(&g) - 20);
-            vec3 d = v3_norm(v3_sub(p, org));
-            ray ry = { org, d };
+            ray ry = ray_from_afar(&g, p);
             struct hit h[2];
-            bool got[2];
-            for (int v = 0; v < 2; v++)
-                got[v] = accel_intersect(a[v], &ry, accel_epsilon(a[v]),
-                                         INFINITY, 0, &h[v]);
-            assert_int_equal(got[0], got[1]);
-            if (!got[0])
+            if (same_nearest(a, &ry, sh, counts[k], h) < 0)
                 continue;
             n_hits++;
-            /* the same shape, the fast path's crossing the general
-            ** path's to the bit */
-            int j = 0;
-            while (j < counts[k] && sh[0][j] != h[0].obj)
-                j++;
-            assert_true(j < counts[k]);
-            assert_ptr_equal(h[1].obj, sh[1][j]);
-            assert_true(h[0].t == h[1].t);
-            assert_true(h[0].n.x == h[1].n.x && h[0].n.y == h[1].n.y &&
-                        h[0].n.z == h[1].n.z);
             assert_true(h[0].uv.u == h[1].uv.u && h[0].uv.v == h[1].uv.v);
-            assert_near(v3_len(h[0].n), 1, 1e-12);
             if (h[0].uv.u != 0 || h[0].uv.v != 0)
                 n_side++;
         }
@@ -1676,28 +1694,12 @@ static void test_torus_fast_path(void **state)
             vec3 pl = v3((R + rm * cos(pv)) * cos(pu), rm * sin(pv),
                          (R + rm * cos(pv)) * sin(pu));
             vec3 p = xf_point(&o->transform, pl);
-            vec3 org = v3(40 * rng_uniform(&g) - 20, 40 * rng_uniform(&g) - 20,
-                          40 * rng_uniform(&g) - 20);
-            vec3 d = v3_norm(v3_sub(p, org));
-            ray ry = { org, d };
+            ray ry = ray_from_afar(&g, p);
             struct hit h[2];
-            bool got[2];
-            for (int v = 0; v < 2; v++)
-                got[v] = accel_intersect(a[v], &ry, accel_epsilon(a[v]),
-                                         INFINITY, 0, &h[v]);
-            assert_int_equal(got[0], got[1]);
-            if (!got[0])
+            int j = same_nearest(a, &ry, sh, counts[k], h);
+            if (j < 0)
                 continue;
             n_hits++;
-            int j = 0;
-            while (j < counts[k] && sh[0][j] != h[0].obj)
-                j++;
-            assert_true(j < counts[k]);
-            assert_ptr_equal(h[1].obj, sh[1][j]);
-            assert_true(h[0].t == h[1].t);
-            assert_true(h[0].n.x == h[1].n.x && h[0].n.y == h[1].n.y &&
-                        h[0].n.z == h[1].n.z);
-            assert_near(v3_len(h[0].n), 1, 1e-12);
             if (j == 2) { /* plain texture: no uv computed */
                 assert_true(h[0].uv.u == 0 && h[0].uv.v == 0);
                 n_plain++;
