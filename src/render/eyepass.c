@@ -48,6 +48,7 @@
 /* ------------------------------------------------------------------ */
 
 struct px;
+struct edge_px;
 
 struct job {
     const iris_scene *scene;
@@ -91,6 +92,8 @@ struct job {
     struct eye_srgb *srgb;     /* legacy gamma: put_pixel's decode */
     struct px **tile_buf;      /* per thread: method 1's tile buffer,
                                   allocated at its first tile */
+    struct edge_px *edge_rows; /* method 1: each tile row's last row */
+    struct edge_px *edge_cols; /* ... each tile column's last column */
 };
 
 /* llround() for the finite, small values below, without its library
@@ -274,6 +277,27 @@ struct px {
     double gerr;               /* bound on sum |g - exact g|, 0: exact */
     bool done;                 /* already supersampled (or not allowed) */
     bool spectral;             /* a sample split into wavelengths */
+};
+
+/* Method 1's tiles trace the row above and the column left of them, which
+** are the last row and column of the neighbouring tiles: POV-Ray traces
+** these samples twice (6 % of a 32 x 32 tile's first samples). iris
+** keeps each tile's last row and column as the tile traces them, before
+** any supersampling, and a later tile takes them from here when they are
+** ready; otherwise (its neighbour is still at work on the other thread,
+** or the neighbour is outside the window) it traces them itself. A first
+** sample is a function of its image position only (its random streams
+** are keyed by it, eyepass.c's head), so both ways give the same values
+** to the bit, and the image does not depend on which was taken. Not
+** under radiosity: there a sample reads its own tile's records
+** (gather_tile_begin). 'n' is the sample's share of POV-Ray's statistics,
+** added to the statistics of the tile that takes it, so the counts stay
+** POV-Ray's (tests/render/raycounts.sh); rays_traced counts what was
+** traced. */
+struct edge_px {
+    struct px p;
+    struct trace_counts n;
+    atomic_int ready;          /* p and n are written (release/acquire) */
 };
 
 void eye_aa_gamma_init(struct eye_aa_gamma *a, double aa_gamma)
@@ -598,6 +622,72 @@ static void put_pixel(struct job *j, int x, int y, const double in[NCH],
 ** the top and left. */
 #define TB(buf, x, y) (buf)[((y) - ty0 + 1) * (tw + 2) + ((x) - tx0 + 1)]
 
+/* The shared sample of image position (x, y) if it is one of a tile's
+** last row or column (struct edge_px), else NULL. */
+static struct edge_px *edge_at(const struct job *j, int x, int y)
+{
+    if (!j->edge_rows)
+        return NULL;
+    int dx = x - j->x0, dy = y - j->y0;
+    if (dx < 0 || dy < 0 || x > j->x1 || y > j->y1)
+        return NULL;
+    if (dy % TILE == TILE - 1 && y < j->y1)
+        return &j->edge_rows[(size_t)(dy / TILE) * (j->x1 - j->x0 + 1) + dx];
+    if (dx % TILE == TILE - 1 && x < j->x1)
+        return &j->edge_cols[(size_t)(dx / TILE) * (j->y1 - j->y0 + 1) + dy];
+    return NULL;
+}
+
+/* A border sample of a tile, (x, y) outside it: the neighbour's shared
+** sample when ready, else traced here. Either way it is not supersampled
+** ('done'). */
+static void border_sample(struct job *j, struct trace_ctx *c, int x, int y,
+                          struct px *p)
+{
+    struct edge_px *e = edge_at(j, x, y);
+    if (e && atomic_load_explicit(&e->ready, memory_order_acquire)) {
+        *p = e->p;
+        struct trace_counts *n = &c->n;
+        n->rays += e->n.rays;
+        n->camera += e->n.camera;
+        n->reflected += e->n.reflected;
+        n->refracted += e->n.refracted;
+        n->transmitted += e->n.transmitted;
+        n->shadow_tests += e->n.shadow_tests;
+        n->shadow_hits += e->n.shadow_hits;
+    } else {
+        p->spectral = trace_sample(j, c, x, y, p->c);
+        px_gamma(j, p);
+    }
+    p->done = true;
+}
+
+/* A tile's first sample of (x, y), traced and gamma-adjusted; kept in
+** 'e' for the neighbour when (x, y) is in the tile's last row or column
+** (edge_at(), else NULL). */
+static void first_sample(struct job *j, struct trace_ctx *c, int x, int y,
+                         struct px *p, struct edge_px *e)
+{
+    p->done = false;
+    if (!e) {
+        p->spectral = trace_sample(j, c, x, y, p->c);
+        px_gamma(j, p);
+        return;
+    }
+    struct trace_counts before = c->n;
+    p->spectral = trace_sample(j, c, x, y, p->c);
+    px_gamma(j, p);
+    e->p = *p;
+    e->n.rays = c->n.rays - before.rays;
+    e->n.camera = c->n.camera - before.camera;
+    e->n.reflected = c->n.reflected - before.reflected;
+    e->n.refracted = c->n.refracted - before.refracted;
+    e->n.transmitted = c->n.transmitted - before.transmitted;
+    e->n.shadow_tests = c->n.shadow_tests - before.shadow_tests;
+    e->n.shadow_hits = c->n.shadow_hits - before.shadow_hits;
+    atomic_store_explicit(&e->ready, 1, memory_order_release);
+}
+
 /* Method 1 over one tile. The buffer 'buf' of (TILE + 2)^2 samples is the
 ** thread's, reused from tile to tile without clearing (a calloc per tile
 ** was 1 % of a simple scene's render): every sample is written before it
@@ -606,23 +696,15 @@ static void tile_method1(struct job *j, struct trace_ctx *c, struct px *buf,
                          int tx0, int ty0, int tx1, int ty1)
 {
     int tw = tx1 - tx0 + 1;
-    for (int x = tx0; x <= tx1; x++) {
-        TB(buf, x, ty0 - 1).spectral =
-            trace_sample(j, c, x, ty0 - 1, TB(buf, x, ty0 - 1).c);
-        px_gamma(j, &TB(buf, x, ty0 - 1));
-        TB(buf, x, ty0 - 1).done = true;
-    }
+    for (int x = tx0; x <= tx1; x++)
+        border_sample(j, c, x, ty0 - 1, &TB(buf, x, ty0 - 1));
     for (int y = ty0; y <= ty1; y++) {
-        TB(buf, tx0 - 1, y).spectral =
-            trace_sample(j, c, tx0 - 1, y, TB(buf, tx0 - 1, y).c);
-        px_gamma(j, &TB(buf, tx0 - 1, y));
-        TB(buf, tx0 - 1, y).done = true;
+        border_sample(j, c, tx0 - 1, y, &TB(buf, tx0 - 1, y));
         for (int x = tx0; x <= tx1; x++) {
             struct px *cur = &TB(buf, x, y), *left = &TB(buf, x - 1, y),
                       *top = &TB(buf, x, y - 1);
-            cur->spectral = trace_sample(j, c, x, y, cur->c);
-            cur->done = false;
-            px_gamma(j, cur);
+            first_sample(j, c, x, y, cur,
+                         x == tx1 || y == ty1 ? edge_at(j, x, y) : NULL);
             bool ldiff = aa_differs(j, left, cur);
             bool tdiff = aa_differs(j, top, cur);
             bool sl = !left->done && ldiff, st = !top->done && tdiff;
@@ -806,6 +888,29 @@ static void run_tile(void *ctx, int64_t item, int thread)
                               (j->tiles_x * j->tiles_y * j->bands));
 }
 
+/* The shared last rows and columns of method 1's tiles (struct edge_px),
+** about 5 bytes a pixel; without them (too large, or no memory) every
+** tile traces its borders, as POV-Ray does. */
+static void edges_alloc(struct job *j)
+{
+    size_t w = (size_t)(j->x1 - j->x0 + 1), h = (size_t)(j->y1 - j->y0 + 1);
+    size_t nr = (size_t)(j->tiles_y - 1) * w, nc = (size_t)(j->tiles_x - 1) * h;
+    if (nr + nc == 0 || nr + nc > ((size_t)1 << 24))
+        return;
+    j->edge_rows = iris_calloc(nr ? nr : 1, sizeof *j->edge_rows);
+    j->edge_cols = iris_calloc(nc ? nc : 1, sizeof *j->edge_cols);
+    if (!j->edge_rows || !j->edge_cols) {
+        iris_free(j->edge_rows);
+        iris_free(j->edge_cols);
+        j->edge_rows = j->edge_cols = NULL;
+        return;
+    }
+    for (size_t i = 0; i < nr; i++)
+        atomic_init(&j->edge_rows[i].ready, 0);
+    for (size_t i = 0; i < nc; i++)
+        atomic_init(&j->edge_cols[i].ready, 0);
+}
+
 static int clampi(int v, int lo, int hi)
 {
     return v < lo ? lo : v > hi ? hi : v;
@@ -964,6 +1069,8 @@ enum iris_status eyepass_run(const struct tracer *tr,
         j.bands = j.aa == IRIS_AA_POV1 || j.aa == IRIS_AA_POV2 || gt.gather
                       ? 1
                       : BANDS;
+        if (j.aa == IRIS_AA_POV1 && !gt.gather)
+            edges_alloc(&j);
         par_for_timed(threads, (int64_t)j.tiles_x * j.tiles_y * j.bands,
                       run_tile, &j,
                       stats ? &stats->time_render_cpu_s : NULL);
@@ -996,6 +1103,8 @@ enum iris_status eyepass_run(const struct tracer *tr,
     for (int i = 0; i < threads; i++)
         iris_free(j.tile_buf[i]);
     iris_free(j.tile_buf);
+    iris_free(j.edge_rows);
+    iris_free(j.edge_cols);
     iris_free(j.srgb);
     gather_end(&gt);
     if (j.blur)

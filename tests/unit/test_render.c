@@ -953,6 +953,55 @@ static void test_eyepass_aa(void **state)
     iris_free(w);
 }
 
+/* Method 1's tiles take the row above and the column left of them from
+** their neighbours when these have traced them (eyepass.c, struct
+** edge_px). A 100 x 70 image has 4 x 3 tiles of 32; on one thread each
+** tile's neighbours are done before it, so every tile boundary inside
+** the window is shared: (3 - 1) rows of 100 and (4 - 1) columns of 70,
+** 410 samples, while POV-Ray's statistics still count them. The scene has
+** no light and no reflection, one ray a camera sample, so rays_traced is
+** exactly rays_camera - 410. With 7 threads tiles run side by side and
+** some borders are traced twice: the image and POV-Ray's counts must not
+** change. */
+static void test_eyepass_shared_borders(void **state)
+{
+    (void)state;
+    struct world *w = iris_calloc(1, sizeof *w);
+    world_init(w);
+    w->scene.background = (iris_colour){ 0, 0, 0, 0, 1 };
+    iris_object *s = add_sphere(w, v3(0.3, 1, 0), 1.4);
+    iris_finish *f = fin_of(w, s);
+    f->ambient = (iris_colour){ 1, 1, 1, 0, 0 };
+    f->diffuse = 0;
+    world_build(w, 9);
+    iris_render_options o = aa_options(100, 70);
+    o.aa = IRIS_AA_POV1;
+    o.aa_threshold = 0.3;
+    o.aa_depth = 3;
+    iris_image one, seven;
+    iris_render_stats st1, st7;
+    memset(&st1, 0, sizeof st1);
+    memset(&st7, 0, sizeof st7);
+    render(w, &o, 1, &one, &st1);
+    render(w, &o, 7, &seven, &st7);
+    assert_memory_equal(one.pixels, seven.pixels,
+                        (size_t)100 * 70 * 4 * sizeof(float));
+    /* the first samples POV-Ray traces: every pixel and each tile's
+    ** border row and column; the silhouette adds R^2 = 9 a supersample */
+    uint64_t first = 100 * 70 + 3 * 100 + 4 * 70;
+    assert_true(st1.rays_camera > first);
+    assert_int_equal((st1.rays_camera - first) % 9, 0);
+    assert_int_equal(st1.rays_camera, st7.rays_camera);
+    assert_int_equal(st1.rays, st1.rays_camera);
+    assert_int_equal(st1.rays_traced, st1.rays_camera - 410);
+    assert_true(st7.rays_traced >= st1.rays_traced &&
+                st7.rays_traced <= st1.rays_camera);
+    iris_free(one.pixels);
+    iris_free(seven.pixels);
+    world_fini(w);
+    iris_free(w);
+}
+
 /* An interrupted render stops with IRIS_EINTR. */
 static void test_eyepass_interrupt(void **state)
 {
@@ -1049,6 +1098,7 @@ int main(void)
         cmocka_unit_test(test_refraction_fade),
         cmocka_unit_test(test_refraction_path),
         cmocka_unit_test(test_eyepass_aa),
+        cmocka_unit_test(test_eyepass_shared_borders),
         cmocka_unit_test(test_eyepass_interrupt),
         cmocka_unit_test(test_aa_gamma_bound),
     };
