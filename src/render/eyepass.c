@@ -8,7 +8,9 @@
 ** the tile: method 1 compares each pixel with its left and upper
 ** neighbours, tracing (but never supersampling) the row above and the
 ** column left of the tile; method 2 traces the tile's pixel corners. Doing
-** the same here supersamples the pixels POV-Ray supersamples. Every random
+** the same here supersamples the pixels POV-Ray supersamples (the border
+** samples, traced twice by POV-Ray, are shared between neighbouring tiles
+** here: struct edge_px). Every random
 ** number (AA jitter, area-light jitter, wavelengths) comes from a stream
 ** keyed by the sample's image position, never by the thread, so the image
 ** does not depend on the thread count.
@@ -888,14 +890,15 @@ static void run_tile(void *ctx, int64_t item, int thread)
                               (j->tiles_x * j->tiles_y * j->bands));
 }
 
-/* The shared last rows and columns of method 1's tiles (struct edge_px),
-** about 5 bytes a pixel; without them (too large, or no memory) every
-** tile traces its borders, as POV-Ray does. */
+/* The shared last rows and columns of method 1's tiles (struct edge_px):
+** one entry per 16 pixels, about 8.5 bytes a pixel, half the image's own
+** floats. Past 2^20 entries (about 16 million pixels, 140 MB), or without
+** the memory, every tile traces its borders, as POV-Ray does. */
 static void edges_alloc(struct job *j)
 {
     size_t w = (size_t)(j->x1 - j->x0 + 1), h = (size_t)(j->y1 - j->y0 + 1);
     size_t nr = (size_t)(j->tiles_y - 1) * w, nc = (size_t)(j->tiles_x - 1) * h;
-    if (nr + nc == 0 || nr + nc > ((size_t)1 << 24))
+    if (nr + nc == 0 || nr + nc > ((size_t)1 << 20))
         return;
     j->edge_rows = iris_calloc(nr ? nr : 1, sizeof *j->edge_rows);
     j->edge_cols = iris_calloc(nc ? nc : 1, sizeof *j->edge_cols);
