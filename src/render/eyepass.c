@@ -624,6 +624,21 @@ static void put_pixel(struct job *j, int x, int y, const double in[NCH],
 ** the top and left. */
 #define TB(buf, x, y) (buf)[((y) - ty0 + 1) * (tw + 2) + ((x) - tx0 + 1)]
 
+/* d += a - b, count by count: a sample's share of the statistics (the
+** counts after it less those before) added where it is used. */
+static void counts_add_diff(struct trace_counts *d,
+                            const struct trace_counts *a,
+                            const struct trace_counts *b)
+{
+    d->rays += a->rays - b->rays;
+    d->camera += a->camera - b->camera;
+    d->reflected += a->reflected - b->reflected;
+    d->refracted += a->refracted - b->refracted;
+    d->transmitted += a->transmitted - b->transmitted;
+    d->shadow_tests += a->shadow_tests - b->shadow_tests;
+    d->shadow_hits += a->shadow_hits - b->shadow_hits;
+}
+
 /* The shared sample of image position (x, y) if it is one of a tile's
 ** last row or column (struct edge_px), else NULL. */
 static struct edge_px *edge_at(const struct job *j, int x, int y)
@@ -649,14 +664,7 @@ static void border_sample(struct job *j, struct trace_ctx *c, int x, int y,
     struct edge_px *e = edge_at(j, x, y);
     if (e && atomic_load_explicit(&e->ready, memory_order_acquire)) {
         *p = e->p;
-        struct trace_counts *n = &c->n;
-        n->rays += e->n.rays;
-        n->camera += e->n.camera;
-        n->reflected += e->n.reflected;
-        n->refracted += e->n.refracted;
-        n->transmitted += e->n.transmitted;
-        n->shadow_tests += e->n.shadow_tests;
-        n->shadow_hits += e->n.shadow_hits;
+        counts_add_diff(&c->n, &e->n, &(struct trace_counts){ 0 });
     } else {
         p->spectral = trace_sample(j, c, x, y, p->c);
         px_gamma(j, p);
@@ -680,13 +688,8 @@ static void first_sample(struct job *j, struct trace_ctx *c, int x, int y,
     p->spectral = trace_sample(j, c, x, y, p->c);
     px_gamma(j, p);
     e->p = *p;
-    e->n.rays = c->n.rays - before.rays;
-    e->n.camera = c->n.camera - before.camera;
-    e->n.reflected = c->n.reflected - before.reflected;
-    e->n.refracted = c->n.refracted - before.refracted;
-    e->n.transmitted = c->n.transmitted - before.transmitted;
-    e->n.shadow_tests = c->n.shadow_tests - before.shadow_tests;
-    e->n.shadow_hits = c->n.shadow_hits - before.shadow_hits;
+    e->n = (struct trace_counts){ 0 };
+    counts_add_diff(&e->n, &c->n, &before);
     atomic_store_explicit(&e->ready, 1, memory_order_release);
 }
 

@@ -887,20 +887,28 @@ static void render(struct world *w, const iris_render_options *o, int threads,
     assert_int_equal(eyepass_run(&w->tr, o, threads, img, st), IRIS_OK);
 }
 
+/* A sphere of ambient 1 and no diffuse (white wherever it is seen, no
+** light needed) on a black background: the eye pass tests' world. */
+static struct world *white_sphere_world(vec3 centre, double radius)
+{
+    struct world *w = iris_calloc(1, sizeof *w);
+    world_init(w);
+    w->scene.background = (iris_colour){ 0, 0, 0, 0, 1 };
+    iris_object *s = add_sphere(w, centre, radius);
+    iris_finish *f = fin_of(w, s);
+    f->ambient = (iris_colour){ 1, 1, 1, 0, 0 };
+    f->diffuse = 0;
+    world_build(w, 9);
+    return w;
+}
+
 /* Method 1 (§4.1): flat regions keep their single sample; a pixel on the
 ** sphere's silhouette is averaged to a value between the two sides. The
 ** image is the same with 1 and 3 threads. */
 static void test_eyepass_aa(void **state)
 {
     (void)state;
-    struct world *w = iris_calloc(1, sizeof *w);
-    world_init(w);
-    w->scene.background = (iris_colour){ 0, 0, 0, 0, 1 };
-    iris_object *s = add_sphere(w, v3(0, 1, 0), 1);
-    iris_finish *f = fin_of(w, s);
-    f->ambient = (iris_colour){ 1, 1, 1, 0, 0 };
-    f->diffuse = 0;
-    world_build(w, 9);
+    struct world *w = white_sphere_world(v3(0, 1, 0), 1);
     iris_render_options o = aa_options(40, 30);
     iris_image plain, aa, aa3;
     iris_render_stats st;
@@ -966,14 +974,7 @@ static void test_eyepass_aa(void **state)
 static void test_eyepass_shared_borders(void **state)
 {
     (void)state;
-    struct world *w = iris_calloc(1, sizeof *w);
-    world_init(w);
-    w->scene.background = (iris_colour){ 0, 0, 0, 0, 1 };
-    iris_object *s = add_sphere(w, v3(0.3, 1, 0), 1.4);
-    iris_finish *f = fin_of(w, s);
-    f->ambient = (iris_colour){ 1, 1, 1, 0, 0 };
-    f->diffuse = 0;
-    world_build(w, 9);
+    struct world *w = white_sphere_world(v3(0.3, 1, 0), 1.4);
     iris_render_options o = aa_options(100, 70);
     o.aa = IRIS_AA_POV1;
     o.aa_threshold = 0.3;
